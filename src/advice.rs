@@ -1,0 +1,345 @@
+//! Depths, crest and the textbook's advice for threads cut block by block.
+//!
+//! A G32/G33 program does not say how deep the thread is, only where each
+//! pass runs. The crest (major diameter of an external thread, minor of an
+//! internal one) comes from the part outline when the program turned it,
+//! otherwise it is assumed from the deepest pass and the 60° rule
+//! d = D − 1.3·P (setting `textbook.depth_factor`). Depths, infeeds, roles
+//! and chip areas follow, and the advice of the textbook chapter: total
+//! depth against 1.3·P, infeeds against table 4-3, and the δ1/δ2
+//! acceleration clearances.
+
+use crate::diagnostic::{Code, Diagnostics};
+use crate::motion::{Move, MoveKind, Point};
+use crate::num::{EPS, fmt};
+use crate::settings::{P, Settings};
+use crate::span::Span;
+use crate::thread::{Axis, CrestSource, Role, Source, Thread, v_area};
+
+/// Table 4-3 of the textbook: usual diameter infeeds per pass by pitch (mm).
+pub const TABLE_4_3: &[(f64, &[f64])] = &[
+    (1.0, &[0.7, 0.4, 0.2]),
+    (1.5, &[0.8, 0.6, 0.4, 0.16]),
+    (2.0, &[0.9, 0.6, 0.6, 0.4, 0.1]),
+    (2.5, &[1.0, 0.7, 0.6, 0.4, 0.4, 0.15]),
+    (3.0, &[1.2, 0.7, 0.6, 0.4, 0.4, 0.4, 0.2]),
+    (3.5, &[1.5, 0.7, 0.6, 0.6, 0.4, 0.4, 0.2, 0.15]),
+    (4.0, &[1.5, 0.8, 0.6, 0.6, 0.4, 0.4, 0.4, 0.3, 0.2]),
+];
+
+/// Table 4-3's infeeds for `pitch` (mm), if the table lists it.
+pub fn table_4_3(pitch: f64) -> Option<&'static [f64]> {
+    TABLE_4_3
+        .iter()
+        .find(|(p, _)| (p - pitch).abs() < 1e-6)
+        .map(|(_, v)| *v)
+}
+
+/// A straight outline piece (a turning feed move) in (long, short) terms.
+struct Piece {
+    idx: usize,
+    from: Point,
+    to: Point,
+}
+
+fn short_of(long: Axis, p: Point) -> f64 {
+    match long {
+        Axis::Z => p.r(),
+        Axis::X => p.z,
+    }
+}
+
+fn long_of(long: Axis, p: Point) -> f64 {
+    match long {
+        Axis::Z => p.z,
+        Axis::X => p.r(),
+    }
+}
+
+/// Short-axis value of the line through `a`, `b` at long-axis position `l`.
+fn line_at(long: Axis, a: Point, b: Point, l: f64) -> f64 {
+    let (la, lb) = (long_of(long, a), long_of(long, b));
+    let (sa, sb) = (short_of(long, a), short_of(long, b));
+    if (lb - la).abs() < EPS {
+        sa
+    } else {
+        sa + (sb - sa) * (l - la) / (lb - la)
+    }
+}
+
+/// Fills depths, crest, roles and areas of the block-by-block threads and
+/// adds the textbook advice. `spans` gives each line's span for diagnostics.
+pub fn finish_manual(
+    threads: &mut [Thread],
+    moves: &[Move],
+    s: &Settings,
+    inch: bool,
+    diags: &mut Diagnostics,
+    spans: &dyn Fn(u32) -> Span,
+) {
+    let advice = s.flag(P::Advice);
+    for t in threads
+        .iter_mut()
+        .filter(|t| matches!(t.source, Source::G32 | Source::Renhe))
+    {
+        let long = t.long_axis;
+        let dir = t.depth_dir;
+        let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
+        let mm = if inch { 25.4 } else { 1.0 };
+        // Deepest pass: furthest along the depth direction at its start.
+        let deepest = t
+            .passes
+            .iter()
+            .max_by(|a, b| {
+                (short_of(long, a.from) * dir).total_cmp(&(short_of(long, b.from) * dir))
+            })
+            .cloned()
+            .expect("a thread has passes");
+        let outline = outline_crest(t, moves, &deepest, h);
+        let crest_at = |p: Point| -> f64 {
+            let l = long_of(long, p);
+            match &outline {
+                Some(o) => line_at(long, o.from, o.to, l),
+                None => line_at(long, deepest.from, deepest.to, l) - dir * h,
+            }
+        };
+        t.crest_source = if outline.is_some() {
+            CrestSource::Outline
+        } else {
+            CrestSource::Assumed
+        };
+        let c0 = crest_at(t.passes[0].from);
+        t.crest = match long {
+            Axis::Z => 2.0 * c0,
+            Axis::X => c0,
+        };
+        // Depths per start.
+        let mut prev: Vec<f64> = vec![0.0; t.starts as usize];
+        let mut max_depth = 0.0f64;
+        for p in t.passes.iter_mut() {
+            let d = (short_of(long, p.from) - crest_at(p.from)) * dir;
+            let si = p.start as usize - 1;
+            p.depth = d;
+            p.infeed = d - prev[si];
+            p.area = v_area(t.tool_angle, prev[si].max(0.0), d.max(0.0));
+            prev[si] = d;
+            max_depth = max_depth.max(d);
+        }
+        t.height = max_depth;
+        // Roles: per start, the first pass at full depth finishes, later ones are spring passes.
+        let mut finished = vec![false; t.starts as usize];
+        for p in t.passes.iter_mut() {
+            let si = p.start as usize - 1;
+            if (p.depth - max_depth).abs() < 1e-6 {
+                p.role = if finished[si] {
+                    Role::Spring
+                } else {
+                    Role::Finish
+                };
+                finished[si] = true;
+            } else {
+                p.role = Role::Rough;
+            }
+        }
+        if !advice {
+            continue;
+        }
+        let span = spans(t.line);
+        let pitch_mm = t.pitch * mm;
+        let std_depth = s.get(P::DepthFactor) * pitch_mm; // diameter, mm
+        match &outline {
+            None => diags.push(
+                Code::CrestAssumed,
+                span,
+                format!(
+                    "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; δ1/δ2 are not checked",
+                    if t.internal { "minor" } else { "major" },
+                    fmt(t.crest),
+                    fmt(s.get(P::DepthFactor))
+                ),
+            ),
+            Some(_) => {
+                let programmed = 2.0 * max_depth * mm;
+                if (programmed - std_depth).abs() > 0.02 * std_depth.max(0.05) {
+                    diags.push(
+                        Code::DepthVsStandard,
+                        span,
+                        format!(
+                            "total depth {} (diameter) against {}·P = {} for pitch {}: the thread is {}",
+                            fmt(programmed / mm),
+                            fmt(s.get(P::DepthFactor)),
+                            fmt(std_depth / mm),
+                            fmt(t.pitch),
+                            if programmed < std_depth { "not cut to full depth" } else { "cut deeper than standard" }
+                        ),
+                    );
+                }
+            }
+        }
+        if t.starts == 1 && long == Axis::Z {
+            if let Some(table) = table_4_3(pitch_mm) {
+                let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
+                let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
+                let matches = infeeds.len() == table.len()
+                    && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
+                diags.push(
+                    Code::InfeedGuidance,
+                    span,
+                    format!(
+                        "table 4-3 for pitch {}: {} passes, diameter infeeds {}; programmed: {} passes, {}{}",
+                        fmt(pitch_mm),
+                        table.len(),
+                        list(table),
+                        infeeds.len(),
+                        list(&infeeds),
+                        if matches { " (as the table)" } else { "" }
+                    ),
+                );
+                let largest = table[0];
+                for p in &t.passes {
+                    let inf = 2.0 * p.infeed * mm;
+                    if inf > largest + 1e-3 {
+                        diags.push(
+                            Code::InfeedTooLarge,
+                            spans(p.lines.iter().copied().find(|l| *l >= t.line).unwrap_or(t.line)),
+                            format!(
+                                "pass {} takes {} of diameter at once; table 4-3 starts pitch {} with {}",
+                                p.index,
+                                fmt(inf),
+                                fmt(pitch_mm),
+                                fmt(largest)
+                            ),
+                        );
+                    }
+                }
+            }
+        }
+        if let Some(o) = &outline {
+            clearance(t, o, moves, &deepest, mm, diags, span);
+        }
+    }
+}
+
+/// The turned surface a thread is cut on, when the program turned it.
+fn outline_crest(
+    t: &Thread,
+    moves: &[Move],
+    deepest: &crate::thread::Pass,
+    h: f64,
+) -> Option<Piece> {
+    let long = t.long_axis;
+    let dir = t.depth_dir;
+    let p0 = &t.passes[0];
+    let (lo, hi) = {
+        let (a, b) = (long_of(long, p0.from), long_of(long, p0.to));
+        if a <= b { (a, b) } else { (b, a) }
+    };
+    let mut best: Option<(f64, Piece)> = None;
+    for (idx, m) in moves.iter().enumerate() {
+        if m.kind != MoveKind::Feed {
+            continue;
+        }
+        let (a, b) = (long_of(long, m.from), long_of(long, m.to));
+        let (ma, mb) = if a <= b { (a, b) } else { (b, a) };
+        // Must run along the thread (not a facing move) and overlap it.
+        if mb - ma < EPS || mb.min(hi) - ma.max(lo) < EPS {
+            continue;
+        }
+        let mid = (ma.max(lo) + mb.min(hi)) / 2.0;
+        let v = line_at(long, m.from, m.to, mid);
+        // The crest is the outermost surface against the depth direction.
+        let score = -v * dir;
+        if best.as_ref().is_none_or(|(s, _)| score > *s) {
+            best = Some((
+                score,
+                Piece {
+                    idx,
+                    from: m.from,
+                    to: m.to,
+                },
+            ));
+        }
+    }
+    let (_, piece) = best?;
+    // Plausible only if the first pass is below it and the deepest within twice the standard depth.
+    let c_first = line_at(long, piece.from, piece.to, long_of(long, p0.from));
+    let d_first = (short_of(long, p0.from) - c_first) * dir;
+    let c_deep = line_at(long, piece.from, piece.to, long_of(long, deepest.from));
+    let d_deep = (short_of(long, deepest.from) - c_deep) * dir;
+    if d_first < -EPS || d_deep > 2.0 * h + EPS {
+        return None;
+    }
+    Some(piece)
+}
+
+/// δ1 (lead-in before the work) and δ2 (run-out after it), checked against the textbook.
+fn clearance(
+    t: &Thread,
+    crest: &Piece,
+    moves: &[Move],
+    deepest: &crate::thread::Pass,
+    mm: f64,
+    diags: &mut Diagnostics,
+    span: Span,
+) {
+    let long = t.long_axis;
+    let dir = t.depth_dir;
+    let deep = |p: Point| short_of(long, p) * dir;
+    let above = |m: &Move| {
+        (deep(m.from) <= deep(deepest.from) + EPS) && (deep(m.to) <= deep(deepest.from) + EPS)
+    };
+    // Extend the crest piece through contiguous turning moves the thread passes through.
+    let (mut first, mut last) = (crest.idx, crest.idx);
+    while first > 0
+        && moves[first - 1].kind == MoveKind::Feed
+        && moves[first - 1].to == moves[first].from
+        && above(&moves[first - 1])
+    {
+        first -= 1;
+    }
+    while last + 1 < moves.len()
+        && moves[last + 1].kind == MoveKind::Feed
+        && moves[last + 1].from == moves[last].to
+        && above(&moves[last + 1])
+    {
+        last += 1;
+    }
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    for m in &moves[first..=last] {
+        for p in [m.from, m.to] {
+            lo = lo.min(long_of(long, p));
+            hi = hi.max(long_of(long, p));
+        }
+    }
+    let p0 = &t.passes[0];
+    let (a, b) = (long_of(long, p0.from), long_of(long, p0.to));
+    let toward_minus = b < a;
+    let (d1, d2) = if toward_minus {
+        (a - hi, lo - b)
+    } else {
+        (lo - a, b - hi)
+    };
+    if d1 * mm < 2.0 - 1e-9 {
+        diags.push(
+            Code::Clearance,
+            span,
+            if d1 < 0.0 {
+                format!("the pass starts {} inside the work: the lead-in δ1 must keep the acceleration off the thread (textbook: 2–10 mm)", fmt(-d1))
+            } else {
+                format!("lead-in δ1 = {} is shorter than the textbook's 2–10 mm (larger for larger leads): the first turns are cut while the axis accelerates", fmt(d1))
+            },
+        );
+    }
+    if d2 > 0.0 && d1 > 0.0 && d2 < d1 / 4.0 - 1e-9 {
+        diags.push(
+            Code::Clearance,
+            span,
+            format!(
+                "run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)",
+                fmt(d2),
+                fmt(d1 / 4.0)
+            ),
+        );
+    }
+}

@@ -1,0 +1,207 @@
+//! `screwcut`: plan a lathe threading program from the command line.
+
+use std::io::Read;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use screwcut::diagnostic::Severity;
+use screwcut::num::fmt;
+use screwcut::settings::{Kind, Settings};
+use screwcut::{Code, Dialect, Plan};
+
+#[derive(Parser)]
+#[command(
+    name = "screwcut",
+    version,
+    about = "Preview CNC lathe thread-cutting G-code: threads, passes and alarms"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Plan a program and print its threads, passes and diagnostics.
+    Plan {
+        /// Program file, or '-' for standard input.
+        file: String,
+        /// Controller dialect: gsk980tdc, fanuc0i or renhe.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Set a controller parameter or setting, e.g. --set No.058=55 (repeatable).
+        #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Print the plan as JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// List the settings and controller parameters of a dialect with their values.
+    Settings {
+        /// Controller dialect.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+    },
+    /// List every diagnostic code with its severity.
+    Codes,
+}
+
+fn parse_dialect(s: &str) -> Result<Dialect, String> {
+    Dialect::parse(s).ok_or_else(|| format!("unknown dialect '{s}' (gsk980tdc, fanuc0i, renhe)"))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Plan {
+            file,
+            dialect,
+            set,
+            json,
+        } => plan(&file, dialect, &set, json),
+        Command::Settings { dialect } => {
+            let s = Settings::new(dialect);
+            for (def, v) in s.entries() {
+                let value = match def.kind {
+                    Kind::Choice(c) => c.get(v as usize).copied().unwrap_or("?").to_string(),
+                    _ => fmt(v),
+                };
+                println!(
+                    "{:<24} {:<10} {:<12} {}",
+                    def.name, value, def.unit, def.help
+                );
+            }
+            ExitCode::SUCCESS
+        }
+        Command::Codes => {
+            for c in Code::ALL {
+                let sev = match c.severity() {
+                    Severity::Error => "error",
+                    Severity::Warning => "warning",
+                    Severity::Info => "info",
+                };
+                println!("{:<28} {sev}", c.as_str());
+            }
+            ExitCode::SUCCESS
+        }
+    }
+}
+
+fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
+    let mut settings = Settings::new(dialect);
+    for a in set {
+        if let Err(e) = settings.assign(a) {
+            eprintln!("screwcut: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    let mut bytes = Vec::new();
+    let read = if file == "-" {
+        std::io::stdin().read_to_end(&mut bytes).map(|_| ())
+    } else {
+        std::fs::read(file).map(|b| bytes = b)
+    };
+    if let Err(e) = read {
+        eprintln!("screwcut: cannot read {file}: {e}");
+        return ExitCode::from(2);
+    }
+    // Programs from old controllers are not always UTF-8: read them lossily rather than refuse.
+    let text = String::from_utf8_lossy(&bytes);
+    let plan = screwcut::plan(&text, &settings);
+    if json {
+        println!("{}", plan.to_json());
+    } else {
+        print!("{}", summary(&plan, file));
+    }
+    if plan.has_alarm() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn summary(plan: &Plan, file: &str) -> String {
+    use std::fmt::Write;
+    let mut out = String::new();
+    let count = |s: Severity| plan.diagnostics.iter().filter(|d| d.severity == s).count();
+    let _ = writeln!(
+        out,
+        "{file}: {}, {}; {} thread(s), {} move(s); {} alarm(s), {} warning(s), {} note(s)",
+        plan.dialect.name(),
+        match plan.units {
+            screwcut::plan::Units::Mm => "mm",
+            screwcut::plan::Units::Inch => "inch",
+        },
+        plan.threads.len(),
+        plan.moves.len(),
+        count(Severity::Error),
+        count(Severity::Warning),
+        count(Severity::Info)
+    );
+    for (i, t) in plan.threads.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "\nthread {} (lines {}-{}): {:?} {:?}, lead {}, pitch {}, {} start(s), {}, crest {} {} ({:?}), height {}",
+            i + 1,
+            t.line,
+            t.end_line,
+            t.kind,
+            t.source,
+            fmt(t.lead),
+            fmt(t.pitch),
+            t.starts,
+            if t.internal { "internal" } else { "external" },
+            if t.long_axis == screwcut::thread::Axis::Z {
+                "X"
+            } else {
+                "Z"
+            },
+            fmt(t.crest),
+            t.crest_source,
+            fmt(t.height)
+        );
+        let _ = writeln!(
+            out,
+            "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7}  lines",
+            "start", "pass", "X from", "Z from", "X to", "Z to", "depth", "infeed", "role"
+        );
+        for p in &t.passes {
+            let lines = p
+                .lines
+                .iter()
+                .map(|l| l.to_string())
+                .collect::<Vec<_>>()
+                .join(",");
+            let _ = writeln!(
+                out,
+                "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7}  {}",
+                p.start,
+                p.index,
+                fmt(p.from.x),
+                fmt(p.from.z),
+                fmt(p.to.x),
+                fmt(p.to.z),
+                fmt(p.depth),
+                fmt(p.infeed),
+                format!("{:?}", p.role).to_lowercase(),
+                lines
+            );
+        }
+    }
+    if !plan.diagnostics.is_empty() {
+        let _ = writeln!(out, "\ndiagnostics:");
+        for d in &plan.diagnostics {
+            let sev = match d.severity {
+                Severity::Error => "alarm",
+                Severity::Warning => "warning",
+                Severity::Info => "note",
+            };
+            let _ = writeln!(
+                out,
+                "  {}:{}: {sev} [{}] {}",
+                d.line, d.column, d.code, d.message
+            );
+        }
+    }
+    out
+}

@@ -1,0 +1,138 @@
+//! Blocks and words: one program line as read by the lexer, with spans.
+
+use crate::span::Span;
+
+/// A number as written in a word.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Number {
+    /// The value as written (`27.4286`, `180`, `-75`).
+    pub value: f64,
+    /// Whether the text had a decimal point (`X27.` and `X27.0` do; `X27` does not).
+    pub has_point: bool,
+}
+
+impl Number {
+    /// The value when it is a whole number without a point (`G32`, `M30`, `P1160`).
+    pub fn integer(&self) -> Option<i64> {
+        if self.value.fract() == 0.0 && self.value.abs() < 9.0e15 {
+            Some(self.value as i64)
+        } else {
+            None
+        }
+    }
+}
+
+/// One address word: a letter and its number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Word {
+    /// Upper-case ASCII letter.
+    pub letter: u8,
+    /// The number.
+    pub num: Number,
+    /// Span from the letter to the end of the number.
+    pub span: Span,
+}
+
+impl Word {
+    /// The letter as a `char`.
+    pub fn letter(&self) -> char {
+        self.letter as char
+    }
+
+    /// The value as written.
+    pub fn value(&self) -> f64 {
+        self.num.value
+    }
+
+    /// `G32` style text of the word for messages.
+    pub fn display(&self) -> String {
+        format!("{}{}", self.letter(), crate::num::fmt(self.num.value))
+    }
+}
+
+/// What kind of line a block is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BlockKind {
+    /// An ordinary block (possibly empty or comment-only).
+    #[default]
+    Normal,
+    /// A `%` tape start/end line.
+    Percent,
+    /// An `O1234` (or `:1234`) program number line.
+    ProgramNumber(u32),
+}
+
+/// One block (program line) with its words.
+#[derive(Clone, Debug, Default)]
+pub struct Block {
+    /// 1-based line number.
+    pub line: u32,
+    /// Span of the line without its line ending.
+    pub span: Span,
+    /// Kind of line.
+    pub kind: BlockKind,
+    /// Starts with `/` (block delete).
+    pub deleted: bool,
+    /// Words in order, excluding the `N` sequence number and `O` program number.
+    pub words: Vec<Word>,
+    /// The `N` sequence number, if any.
+    pub n: Option<Word>,
+    /// Whether the lexer found an error in this block (the block is then not executed).
+    pub has_error: bool,
+    /// First index into `words` for each letter A–Z, plus one (0 = absent).
+    index: [u8; 26],
+}
+
+impl Block {
+    /// Clears the block for reuse.
+    pub fn reset(&mut self, line: u32, span: Span) {
+        self.line = line;
+        self.span = span;
+        self.kind = BlockKind::Normal;
+        self.deleted = false;
+        self.words.clear();
+        self.n = None;
+        self.has_error = false;
+        self.index = [0; 26];
+    }
+
+    /// Adds a word; returns the earlier word of the same letter, if there was one.
+    pub fn push(&mut self, w: Word) -> Option<Word> {
+        let slot = (w.letter - b'A') as usize;
+        let earlier = if self.index[slot] != 0 {
+            Some(self.words[self.index[slot] as usize - 1])
+        } else {
+            None
+        };
+        if earlier.is_none() && self.words.len() < 255 {
+            self.index[slot] = self.words.len() as u8 + 1;
+        }
+        self.words.push(w);
+        earlier
+    }
+
+    /// The first word with `letter`.
+    pub fn get(&self, letter: u8) -> Option<&Word> {
+        let i = self.index[(letter - b'A') as usize];
+        if i == 0 {
+            None
+        } else {
+            Some(&self.words[i as usize - 1])
+        }
+    }
+
+    /// Whether a word with `letter` is present.
+    pub fn has(&self, letter: u8) -> bool {
+        self.index[(letter - b'A') as usize] != 0
+    }
+
+    /// All words with `letter` (G and M may repeat).
+    pub fn all(&self, letter: u8) -> impl Iterator<Item = &Word> {
+        self.words.iter().filter(move |w| w.letter == letter)
+    }
+
+    /// True when the block has no words at all (blank or comment-only).
+    pub fn is_empty(&self) -> bool {
+        self.words.is_empty()
+    }
+}

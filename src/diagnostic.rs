@@ -1,0 +1,246 @@
+//! Diagnostics: alarms, warnings and advice, each with a stable code and a
+//! source position.
+
+use serde::Serialize;
+
+use crate::span::{LineCol, LineIndex, Span};
+
+/// How serious a diagnostic is. `Error` is an alarm: the controller would
+/// stop, and the CLI exits with status 1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    /// Advice or a note on how something was read.
+    Info,
+    /// Probably not what was meant; the plan is still drawn.
+    Warning,
+    /// An alarm: the controller would refuse this block.
+    Error,
+}
+
+macro_rules! codes {
+    ($( $(#[$doc:meta])* $name:ident = $text:literal, $sev:ident; )*) => {
+        /// Every diagnostic screwcut emits. The string form is stable and is
+        /// what the JSON, the CLI and the web app show; codes of the
+        /// controllers themselves (such as Renhe `E18-03`) are kept verbatim.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum Code {
+            $( $(#[$doc])* $name, )*
+        }
+
+        impl Code {
+            /// All codes, for documentation and coverage tests.
+            pub const ALL: &'static [Code] = &[ $( Code::$name, )* ];
+
+            /// The stable string form.
+            pub fn as_str(self) -> &'static str {
+                match self { $( Code::$name => $text, )* }
+            }
+
+            /// The severity this code always carries.
+            pub fn severity(self) -> Severity {
+                match self { $( Code::$name => Severity::$sev, )* }
+            }
+        }
+    };
+}
+
+codes! {
+    // ---- lexical ----
+    /// Full-width or look-alike characters were read as their ASCII twins.
+    FullWidth = "full-width", Info;
+    /// A number with misplaced signs or points (`X1.2.3`, `Z--4`).
+    MalformedNumber = "malformed-number", Error;
+    /// A word letter with no number after it.
+    MissingValue = "missing-value", Error;
+    /// A letter this dialect does not use as an address.
+    UnknownAddress = "unknown-address", Error;
+    /// A character that cannot start a word.
+    UnexpectedCharacter = "unexpected-character", Error;
+    /// The same address twice in one block.
+    RepeatedWord = "repeated-word", Error;
+    /// A block longer than the `limits.block_chars` setting.
+    BlockTooLong = "block-too-long", Error;
+    /// More digits than the controller accepts (`limits.digits`).
+    TooManyDigits = "too-many-digits", Error;
+    /// `(` without a closing `)` on the same line.
+    UnclosedComment = "unclosed-comment", Error;
+    /// `)` without an opening `(`.
+    UnmatchedParen = "unmatched-paren", Error;
+    /// `(` inside a comment: comments do not nest.
+    NestedComment = "nested-comment", Warning;
+    /// G-code after `;`, which ends the block: it is not executed.
+    CodeAfterSemicolon = "code-after-semicolon", Warning;
+    /// Macro variables and expressions (`#`, `[`) are not interpreted.
+    UnsupportedMacro = "unsupported-macro", Error;
+    /// `O` not followed by a program number.
+    MalformedProgramNumber = "malformed-program-number", Error;
+    /// The program is larger than `limits.program_bytes`.
+    ProgramTooLarge = "program-too-large", Error;
+    // ---- interpreter ----
+    /// A G code the dialect does not have.
+    UnsupportedGCode = "unsupported-g-code", Error;
+    /// A G code the controller has but the previewer does not draw.
+    NotSimulated = "not-simulated", Warning;
+    /// Two G codes of the same modal group in one block.
+    ConflictingGCodes = "conflicting-g-codes", Error;
+    /// An absolute and an incremental word for the same axis (`X` with `U`).
+    AxisConflict = "axis-conflict", Error;
+    /// A Fanuc length without a decimal point read in least input increments.
+    NoDecimalPoint = "no-decimal-point", Warning;
+    /// A feed move before any feed rate was given.
+    MissingFeed = "missing-feed", Warning;
+    /// An arc whose radius is shorter than half its chord.
+    ArcRadiusTooSmall = "arc-radius-too-small", Error;
+    /// An arc whose I/K centre is not equidistant from its ends.
+    ArcRadiusMismatch = "arc-radius-mismatch", Error;
+    /// An arc without R or I/K.
+    ArcMissingCenter = "arc-missing-center", Error;
+    /// A word that this block's command does not take.
+    UnexpectedWord = "unexpected-word", Error;
+    /// A value outside the range the manual gives for the word.
+    ValueOutOfRange = "value-out-of-range", Error;
+    /// Blocks after M30/M02 are never executed.
+    AfterEnd = "after-end", Info;
+    /// G20/G21 changed after motion: coordinates mix units.
+    UnitsChanged = "units-changed", Warning;
+    /// A command that needs a word it did not get (G04 without time, G50 without axes...).
+    MissingWord = "missing-word", Error;
+    /// A word that must not carry a decimal point (Fanuc G32 Q, G76 P/Q).
+    DecimalPointNotAllowed = "decimal-point-not-allowed", Error;
+    /// An incremental move before any absolute position: the start was assumed.
+    StartAssumed = "start-assumed", Info;
+    /// The plan would hold more motions than `limits.moves`.
+    MoveLimit = "move-limit", Error;
+    // ---- thread cutting (G32 and shared) ----
+    /// A thread block with no lead: no F/I in it or before it.
+    MissingLead = "missing-lead", Error;
+    /// A thread block that does not move.
+    ZeroLengthThread = "zero-length-thread", Error;
+    /// The run-out length K is longer than the thread itself.
+    RunoutTooLong = "runout-too-long", Error;
+    /// Q on a later block of a continuous thread is ignored.
+    QIgnored = "q-ignored", Warning;
+    /// Run-out drawn by parameter No.107's speed rule.
+    RunoutSpeed = "runout-speed", Info;
+    /// More starts than the controller allows.
+    TooManyStarts = "too-many-starts", Error;
+    // ---- textbook advice ----
+    /// The crest diameter was not turned in the program and was assumed.
+    CrestAssumed = "crest-assumed", Info;
+    /// Total programmed depth differs from the 1.3·P rule.
+    DepthVsStandard = "depth-vs-standard", Warning;
+    /// Programmed infeeds compared with table 4-3.
+    InfeedGuidance = "infeed-guidance", Info;
+    /// A pass infeed larger than table 4-3's largest for the pitch.
+    InfeedTooLarge = "infeed-too-large", Warning;
+    /// Lead-in δ1 or run-out δ2 shorter than the textbook advises.
+    Clearance = "clearance", Warning;
+}
+
+impl Serialize for Code {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+impl std::fmt::Display for Code {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// One finding about the program, positioned at a span of the source.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Diagnostic {
+    /// Severity (fixed by the code).
+    pub severity: Severity,
+    /// Stable code.
+    pub code: Code,
+    /// Human-readable message.
+    pub message: String,
+    /// 1-based line of the span start.
+    pub line: u32,
+    /// 1-based column (characters) of the span start.
+    pub column: u32,
+    /// 1-based line of the span end.
+    pub end_line: u32,
+    /// 1-based column of the span end (exclusive).
+    pub end_column: u32,
+    /// Byte span in the source.
+    pub span: Span,
+}
+
+/// Collects diagnostics while a program is read.
+#[derive(Debug, Default)]
+pub struct Diagnostics {
+    items: Vec<(Code, String, Span)>,
+    limit: usize,
+    dropped: usize,
+}
+
+impl Diagnostics {
+    /// A collector that keeps at most `limit` diagnostics (the rest are counted).
+    pub fn with_limit(limit: usize) -> Diagnostics {
+        Diagnostics {
+            items: Vec::new(),
+            limit,
+            dropped: 0,
+        }
+    }
+
+    /// Records a diagnostic.
+    pub fn push(&mut self, code: Code, span: Span, message: impl Into<String>) {
+        if self.items.len() < self.limit {
+            self.items.push((code, message.into(), span));
+        } else {
+            self.dropped += 1;
+        }
+    }
+
+    /// Whether an error-level diagnostic was recorded.
+    pub fn has_error(&self) -> bool {
+        self.items
+            .iter()
+            .any(|(c, _, _)| c.severity() == Severity::Error)
+    }
+
+    /// Number recorded so far.
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    /// True when nothing was recorded.
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+
+    /// How many were dropped over the limit.
+    pub fn dropped(&self) -> usize {
+        self.dropped
+    }
+
+    /// Resolves spans to line/column positions, sorted by position.
+    pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
+        let mut out: Vec<Diagnostic> = self
+            .items
+            .into_iter()
+            .map(|(code, message, span)| {
+                let LineCol { line, column } = index.locate(text, span.start as usize);
+                let end = index.locate(text, span.end as usize);
+                Diagnostic {
+                    severity: code.severity(),
+                    code,
+                    message,
+                    line,
+                    column,
+                    end_line: end.line,
+                    end_column: end.column,
+                    span,
+                }
+            })
+            .collect();
+        out.sort_by_key(|d| (d.span.start, std::cmp::Reverse(d.severity)));
+        out
+    }
+}

@@ -1,0 +1,671 @@
+//! The lexer: program text → [`Block`]s with byte spans, one line at a time.
+//!
+//! It never panics and never gives up on a program: every problem becomes a
+//! diagnostic positioned at the offending characters, and the block that has
+//! it is marked so the interpreter skips it.
+
+use crate::block::{Block, BlockKind, Number, Word};
+use crate::diagnostic::{Code, Diagnostics};
+use crate::dialect::Dialect;
+use crate::span::Span;
+
+/// Limits the lexer enforces (from the settings).
+#[derive(Clone, Copy, Debug)]
+pub struct LexLimits {
+    /// Longest block in characters.
+    pub block_chars: usize,
+    /// Most significant digits in a number.
+    pub digits: usize,
+}
+
+impl Default for LexLimits {
+    fn default() -> Self {
+        LexLimits {
+            block_chars: 256,
+            digits: 8,
+        }
+    }
+}
+
+/// A character of the line being lexed, after folding full-width forms.
+#[derive(Clone, Copy)]
+struct Ch {
+    /// ASCII byte after folding; `0x80` for any other non-ASCII character.
+    b: u8,
+    /// Whether this came from a full-width or look-alike character.
+    folded: bool,
+    /// Byte offset of the original character in the program.
+    at: u32,
+}
+
+const OTHER: u8 = 0x80;
+
+/// Folds a non-ASCII character to its ASCII twin when it has one.
+fn fold(c: char) -> Option<u8> {
+    let u = c as u32;
+    match u {
+        0xFF01..=0xFF5E => Some((u - 0xFEE0) as u8),
+        0x3000 => Some(b' '),
+        0x3002 => Some(b'.'), // ideographic full stop, typed for '.' in Chinese input mode
+        0x2212 => Some(b'-'), // minus sign from documents
+        _ => None,
+    }
+}
+
+/// Reads program text block by block.
+pub struct Lexer<'a> {
+    text: &'a str,
+    pos: usize,
+    line: u32,
+    dialect: Dialect,
+    limits: LexLimits,
+    chars: Vec<Ch>,
+}
+
+impl<'a> Lexer<'a> {
+    /// A lexer over `text` for `dialect`.
+    pub fn new(text: &'a str, dialect: Dialect, limits: LexLimits) -> Lexer<'a> {
+        let pos = if text.starts_with('\u{FEFF}') { 3 } else { 0 };
+        Lexer {
+            text,
+            pos,
+            line: 0,
+            dialect,
+            limits,
+            chars: Vec::with_capacity(128),
+        }
+    }
+
+    /// Byte offset of the next unread line.
+    pub fn offset(&self) -> usize {
+        self.pos
+    }
+
+    /// Resumes lexing at byte `offset`, which must be a line start, as 1-based `line`.
+    pub fn seek(&mut self, offset: usize, line: u32) {
+        self.pos = offset.min(self.text.len());
+        self.line = line.saturating_sub(1);
+    }
+
+    /// Reads the next line into `block`. Returns false at the end of the text.
+    pub fn next_block(&mut self, block: &mut Block, diags: &mut Diagnostics) -> bool {
+        let text = self.text;
+        if self.pos >= text.len() {
+            // The end; a trailing newline does not start another block.
+            return false;
+        }
+        let start = self.pos;
+        let bytes = text.as_bytes();
+        let rel = bytes[start..]
+            .iter()
+            .position(|&b| b == b'\n' || b == b'\r');
+        let end = rel.map_or(bytes.len(), |r| start + r);
+        self.pos = match rel {
+            None => bytes.len() + 1,
+            Some(_) if bytes[end] == b'\r' && bytes.get(end + 1) == Some(&b'\n') => end + 2,
+            Some(_) => end + 1,
+        };
+        self.line += 1;
+        block.reset(self.line, Span::new(start, end));
+        self.lex_line(&text[start..end], start, block, diags);
+        true
+    }
+
+    fn lex_line(&mut self, line: &str, base: usize, block: &mut Block, diags: &mut Diagnostics) {
+        // Decode once into folded characters.
+        self.chars.clear();
+        let mut nchars = 0usize;
+        if line.is_ascii() {
+            nchars = line.len();
+            if nchars <= self.limits.block_chars {
+                self.chars.extend(line.bytes().enumerate().map(|(i, b)| Ch {
+                    b,
+                    folded: false,
+                    at: (base + i) as u32,
+                }));
+            }
+        } else {
+            for (i, c) in line.char_indices() {
+                nchars += 1;
+                if nchars > self.limits.block_chars {
+                    break;
+                }
+                let (b, folded) = if c.is_ascii() {
+                    (c as u8, false)
+                } else {
+                    match fold(c) {
+                        Some(b) => (b, true),
+                        None => (OTHER, false),
+                    }
+                };
+                self.chars.push(Ch {
+                    b,
+                    folded,
+                    at: (base + i) as u32,
+                });
+            }
+        }
+        let end = (base + line.len()) as u32;
+        if nchars > self.limits.block_chars {
+            diags.push(
+                Code::BlockTooLong,
+                Span::new(base, base + line.len()),
+                format!(
+                    "block of {nchars} characters is longer than the limit of {} (setting limits.block_chars); it is skipped",
+                    self.limits.block_chars
+                ),
+            );
+            block.has_error = true;
+            return;
+        }
+        self.chars.push(Ch {
+            b: 0,
+            folded: false,
+            at: end,
+        });
+        let chars = std::mem::take(&mut self.chars);
+        LineLexer {
+            chars: &chars,
+            i: 0,
+            text: self.text,
+            dialect: self.dialect,
+            limits: self.limits,
+            first_fold: None,
+            last_fold: None,
+        }
+        .run(block, diags);
+        self.chars = chars;
+    }
+}
+
+struct LineLexer<'c> {
+    chars: &'c [Ch],
+    i: usize,
+    text: &'c str,
+    dialect: Dialect,
+    limits: LexLimits,
+    first_fold: Option<usize>,
+    last_fold: Option<usize>,
+}
+
+impl LineLexer<'_> {
+    fn peek(&self) -> u8 {
+        self.chars[self.i].b
+    }
+
+    fn at(&self, i: usize) -> usize {
+        self.chars[i].at as usize
+    }
+
+    /// Byte offset just after character `i`.
+    fn after(&self, i: usize) -> usize {
+        self.chars[(i + 1).min(self.chars.len() - 1)].at as usize
+    }
+
+    fn span(&self, from: usize, to_excl: usize) -> Span {
+        Span::new(self.at(from), self.at(to_excl.min(self.chars.len() - 1)))
+    }
+
+    /// Consumes one code character, noting full-width folds.
+    fn bump(&mut self) -> u8 {
+        let c = self.chars[self.i];
+        if c.folded {
+            self.first_fold.get_or_insert(self.i);
+            self.last_fold = Some(self.i);
+        }
+        self.i += 1;
+        c.b
+    }
+
+    fn run(mut self, block: &mut Block, diags: &mut Diagnostics) {
+        let mut seen_code = false;
+        loop {
+            let c = self.peek();
+            match c {
+                0 => break,
+                b' ' | b'\t' => {
+                    self.bump();
+                }
+                b'(' => self.comment(diags),
+                b')' => {
+                    let i = self.i;
+                    self.bump();
+                    diags.push(
+                        Code::UnmatchedParen,
+                        self.span(i, i + 1),
+                        "')' without an opening '('",
+                    );
+                    block.has_error = true;
+                }
+                b';' => {
+                    self.bump();
+                    self.after_semicolon(diags);
+                    break;
+                }
+                b'%' if !seen_code => {
+                    self.bump();
+                    block.kind = BlockKind::Percent;
+                    seen_code = true;
+                }
+                b'/' if !seen_code => {
+                    self.bump();
+                    block.deleted = true;
+                    // "/1".."/9" select a block-delete switch; screwcut has one switch.
+                    if self.peek().is_ascii_digit() {
+                        self.bump();
+                    }
+                }
+                b'#' | b'[' | b']' | b'=' => {
+                    let i = self.i;
+                    diags.push(
+                        Code::UnsupportedMacro,
+                        self.span(i, i + 1),
+                        format!("'{}': macro variables and expressions are not interpreted; the block is skipped", c as char),
+                    );
+                    block.has_error = true;
+                    // Skip to the end of the code part of the line.
+                    while !matches!(self.peek(), 0 | b';') {
+                        if self.peek() == b'(' {
+                            self.comment(diags);
+                        } else {
+                            self.bump();
+                        }
+                    }
+                }
+                b':' if !seen_code => {
+                    // ISO program number ":1234".
+                    seen_code = true;
+                    self.program_number(block, diags);
+                }
+                b'a'..=b'z' | b'A'..=b'Z' => {
+                    let letter = c.to_ascii_uppercase();
+                    if letter == b'O' && !seen_code {
+                        seen_code = true;
+                        self.program_number(block, diags);
+                    } else {
+                        seen_code = true;
+                        self.word(letter, block, diags);
+                    }
+                }
+                b'0'..=b'9' | b'.' | b'+' | b'-' => {
+                    let i = self.i;
+                    while matches!(self.peek(), b'0'..=b'9' | b'.' | b'+' | b'-') {
+                        self.bump();
+                    }
+                    diags.push(
+                        Code::UnexpectedCharacter,
+                        self.span(i, self.i),
+                        format!(
+                            "number '{}' without an address letter",
+                            self.slice(i, self.i)
+                        ),
+                    );
+                    block.has_error = true;
+                }
+                _ => {
+                    let i = self.i;
+                    self.bump();
+                    let what = self.slice(i, i + 1);
+                    diags.push(
+                        Code::UnexpectedCharacter,
+                        self.span(i, i + 1),
+                        format!(
+                            "unexpected character '{what}' (U+{:04X})",
+                            what.chars().next().map_or(0, |c| c as u32)
+                        ),
+                    );
+                    block.has_error = true;
+                }
+            }
+        }
+        if let (Some(a), Some(b)) = (self.first_fold, self.last_fold) {
+            let original = &self.text[self.at(a)..self.after(b)];
+            let folded: String = original
+                .chars()
+                .map(|c| fold(c).map_or(c, |b| b as char))
+                .collect();
+            diags.push(
+                Code::FullWidth,
+                Span::new(self.at(a), self.after(b)),
+                format!("full-width characters read as ASCII: '{original}' as '{folded}'"),
+            );
+        }
+    }
+
+    fn slice(&self, from: usize, to_excl: usize) -> &str {
+        let a = self.at(from);
+        let b = self.at(to_excl.min(self.chars.len() - 1));
+        &self.text[a..b]
+    }
+
+    fn comment(&mut self, diags: &mut Diagnostics) {
+        let open = self.i;
+        self.bump();
+        loop {
+            let c = self.chars[self.i];
+            match c.b {
+                0 => {
+                    diags.push(
+                        Code::UnclosedComment,
+                        self.span(open, open + 1),
+                        "comment '(' is not closed on this line",
+                    );
+                    return;
+                }
+                b')' => {
+                    self.bump();
+                    return;
+                }
+                b'(' => {
+                    diags.push(
+                        Code::NestedComment,
+                        self.span(self.i, self.i + 1),
+                        "'(' inside a comment: comments do not nest, the comment ends at the first ')'",
+                    );
+                    self.i += 1;
+                }
+                _ => self.i += 1, // comment text is not folded or reported
+            }
+        }
+    }
+
+    /// After `;` the rest of the line is a comment; warn when it looks like code.
+    fn after_semicolon(&mut self, diags: &mut Diagnostics) {
+        let mut j = self.i;
+        while matches!(self.chars[j].b, b' ' | b'\t') {
+            j += 1;
+        }
+        let c0 = self.chars[j].b.to_ascii_uppercase();
+        let c1 = self.chars[j + (c0 != 0) as usize].b;
+        let looks_like_code = matches!(
+            c0,
+            b'G' | b'M' | b'X' | b'Z' | b'U' | b'W' | b'N' | b'T' | b'S' | b'F'
+        ) && (c1.is_ascii_digit() || c1 == b'-' || c1 == b'.');
+        if looks_like_code {
+            let end = self.chars.len() - 1;
+            diags.push(
+                Code::CodeAfterSemicolon,
+                self.span(j, end),
+                format!(
+                    "'{}' follows ';' (end of block) and is read as a comment, not executed",
+                    self.slice(j, end).trim_end()
+                ),
+            );
+        }
+    }
+
+    fn program_number(&mut self, block: &mut Block, diags: &mut Diagnostics) {
+        let at = self.i;
+        self.bump();
+        while matches!(self.peek(), b' ' | b'\t') {
+            self.bump();
+        }
+        let ds = self.i;
+        while self.peek().is_ascii_digit() {
+            self.bump();
+        }
+        let digits = self
+            .slice(ds, self.i)
+            .chars()
+            .filter(|c| !c.is_whitespace())
+            .count();
+        let text: String = self.chars[ds..self.i].iter().map(|c| c.b as char).collect();
+        if digits == 0 || digits > 5 || self.peek() == b'.' {
+            while matches!(self.peek(), b'0'..=b'9' | b'.') {
+                self.bump();
+            }
+            diags.push(
+                Code::MalformedProgramNumber,
+                self.span(at, self.i),
+                format!(
+                    "'{}' is not a program number (O followed by up to four digits)",
+                    self.slice(at, self.i)
+                ),
+            );
+            block.has_error = true;
+            return;
+        }
+        block.kind = BlockKind::ProgramNumber(text.parse().unwrap_or(0));
+    }
+
+    fn word(&mut self, letter: u8, block: &mut Block, diags: &mut Diagnostics) {
+        let start = self.i;
+        self.bump();
+        let known = self.dialect.has_address(letter);
+        while matches!(self.peek(), b' ' | b'\t') {
+            self.bump();
+        }
+        let ns = self.i;
+        while matches!(self.peek(), b'0'..=b'9' | b'.' | b'+' | b'-') {
+            self.bump();
+        }
+        let ne = self.i;
+        let span = self.span(start, ne);
+        if !known {
+            diags.push(
+                Code::UnknownAddress,
+                self.span(start, start + 1),
+                format!(
+                    "'{}' is not an address of the {} controller",
+                    letter as char,
+                    self.dialect.title()
+                ),
+            );
+            block.has_error = true;
+            return;
+        }
+        if ns == ne {
+            diags.push(
+                Code::MissingValue,
+                self.span(start, start + 1),
+                format!("address '{}' has no value", letter as char),
+            );
+            block.has_error = true;
+            return;
+        }
+        let raw: Vec<u8> = self.chars[ns..ne].iter().map(|c| c.b).collect();
+        let num = match parse_number(&raw, self.limits.digits) {
+            Ok(n) => n,
+            Err(NumError::Malformed) => {
+                diags.push(
+                    Code::MalformedNumber,
+                    self.span(ns, ne),
+                    format!("'{}' is not a number", self.slice(ns, ne)),
+                );
+                block.has_error = true;
+                return;
+            }
+            Err(NumError::TooManyDigits(n)) => {
+                diags.push(
+                    Code::TooManyDigits,
+                    self.span(ns, ne),
+                    format!("{n} significant digits: the controller accepts at most {} (setting limits.digits)", self.limits.digits),
+                );
+                block.has_error = true;
+                return;
+            }
+        };
+        let word = Word { letter, num, span };
+        if letter == b'N' {
+            if let Some(first) = block.n {
+                diags.push(
+                    Code::RepeatedWord,
+                    span,
+                    format!(
+                        "second sequence number in one block (first at {})",
+                        first.display()
+                    ),
+                );
+                block.has_error = true;
+            } else {
+                block.n = Some(word);
+            }
+            return;
+        }
+        if let Some(first) = block.push(word) {
+            if letter != b'G' && letter != b'M' {
+                block.words.pop();
+                diags.push(
+                    Code::RepeatedWord,
+                    span,
+                    format!(
+                        "address {} appears twice in one block ({} and {})",
+                        letter as char,
+                        first.display(),
+                        word.display()
+                    ),
+                );
+                block.has_error = true;
+            }
+        }
+    }
+}
+
+enum NumError {
+    Malformed,
+    TooManyDigits(usize),
+}
+
+const POW10: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// Parses `[+-]digits[.digits]` exactly: the mantissa is an integer and the
+/// result one correctly rounded division, so `27.4286` reads as the same
+/// `f64` Rust's parser gives.
+fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
+    let (neg, body) = match raw.first() {
+        Some(b'-') => (true, &raw[1..]),
+        Some(b'+') => (false, &raw[1..]),
+        _ => (false, raw),
+    };
+    let mut mantissa: u64 = 0;
+    let mut sig = 0usize;
+    let mut frac = 0usize;
+    let mut point = false;
+    let mut any_digit = false;
+    let mut pending_zeros = 0usize; // trailing fraction zeros not yet counted
+    for &b in body {
+        match b {
+            b'0'..=b'9' => {
+                any_digit = true;
+                let d = (b - b'0') as u64;
+                if point {
+                    frac += 1;
+                }
+                if mantissa == 0 && d == 0 && !point {
+                    continue; // leading zero
+                }
+                if point && d == 0 {
+                    pending_zeros += 1;
+                } else {
+                    sig += 1 + pending_zeros;
+                    pending_zeros = 0;
+                }
+                if mantissa < 100_000_000_000_000_000 {
+                    mantissa = mantissa * 10 + d;
+                } else {
+                    return Err(NumError::TooManyDigits(
+                        body.iter().filter(|c| c.is_ascii_digit()).count(),
+                    ));
+                }
+            }
+            b'.' if !point => point = true,
+            _ => return Err(NumError::Malformed),
+        }
+    }
+    if !any_digit {
+        return Err(NumError::Malformed);
+    }
+    if sig > max_digits {
+        return Err(NumError::TooManyDigits(sig));
+    }
+    let mut value = if frac < POW10.len() {
+        mantissa as f64 / POW10[frac]
+    } else {
+        0.0
+    };
+    if neg {
+        value = -value;
+    }
+    if value == 0.0 {
+        value = 0.0; // no negative zero
+    }
+    Ok(Number {
+        value,
+        has_point: point,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lex(text: &str) -> (Vec<Block>, Vec<crate::diagnostic::Diagnostic>) {
+        let mut lx = Lexer::new(text, Dialect::Gsk980tdc, LexLimits::default());
+        let mut d = Diagnostics::with_limit(100);
+        let mut out = Vec::new();
+        let mut b = Block::default();
+        while lx.next_block(&mut b, &mut d) {
+            out.push(b.clone());
+        }
+        let idx = crate::span::LineIndex::new(text);
+        (out, d.finish(text, &idx))
+    }
+
+    #[test]
+    fn numbers_parse_exactly() {
+        for s in [
+            "27.4286",
+            "48.8571",
+            "-75",
+            "0.0001",
+            "2.0",
+            "1234.5678",
+            "-0.5",
+        ] {
+            let n = parse_number(s.as_bytes(), 8).ok().unwrap();
+            assert_eq!(n.value, s.parse::<f64>().unwrap(), "{s}");
+        }
+        assert!(parse_number(b"27.", 8).ok().unwrap().has_point);
+        assert!(!parse_number(b"27", 8).ok().unwrap().has_point);
+        assert_eq!(parse_number(b".5", 8).ok().unwrap().value, 0.5);
+        assert!(matches!(
+            parse_number(b"1.2.3", 8),
+            Err(NumError::Malformed)
+        ));
+        assert!(matches!(parse_number(b"--1", 8), Err(NumError::Malformed)));
+        assert!(matches!(parse_number(b"-", 8), Err(NumError::Malformed)));
+        assert!(matches!(
+            parse_number(b"123456789", 8),
+            Err(NumError::TooManyDigits(9))
+        ));
+        assert!(matches!(
+            parse_number(b"12345678901234567890", 8),
+            Err(NumError::TooManyDigits(_))
+        ));
+        // Leading zeros and trailing fraction zeros are not significant.
+        assert_eq!(parse_number(b"00000080", 8).ok().unwrap().value, 80.0);
+        assert_eq!(parse_number(b"1.000000000", 8).ok().unwrap().value, 1.0);
+    }
+
+    #[test]
+    fn seed_lines_lex_with_comments() {
+        let (b, d) = lex("O0009;\nG00 X27.4286 Z3;\t(第一次切入 1mm)\nN40G32Z13.0F2.0\n");
+        assert!(d.is_empty(), "{d:?}");
+        assert_eq!(b[0].kind, BlockKind::ProgramNumber(9));
+        assert_eq!(b[1].get(b'X').unwrap().value(), 27.4286);
+        assert_eq!(b[2].n.unwrap().value(), 40.0);
+        assert_eq!(b[2].get(b'F').unwrap().value(), 2.0);
+        assert_eq!(b.len(), 3);
+    }
+
+    #[test]
+    fn crlf_and_lone_cr() {
+        let (b, _) = lex("G00 X1\r\nG01 Z2\rM30");
+        assert_eq!(b.len(), 3);
+        assert_eq!(b[2].line, 3);
+        assert_eq!(b[2].get(b'M').unwrap().value(), 30.0);
+    }
+}

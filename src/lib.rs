@@ -1,0 +1,37 @@
+//! screwcut: an interpreter and pass planner for CNC lathe thread-cutting
+//! G-code (GSK980TDc, Fanuc 0i, Renhe).
+//!
+//! Data flows one way: text → [`block`]s ([`lexer`]) → motions and thread
+//! passes ([`interp`], [`g32`], [`renhe`], [`cycle`], [`group`],
+//! [`advice`]) → [`plan::Plan`]. The core is free of wasm and the DOM; the
+//! browser binding lives in `wasm` and is compiled only for wasm32.
+//!
+//! ```
+//! use screwcut::{plan::plan_default, dialect::Dialect};
+//! let plan = plan_default("G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nM30\n", Dialect::Gsk980tdc);
+//! assert_eq!(plan.threads.len(), 1);
+//! assert_eq!(plan.threads[0].passes[0].to.z, 13.0);
+//! ```
+
+pub mod advice;
+pub mod block;
+pub mod cycle;
+pub mod diagnostic;
+pub mod dialect;
+pub mod g32;
+pub mod gcode;
+pub mod group;
+pub mod interp;
+pub mod lexer;
+pub mod motion;
+pub mod num;
+pub mod plan;
+pub mod renhe;
+pub mod settings;
+pub mod span;
+pub mod thread;
+
+pub use diagnostic::{Code, Diagnostic, Severity};
+pub use dialect::Dialect;
+pub use plan::{Plan, plan};
+pub use settings::Settings;

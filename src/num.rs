@@ -1,0 +1,55 @@
+//! Small numeric helpers shared by the planner and the serialisers.
+
+use serde::Serializer;
+
+/// Tolerance for comparing lengths in program units (well below IS-C's 0.0001).
+pub const EPS: f64 = 1e-9;
+
+/// Rounds a value for output: six decimals, enough for IS-C inch (0.00001) and
+/// free of binary noise such as `0.44999999999999574`.
+pub fn round_out(v: f64) -> f64 {
+    if !v.is_finite() {
+        return v;
+    }
+    let r = (v * 1e6).round() / 1e6;
+    if r == 0.0 { 0.0 } else { r }
+}
+
+/// `serialize_with` helper that writes a rounded `f64`.
+pub fn ser_round<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_f64(round_out(*v))
+}
+
+/// `serialize_with` helper for an optional rounded `f64`.
+pub fn ser_round_opt<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(v) => s.serialize_some(&round_out(*v)),
+        None => s.serialize_none(),
+    }
+}
+
+/// Approximate equality within [`EPS`] scaled to the magnitude of the inputs.
+pub fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= EPS * (1.0 + a.abs().max(b.abs()))
+}
+
+/// Formats a length for messages: up to four decimals, trailing zeros trimmed.
+pub fn fmt(v: f64) -> String {
+    let s = format!("{:.4}", round_out(v));
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.to_string() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounding_removes_binary_noise() {
+        assert_eq!(round_out(0.44999999999999574), 0.45);
+        assert_eq!(round_out(-0.0000001), 0.0);
+        assert_eq!(fmt(27.42860), "27.4286");
+        assert_eq!(fmt(2.0), "2");
+        assert_eq!(fmt(-0.00001), "0");
+    }
+}

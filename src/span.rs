@@ -1,0 +1,121 @@
+//! Byte spans into the source text and their line/column positions.
+
+use serde::Serialize;
+
+/// A half-open byte range `[start, end)` into the program text.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Span {
+    /// First byte.
+    pub start: u32,
+    /// One past the last byte.
+    pub end: u32,
+}
+
+impl Span {
+    /// A span from `start` to `end` (bytes).
+    pub fn new(start: usize, end: usize) -> Span {
+        Span {
+            start: start as u32,
+            end: end as u32,
+        }
+    }
+
+    /// The smallest span covering both.
+    pub fn cover(self, other: Span) -> Span {
+        Span {
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
+    }
+}
+
+/// A 1-based line and column; the column counts Unicode characters.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct LineCol {
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column in characters.
+    pub column: u32,
+}
+
+/// Maps byte offsets of one source text to line/column positions.
+#[derive(Clone, Debug)]
+pub struct LineIndex {
+    starts: Vec<u32>,
+}
+
+impl LineIndex {
+    /// Indexes the line starts of `text` (`\n`, `\r\n` and a lone `\r` end a line).
+    pub fn new(text: &str) -> LineIndex {
+        let mut starts = vec![0u32];
+        let b = text.as_bytes();
+        let mut i = 0;
+        while i < b.len() {
+            match b[i] {
+                b'\n' => starts.push(i as u32 + 1),
+                b'\r' => {
+                    if b.get(i + 1) == Some(&b'\n') {
+                        i += 1;
+                    }
+                    starts.push(i as u32 + 1);
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        LineIndex { starts }
+    }
+
+    /// Number of lines.
+    pub fn lines(&self) -> usize {
+        self.starts.len()
+    }
+
+    /// Byte offset where 1-based `line` starts.
+    pub fn line_start(&self, line: u32) -> usize {
+        self.starts[(line.max(1) as usize - 1).min(self.starts.len() - 1)] as usize
+    }
+
+    /// Line and column of byte `offset` in `text` (the text that was indexed).
+    pub fn locate(&self, text: &str, offset: usize) -> LineCol {
+        let offset = offset.min(text.len());
+        let line = match self.starts.binary_search(&(offset as u32)) {
+            Ok(i) => i,
+            Err(i) => i - 1,
+        };
+        let start = self.starts[line] as usize;
+        let column = char_column(&text[start..], offset - start);
+        LineCol {
+            line: line as u32 + 1,
+            column,
+        }
+    }
+}
+
+/// 1-based character column of byte `offset` within `line_text`.
+pub fn char_column(line_text: &str, offset: usize) -> u32 {
+    let prefix = &line_text.as_bytes()[..offset.min(line_text.len())];
+    if prefix.is_ascii() {
+        return offset as u32 + 1;
+    }
+    // Count characters: every byte that is not a UTF-8 continuation byte.
+    prefix.iter().filter(|&&b| (b & 0xC0) != 0x80).count() as u32 + 1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_and_columns() {
+        let text = "G00 X1\r\nＧ32 Z2\rM30\n";
+        let idx = LineIndex::new(text);
+        assert_eq!(idx.lines(), 4);
+        assert_eq!(idx.locate(text, 4), LineCol { line: 1, column: 5 });
+        // "Ｇ" is three bytes: the '3' after it is column 2.
+        let g = text.find("32").unwrap();
+        assert_eq!(idx.locate(text, g), LineCol { line: 2, column: 2 });
+        let m = text.find("M30").unwrap();
+        assert_eq!(idx.locate(text, m), LineCol { line: 3, column: 1 });
+    }
+}

@@ -1,0 +1,200 @@
+//! Threads and their passes: what the planner produces for every thread in
+//! the program, whether cut block by block (G32/G33) or by a cycle.
+
+use serde::Serialize;
+
+use crate::motion::Point;
+use crate::num::{ser_round, ser_round_opt};
+
+/// The shape of a thread.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ThreadKind {
+    /// Cylindrical: only Z moves.
+    Straight,
+    /// Conical: both axes move.
+    Taper,
+    /// Face (scroll): only X moves.
+    Face,
+}
+
+/// A machine axis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Axis {
+    /// Cross slide.
+    X,
+    /// Spindle axis.
+    Z,
+}
+
+/// Which command cut a thread.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Source {
+    /// GSK/Fanuc G32 blocks.
+    G32,
+    /// Renhe G32 (inch) / G33 (metric) blocks.
+    Renhe,
+    /// GSK G78 cycle.
+    G78,
+    /// G92 cycle.
+    G92,
+    /// G76 cycle.
+    G76,
+}
+
+/// How the tool feeds into the thread from pass to pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Infeed {
+    /// Straight in along the thread middle (both flanks cut).
+    Radial,
+    /// Along the left flank (−Z side unless `flank.r1_side` says otherwise).
+    Left,
+    /// Along the right flank.
+    Right,
+    /// Alternating left and right.
+    Alternating,
+    /// As programmed block by block (G32/G33): whatever the blocks do.
+    Programmed,
+}
+
+/// What a pass does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Role {
+    /// A roughing pass.
+    Rough,
+    /// The finishing pass that removes the allowance d.
+    Finish,
+    /// A spring pass at full depth.
+    Spring,
+}
+
+/// Where a thread's crest (the reference its depths are measured from) came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum CrestSource {
+    /// The cycle's own geometry (end point and thread height k).
+    Cycle,
+    /// The diameter the program turned before threading.
+    Outline,
+    /// Assumed from the deepest pass and the 1.3·P rule.
+    Assumed,
+}
+
+/// One spindle-synchronised pass of a thread.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Pass {
+    /// 1-based start (helix) number.
+    pub start: u32,
+    /// 1-based pass number within the start.
+    pub index: u32,
+    /// Start of the synchronised cut (screw-in excluded).
+    pub from: Point,
+    /// End of the synchronised cut (run-out excluded).
+    pub to: Point,
+    /// Cumulative depth from the crest, radial (axial for face threads).
+    #[serde(serialize_with = "ser_round")]
+    pub depth: f64,
+    /// Depth added by this pass over the previous pass of the same start.
+    #[serde(serialize_with = "ser_round")]
+    pub infeed: f64,
+    /// What the pass does.
+    pub role: Role,
+    /// Source lines whose blocks make this pass (infeed, cut, retract, return).
+    pub lines: Vec<u32>,
+    /// Corner points of a continuous (multi-segment) cut, `from` and `to` included.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub segments: Vec<Point>,
+    /// Where the run-out ends (it starts at `to`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub runout_to: Option<Point>,
+    /// Where the screw-in starts (it ends at `from`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub screw_in_from: Option<Point>,
+    /// Axial shift of this pass from the thread middle (flank infeed, multi-start offset excluded).
+    #[serde(serialize_with = "ser_round")]
+    pub shift: f64,
+    /// Start angle in degrees (Q, or 360°·(start−1)/starts).
+    #[serde(serialize_with = "ser_round")]
+    pub angle: f64,
+    /// Area of the thread space this pass removes (program units²), when the tool angle is known.
+    #[serde(
+        serialize_with = "ser_round_opt",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub area: Option<f64>,
+}
+
+/// A thread: every pass that cuts the same helix (or helices, when multi-start).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Thread {
+    /// First source line of the thread.
+    pub line: u32,
+    /// Last source line of the thread.
+    pub end_line: u32,
+    /// Which command cut it.
+    pub source: Source,
+    /// Straight, taper or face.
+    pub kind: ThreadKind,
+    /// Axis along which the lead is measured.
+    pub long_axis: Axis,
+    /// Lead: long-axis advance per spindle revolution.
+    #[serde(serialize_with = "ser_round")]
+    pub lead: f64,
+    /// Pitch = lead / starts.
+    #[serde(serialize_with = "ser_round")]
+    pub pitch: f64,
+    /// Number of starts.
+    pub starts: u32,
+    /// Internal thread (depth grows outward).
+    pub internal: bool,
+    /// How the passes feed in.
+    pub infeed: Infeed,
+    /// Tool (thread) angle in degrees, when known.
+    #[serde(serialize_with = "ser_round")]
+    pub tool_angle: f64,
+    /// Crest diameter at the start of the first pass (X), or crest Z for face threads.
+    #[serde(serialize_with = "ser_round")]
+    pub crest: f64,
+    /// Where `crest` came from.
+    pub crest_source: CrestSource,
+    /// Total depth of the deepest pass.
+    #[serde(serialize_with = "ser_round")]
+    pub height: f64,
+    /// Taper: start radius minus end radius of the thread (R(i)).
+    #[serde(serialize_with = "ser_round")]
+    pub taper: f64,
+    /// The passes, start by start, in cutting order.
+    pub passes: Vec<Pass>,
+    /// Direction along the short axis in which depth grows (−1 or +1, radial for Z threads).
+    #[serde(skip)]
+    pub depth_dir: f64,
+}
+
+/// Area a V tool of included angle `angle_deg` removes between depths `h0`
+/// and `h1` (radial): `tan(a/2)·(h1² − h0²)`. `None` for a 0° (square) tool.
+pub fn v_area(angle_deg: f64, h0: f64, h1: f64) -> Option<f64> {
+    if angle_deg <= 0.0 {
+        return None;
+    }
+    let t = (angle_deg.to_radians() / 2.0).tan();
+    Some(t * (h1 * h1 - h0 * h0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn v_area_of_a_60_degree_tool() {
+        // Depth 1 with a 60° tool: half-width tan 30° = 0.57735, triangle area 0.57735.
+        let a = v_area(60.0, 0.0, 1.0).unwrap();
+        assert!((a - 0.5773502691896257).abs() < 1e-12);
+        // From 1 to 2: 0.57735·(4 − 1).
+        assert!((v_area(60.0, 1.0, 2.0).unwrap() - 3.0 * 0.5773502691896257).abs() < 1e-12);
+        assert_eq!(v_area(0.0, 0.0, 1.0), None);
+    }
+}
