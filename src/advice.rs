@@ -29,10 +29,7 @@ pub const TABLE_4_3: &[(f64, &[f64])] = &[
 
 /// Table 4-3's infeeds for `pitch` (mm), if the table lists it.
 pub fn table_4_3(pitch: f64) -> Option<&'static [f64]> {
-    TABLE_4_3
-        .iter()
-        .find(|(p, _)| (p - pitch).abs() < 1e-6)
-        .map(|(_, v)| *v)
+    TABLE_4_3.iter().find(|(p, _)| (p - pitch).abs() < 1e-6).map(|(_, v)| *v)
 }
 
 /// A straight outline piece (a turning feed move) in (long, short) terms.
@@ -60,11 +57,7 @@ fn long_of(long: Axis, p: Point) -> f64 {
 fn line_at(long: Axis, a: Point, b: Point, l: f64) -> f64 {
     let (la, lb) = (long_of(long, a), long_of(long, b));
     let (sa, sb) = (short_of(long, a), short_of(long, b));
-    if (lb - la).abs() < EPS {
-        sa
-    } else {
-        sa + (sb - sa) * (l - la) / (lb - la)
-    }
+    if (lb - la).abs() < EPS { sa } else { sa + (sb - sa) * (l - la) / (lb - la) }
 }
 
 /// Fills depths, crest, roles and areas of the block-by-block threads and
@@ -78,10 +71,7 @@ pub fn finish_manual(
     spans: &dyn Fn(u32) -> Span,
 ) {
     let advice = s.flag(P::Advice);
-    for t in threads
-        .iter_mut()
-        .filter(|t| matches!(t.source, Source::G32 | Source::Renhe))
-    {
+    for t in threads.iter_mut().filter(|t| matches!(t.source, Source::G32 | Source::Renhe)) {
         let long = t.long_axis;
         let dir = t.depth_dir;
         let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
@@ -90,9 +80,7 @@ pub fn finish_manual(
         let deepest = t
             .passes
             .iter()
-            .max_by(|a, b| {
-                (short_of(long, a.from) * dir).total_cmp(&(short_of(long, b.from) * dir))
-            })
+            .max_by(|a, b| (short_of(long, a.from) * dir).total_cmp(&(short_of(long, b.from) * dir)))
             .cloned()
             .expect("a thread has passes");
         let outline = outline_crest(t, moves, &deepest, h);
@@ -103,11 +91,7 @@ pub fn finish_manual(
                 None => line_at(long, deepest.from, deepest.to, l) - dir * h,
             }
         };
-        t.crest_source = if outline.is_some() {
-            CrestSource::Outline
-        } else {
-            CrestSource::Assumed
-        };
+        t.crest_source = if outline.is_some() { CrestSource::Outline } else { CrestSource::Assumed };
         let c0 = crest_at(t.passes[0].from);
         t.crest = match long {
             Axis::Z => 2.0 * c0,
@@ -131,11 +115,7 @@ pub fn finish_manual(
         for p in t.passes.iter_mut() {
             let si = p.start as usize - 1;
             if (p.depth - max_depth).abs() < 1e-6 {
-                p.role = if finished[si] {
-                    Role::Spring
-                } else {
-                    Role::Finish
-                };
+                p.role = if finished[si] { Role::Spring } else { Role::Finish };
                 finished[si] = true;
             } else {
                 p.role = Role::Rough;
@@ -180,8 +160,8 @@ pub fn finish_manual(
             if let Some(table) = table_4_3(pitch_mm) {
                 let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
                 let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
-                let matches = infeeds.len() == table.len()
-                    && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
+                let matches =
+                    infeeds.len() == table.len() && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
                 diags.push(
                     Code::InfeedGuidance,
                     span,
@@ -221,12 +201,7 @@ pub fn finish_manual(
 }
 
 /// The turned surface a thread is cut on, when the program turned it.
-fn outline_crest(
-    t: &Thread,
-    moves: &[Move],
-    deepest: &crate::thread::Pass,
-    h: f64,
-) -> Option<Piece> {
+fn outline_crest(t: &Thread, moves: &[Move], deepest: &crate::thread::Pass, h: f64) -> Option<Piece> {
     let long = t.long_axis;
     let dir = t.depth_dir;
     let p0 = &t.passes[0];
@@ -250,14 +225,7 @@ fn outline_crest(
         // The crest is the outermost surface against the depth direction.
         let score = -v * dir;
         if best.as_ref().is_none_or(|(s, _)| score > *s) {
-            best = Some((
-                score,
-                Piece {
-                    idx,
-                    from: m.from,
-                    to: m.to,
-                },
-            ));
+            best = Some((score, Piece { idx, from: m.from, to: m.to }));
         }
     }
     let (_, piece) = best?;
@@ -285,9 +253,7 @@ fn clearance(
     let long = t.long_axis;
     let dir = t.depth_dir;
     let deep = |p: Point| short_of(long, p) * dir;
-    let above = |m: &Move| {
-        (deep(m.from) <= deep(deepest.from) + EPS) && (deep(m.to) <= deep(deepest.from) + EPS)
-    };
+    let above = |m: &Move| (deep(m.from) <= deep(deepest.from) + EPS) && (deep(m.to) <= deep(deepest.from) + EPS);
     // Extend the crest piece through contiguous turning moves the thread passes through.
     let (mut first, mut last) = (crest.idx, crest.idx);
     while first > 0
@@ -315,11 +281,7 @@ fn clearance(
     let p0 = &t.passes[0];
     let (a, b) = (long_of(long, p0.from), long_of(long, p0.to));
     let toward_minus = b < a;
-    let (d1, d2) = if toward_minus {
-        (a - hi, lo - b)
-    } else {
-        (lo - a, b - hi)
-    };
+    let (d1, d2) = if toward_minus { (a - hi, lo - b) } else { (lo - a, b - hi) };
     if d1 * mm < 2.0 - 1e-9 {
         diags.push(
             Code::Clearance,
@@ -335,11 +297,7 @@ fn clearance(
         diags.push(
             Code::Clearance,
             span,
-            format!(
-                "run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)",
-                fmt(d2),
-                fmt(d1 / 4.0)
-            ),
+            format!("run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)", fmt(d2), fmt(d1 / 4.0)),
         );
     }
 }

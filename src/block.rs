@@ -14,11 +14,7 @@ pub struct Number {
 impl Number {
     /// The value when it is a whole number without a point (`G32`, `M30`, `P1160`).
     pub fn integer(&self) -> Option<i64> {
-        if self.value.fract() == 0.0 && self.value.abs() < 9.0e15 {
-            Some(self.value as i64)
-        } else {
-            None
-        }
+        if self.value.fract() == 0.0 && self.value.abs() < 9.0e15 { Some(self.value as i64) } else { None }
     }
 }
 
@@ -99,11 +95,7 @@ impl Block {
     /// Adds a word; returns the earlier word of the same letter, if there was one.
     pub fn push(&mut self, w: Word) -> Option<Word> {
         let slot = (w.letter - b'A') as usize;
-        let earlier = if self.index[slot] != 0 {
-            Some(self.words[self.index[slot] as usize - 1])
-        } else {
-            None
-        };
+        let earlier = if self.index[slot] != 0 { Some(self.words[self.index[slot] as usize - 1]) } else { None };
         if earlier.is_none() && self.words.len() < 255 {
             self.index[slot] = self.words.len() as u8 + 1;
         }
@@ -114,11 +106,7 @@ impl Block {
     /// The first word with `letter`.
     pub fn get(&self, letter: u8) -> Option<&Word> {
         let i = self.index[(letter - b'A') as usize];
-        if i == 0 {
-            None
-        } else {
-            Some(&self.words[i as usize - 1])
-        }
+        if i == 0 { None } else { Some(&self.words[i as usize - 1]) }
     }
 
     /// Whether a word with `letter` is present.

@@ -182,11 +182,7 @@ pub struct Diagnostics {
 impl Diagnostics {
     /// A collector that keeps at most `limit` diagnostics (the rest are counted).
     pub fn with_limit(limit: usize) -> Diagnostics {
-        Diagnostics {
-            items: Vec::new(),
-            limit,
-            dropped: 0,
-        }
+        Diagnostics { items: Vec::new(), limit, dropped: 0 }
     }
 
     /// Records a diagnostic.
@@ -200,9 +196,7 @@ impl Diagnostics {
 
     /// Whether an error-level diagnostic was recorded.
     pub fn has_error(&self) -> bool {
-        self.items
-            .iter()
-            .any(|(c, _, _)| c.severity() == Severity::Error)
+        self.items.iter().any(|(c, _, _)| c.severity() == Severity::Error)
     }
 
     /// Number recorded so far.

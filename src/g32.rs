@@ -22,11 +22,7 @@ use crate::thread::{Axis, Source, ThreadKind};
 /// the lead register. Reports a missing lead and returns `None`.
 pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
     let f = b.get(b'F').copied();
-    let i = if it.dialect == Dialect::Gsk980tdc {
-        b.get(b'I').copied()
-    } else {
-        None
-    };
+    let i = if it.dialect == Dialect::Gsk980tdc { b.get(b'I').copied() } else { None };
     if let (Some(_), Some(i)) = (f, i) {
         it.diag(
             Code::UnexpectedWord,
@@ -42,12 +38,7 @@ pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
             it.diag(
                 Code::ValueOutOfRange,
                 f.span,
-                format!(
-                    "lead {} is outside 0.001..{} {}",
-                    f.display(),
-                    fmt(max),
-                    if it.inch { "in" } else { "mm" }
-                ),
+                format!("lead {} is outside 0.001..{} {}", f.display(), fmt(max), if it.inch { "in" } else { "mm" }),
             );
             return None;
         }
@@ -55,11 +46,7 @@ pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
     } else if let Some(i) = i {
         let tpi = i.value();
         if !(0.06..=25400.0).contains(&tpi) {
-            it.diag(
-                Code::ValueOutOfRange,
-                i.span,
-                format!("{} threads per inch is outside 0.06..25400", fmt(tpi)),
-            );
+            it.diag(Code::ValueOutOfRange, i.span, format!("{} threads per inch is outside 0.06..25400", fmt(tpi)));
             return None;
         }
         it.lead = Some(if it.inch { 1.0 / tpi } else { 25.4 / tpi });
@@ -74,11 +61,7 @@ pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
             ),
             _ => format!(
                 "{what} without a lead: give F (lead){}",
-                if it.dialect == Dialect::Gsk980tdc {
-                    " or I (threads per inch)"
-                } else {
-                    ""
-                }
+                if it.dialect == Dialect::Gsk980tdc { " or I (threads per inch)" } else { "" }
             ),
         };
         it.diag(Code::MissingLead, span, msg);
@@ -95,7 +78,10 @@ pub fn start_angle(it: &mut Interp, q: &Word) -> Option<f64> {
                 it.diag(
                     Code::DecimalPointNotAllowed,
                     q.span,
-                    format!("{}: the start angle is in 0.001° and takes no decimal point (Q180000 = 180°)", q.display()),
+                    format!(
+                        "{}: the start angle is in 0.001° and takes no decimal point (Q180000 = 180°)",
+                        q.display()
+                    ),
                 );
                 return None;
             }
@@ -114,11 +100,7 @@ pub fn start_angle(it: &mut Interp, q: &Word) -> Option<f64> {
         it.diag(
             Code::ValueOutOfRange,
             q.span,
-            format!(
-                "start angle {} is {}°, outside 0..360°",
-                q.display(),
-                fmt(deg)
-            ),
+            format!("start angle {} is {}°, outside 0..360°", q.display(), fmt(deg)),
         );
         return None;
     }
@@ -152,11 +134,7 @@ pub fn classify(from: Point, end: Point) -> Option<(ThreadKind, Axis)> {
     } else {
         ThreadKind::Taper
     };
-    let long = if dr.abs() > dz.abs() {
-        Axis::X
-    } else {
-        Axis::Z
-    };
+    let long = if dr.abs() > dz.abs() { Axis::X } else { Axis::Z };
     Some((kind, long))
 }
 
@@ -168,11 +146,7 @@ pub fn split_runout(from: Point, end: Point, long: Axis, j: f64, k: f64) -> (Poi
         Axis::Z => (end.z - from.z).abs(),
         Axis::X => ((end.x - from.x) / 2.0).abs(),
     };
-    let t = if travel > 0.0 {
-        ((travel - k) / travel).clamp(0.0, 1.0)
-    } else {
-        1.0
-    };
+    let t = if travel > 0.0 { ((travel - k) / travel).clamp(0.0, 1.0) } else { 1.0 };
     let cut_end = from.lerp(end, t);
     let out = match long {
         Axis::Z => end.offset_r(j, 0.0),
@@ -205,7 +179,10 @@ pub fn block(it: &mut Interp, b: &Block) {
             it.diag(
                 Code::QIgnored,
                 q.span,
-                format!("{}: in a continuous thread only the first block's start angle counts; this Q is ignored", q.display()),
+                format!(
+                    "{}: in a continuous thread only the first block's start angle counts; this Q is ignored",
+                    q.display()
+                ),
             );
         } else {
             angle = a;
@@ -215,11 +192,7 @@ pub fn block(it: &mut Interp, b: &Block) {
     let t = it.target(b);
     let end = t.p;
     let Some((kind, long)) = classify(start, end) else {
-        it.diag(
-            Code::ZeroLengthThread,
-            axis_span(b),
-            "G32 does not move: the end point is the start point",
-        );
+        it.diag(Code::ZeroLengthThread, axis_span(b), "G32 does not move: the end point is the start point");
         it.end_thread_chain();
         return;
     };
@@ -272,13 +245,7 @@ pub fn block(it: &mut Interp, b: &Block) {
     }
     let approach = it.last_x.0;
     it.arrive(out.unwrap_or(end), true, true, b.line);
-    let seg = Seg {
-        from: start,
-        to: cut_end,
-        runout_to: out,
-        kind,
-        long,
-    };
+    let seg = Seg { from: start, to: cut_end, runout_to: out, kind, long };
     match &mut it.grouper.chain {
         Some(c) => {
             c.segs.push(seg);
@@ -382,28 +349,13 @@ mod tests {
     #[test]
     fn long_axis_counts_x_as_radius() {
         // ΔX 21.4285 (radius 10.71) against ΔZ 75: Z is long.
-        assert_eq!(
-            classify(Point::new(27.4286, 3.0), Point::new(48.8571, -72.0)),
-            Some((ThreadKind::Taper, Axis::Z))
-        );
+        assert_eq!(classify(Point::new(27.4286, 3.0), Point::new(48.8571, -72.0)), Some((ThreadKind::Taper, Axis::Z)));
         // ΔX 30 (radius 15) against ΔZ 10: X is long.
-        assert_eq!(
-            classify(Point::new(20.0, 0.0), Point::new(50.0, -10.0)),
-            Some((ThreadKind::Taper, Axis::X))
-        );
+        assert_eq!(classify(Point::new(20.0, 0.0), Point::new(50.0, -10.0)), Some((ThreadKind::Taper, Axis::X)));
         // ΔX 30 (radius 15) against ΔZ 20: Z is long although 30 > 20.
-        assert_eq!(
-            classify(Point::new(20.0, 0.0), Point::new(50.0, -20.0)),
-            Some((ThreadKind::Taper, Axis::Z))
-        );
-        assert_eq!(
-            classify(Point::new(20.0, 0.0), Point::new(20.0, -20.0)),
-            Some((ThreadKind::Straight, Axis::Z))
-        );
-        assert_eq!(
-            classify(Point::new(20.0, 0.0), Point::new(60.0, 0.0)),
-            Some((ThreadKind::Face, Axis::X))
-        );
+        assert_eq!(classify(Point::new(20.0, 0.0), Point::new(50.0, -20.0)), Some((ThreadKind::Taper, Axis::Z)));
+        assert_eq!(classify(Point::new(20.0, 0.0), Point::new(20.0, -20.0)), Some((ThreadKind::Straight, Axis::Z)));
+        assert_eq!(classify(Point::new(20.0, 0.0), Point::new(60.0, 0.0)), Some((ThreadKind::Face, Axis::X)));
         assert_eq!(classify(Point::new(20.0, 0.0), Point::new(20.0, 0.0)), None);
     }
 }

@@ -102,11 +102,7 @@ pub fn after_rapid(it: &mut Interp, t: &Target, line: u32) {
             if let Some(last) = g.cuts.last_mut() {
                 last.lines.push(line);
             }
-            g.after = if t.has_x && !t.has_z {
-                After::Return
-            } else {
-                After::Nothing
-            };
+            g.after = if t.has_x && !t.has_z { After::Return } else { After::Nothing };
             consumed = true;
         }
         After::Return if t.has_z && !t.has_x => {
@@ -145,10 +141,7 @@ fn same_thread(a: &Chain, b: &Chain, max_infeed: f64) -> bool {
         return false;
     }
     for (x, y) in a.segs.iter().zip(&b.segs) {
-        if x.kind != y.kind
-            || x.long != y.long
-            || x.long_travel().signum() != y.long_travel().signum()
-        {
+        if x.kind != y.kind || x.long != y.long || x.long_travel().signum() != y.long_travel().signum() {
             return false;
         }
     }
@@ -191,7 +184,10 @@ pub fn close(it: &mut Interp) {
                     it.diag(
                         Code::TooManyStarts,
                         c.span,
-                        format!("{} starts (distinct start angles Q): at most {limit} (setting limits.starts)", thread.starts),
+                        format!(
+                            "{} starts (distinct start angles Q): at most {limit} (setting limits.starts)",
+                            thread.starts
+                        ),
                     );
                     break;
                 }
@@ -213,10 +209,7 @@ fn build(cuts: &[Chain], tool_angle: f64) -> Thread {
     let mut counts = vec![0u32; angles.len()];
     let mut passes = Vec::with_capacity(cuts.len());
     for c in cuts {
-        let si = angles
-            .iter()
-            .position(|a| (a - c.angle).abs() < 1e-6)
-            .unwrap_or(0);
+        let si = angles.iter().position(|a| (a - c.angle).abs() < 1e-6).unwrap_or(0);
         counts[si] += 1;
         let first = c.segs[0];
         let last = *c.segs.last().unwrap_or(&first);
@@ -251,24 +244,13 @@ fn build(cuts: &[Chain], tool_angle: f64) -> Thread {
         });
     }
     let c0 = &cuts[0];
-    let main = *c0
-        .segs
-        .iter()
-        .max_by(|a, b| a.long_travel().abs().total_cmp(&b.long_travel().abs()))
-        .unwrap_or(&c0.segs[0]);
+    let main =
+        *c0.segs.iter().max_by(|a, b| a.long_travel().abs().total_cmp(&b.long_travel().abs())).unwrap_or(&c0.segs[0]);
     let depth_dir = depth_direction(cuts, &main);
     let lead = c0.lead;
     let starts = angles.len() as u32;
-    let line = cuts
-        .iter()
-        .flat_map(|c| c.lines.iter().copied())
-        .min()
-        .unwrap_or(0);
-    let end_line = cuts
-        .iter()
-        .flat_map(|c| c.lines.iter().copied())
-        .max()
-        .unwrap_or(0);
+    let line = cuts.iter().flat_map(|c| c.lines.iter().copied()).min().unwrap_or(0);
+    let end_line = cuts.iter().flat_map(|c| c.lines.iter().copied()).max().unwrap_or(0);
     let p0 = &passes[0];
     Thread {
         line,
@@ -308,11 +290,7 @@ fn depth_direction(cuts: &[Chain], main: &Seg) -> f64 {
     if main.long == Axis::Z && cuts[0].approach != 0.0 {
         return cuts[0].approach;
     }
-    if let Some(r) = cuts[0]
-        .segs
-        .last()
-        .and_then(|s| s.runout_to.map(|r| (s, r)))
-    {
+    if let Some(r) = cuts[0].segs.last().and_then(|s| s.runout_to.map(|r| (s, r))) {
         let d = main.short_of(r.1) - main.short_of(r.0.to);
         if d.abs() > EPS {
             return -d.signum();

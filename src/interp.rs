@@ -67,10 +67,7 @@ impl Motion {
 
     /// Whether blocks in this mode cut a thread block by block (continuous threads).
     pub fn is_thread_block(self) -> bool {
-        matches!(
-            self,
-            Motion::Thread | Motion::RenheInch | Motion::RenheMetric
-        )
+        matches!(self, Motion::Thread | Motion::RenheInch | Motion::RenheMetric)
     }
 }
 
@@ -209,7 +206,10 @@ impl<'a> Interp<'a> {
                 self.diag(
                     Code::MoveLimit,
                     span,
-                    format!("more than {} motions (setting limits.moves): the rest of the program is not drawn", self.move_limit),
+                    format!(
+                        "more than {} motions (setting limits.moves): the rest of the program is not drawn",
+                        self.move_limit
+                    ),
                 );
             }
             return false;
@@ -217,13 +217,7 @@ impl<'a> Interp<'a> {
         if !(from.is_finite() && to.is_finite()) {
             return false;
         }
-        self.moves.push(Move {
-            kind,
-            from,
-            to,
-            line,
-            arc,
-        });
+        self.moves.push(Move { kind, from, to, line, arc });
         true
     }
 
@@ -313,13 +307,7 @@ impl<'a> Interp<'a> {
 
     /// The end point of the block's X/Z/U/W words from the current position.
     pub fn target(&mut self, b: &Block) -> Target {
-        let mut t = Target {
-            p: self.pos.p,
-            has_x: false,
-            has_z: false,
-            abs_x: false,
-            abs_z: false,
-        };
+        let mut t = Target { p: self.pos.p, has_x: false, has_z: false, abs_x: false, abs_z: false };
         if let Some(w) = b.get(b'X') {
             t.p.x = self.x_len(w);
             t.has_x = true;
@@ -376,11 +364,7 @@ impl<'a> Interp<'a> {
         let mut ok = true;
         for w in &b.words {
             if !ALWAYS.contains(&w.letter) && !allowed.contains(&w.letter) {
-                self.diag(
-                    Code::UnexpectedWord,
-                    w.span,
-                    format!("{what} does not take {}", w.display()),
-                );
+                self.diag(Code::UnexpectedWord, w.span, format!("{what} does not take {}", w.display()));
                 ok = false;
             }
         }
@@ -398,11 +382,7 @@ impl<'a> Interp<'a> {
         }
         if self.ended {
             if self.once(REPORTED_AFTER_END) {
-                self.diag(
-                    Code::AfterEnd,
-                    b.span,
-                    "blocks after M30/M02 are never executed",
-                );
+                self.diag(Code::AfterEnd, b.span, "blocks after M30/M02 are never executed");
             }
             return;
         }
@@ -427,27 +407,16 @@ impl<'a> Interp<'a> {
                 self.diag(
                     Code::UnsupportedGCode,
                     w.span,
-                    format!(
-                        "{} is not a G code of the {} controller",
-                        w.display(),
-                        self.dialect.title()
-                    ),
+                    format!("{} is not a G code of the {} controller", w.display(), self.dialect.title()),
                 );
                 self.end_thread_chain();
                 return;
             };
-            if let Some((_, _, other)) = seen
-                .iter()
-                .find(|(gr, _, _)| *gr == group && group != Group::Setup)
-            {
+            if let Some((_, _, other)) = seen.iter().find(|(gr, _, _)| *gr == group && group != Group::Setup) {
                 self.diag(
                     Code::ConflictingGCodes,
                     w.span,
-                    format!(
-                        "{} and {} are in the same modal group",
-                        other.display(),
-                        w.display()
-                    ),
+                    format!("{} and {} are in the same modal group", other.display(), w.display()),
                 );
                 self.end_thread_chain();
                 return;
@@ -491,11 +460,7 @@ impl<'a> Interp<'a> {
                     Group::OneShot => one_shot = Some((g, *w)),
                     Group::Setup => {
                         if let G::NotSimulated { what, .. } = g {
-                            self.diag(
-                                Code::NotSimulated,
-                                w.span,
-                                format!("{}: {what} is not simulated", w.display()),
-                            );
+                            self.diag(Code::NotSimulated, w.span, format!("{}: {what} is not simulated", w.display()));
                         }
                     }
                     _ => {}
@@ -511,22 +476,14 @@ impl<'a> Interp<'a> {
         if let Some((g, w)) = motion_g {
             self.motion = Motion::from_g(g);
             if let Motion::NotSimulated(what, _) = self.motion {
-                self.diag(
-                    Code::NotSimulated,
-                    w.span,
-                    format!("{}: {what} is not drawn", w.display()),
-                );
+                self.diag(Code::NotSimulated, w.span, format!("{}: {what} is not drawn", w.display()));
             }
         }
         let has_axes = b.has(b'X') || b.has(b'Z') || b.has(b'U') || b.has(b'W');
         let m_end = b.all(b'M').any(|m| matches!(m.num.integer(), Some(2 | 30)));
         for m in b.all(b'M') {
             if let Some(98 | 99) = m.num.integer() {
-                self.diag(
-                    Code::NotSimulated,
-                    m.span,
-                    format!("{}: subprogram calls are not followed", m.display()),
-                );
+                self.diag(Code::NotSimulated, m.span, format!("{}: subprogram calls are not followed", m.display()));
             }
         }
         if let Some((g, w)) = one_shot {
@@ -558,11 +515,7 @@ impl<'a> Interp<'a> {
             G::Dwell => {
                 self.check_words(b, b"PXU", "G04");
                 if !(b.has(b'P') || b.has(b'X') || b.has(b'U')) {
-                    self.diag(
-                        Code::MissingWord,
-                        w.span,
-                        "G04 needs the dwell time: P (ms), X or U (s)",
-                    );
+                    self.diag(Code::MissingWord, w.span, "G04 needs the dwell time: P (ms), X or U (s)");
                 }
             }
             G::SetCoord => {
@@ -570,11 +523,7 @@ impl<'a> Interp<'a> {
                     return;
                 }
                 if !(b.has(b'X') || b.has(b'Z') || b.has(b'U') || b.has(b'W') || b.has(b'S')) {
-                    self.diag(
-                        Code::MissingWord,
-                        w.span,
-                        "G50 needs X/Z (coordinate system) or S (spindle clamp)",
-                    );
+                    self.diag(Code::MissingWord, w.span, "G50 needs X/Z (coordinate system) or S (spindle clamp)");
                     return;
                 }
                 // G50 X Z: the current position gets these coordinates; U/W shift them.
@@ -621,11 +570,7 @@ impl<'a> Interp<'a> {
             }
             G::RenheRunout => crate::renhe::g30(self, b, w),
             G::NotSimulated { what, returns } => {
-                self.diag(
-                    Code::NotSimulated,
-                    w.span,
-                    format!("{}: {what} is not drawn", w.display()),
-                );
+                self.diag(Code::NotSimulated, w.span, format!("{}: {what} is not drawn", w.display()));
                 if !returns {
                     // Where the tool ends is unknown.
                     self.pos.kx = false;
@@ -698,11 +643,7 @@ impl<'a> Interp<'a> {
             self.feed_line = b.line;
         } else if self.feed.is_none() {
             let span = b.all(b'G').next().map_or(b.span, |w| w.span);
-            self.diag(
-                Code::MissingFeed,
-                span,
-                "feed move without a feed rate: no F has been given yet",
-            );
+            self.diag(Code::MissingFeed, span, "feed move without a feed rate: no F has been given yet");
             self.feed = Some(0.0);
             self.feed_line = b.line;
         }
@@ -725,14 +666,9 @@ impl<'a> Interp<'a> {
             let chord = (dz * dz + dr * dr).sqrt();
             if chord < EPS || chord > 2.0 * rad + 1e-7 {
                 let msg = if chord < EPS {
-                    "an R arc cannot be a full circle: its start and end are the same point"
-                        .to_string()
+                    "an R arc cannot be a full circle: its start and end are the same point".to_string()
                 } else {
-                    format!(
-                        "radius {} is shorter than half the chord {}",
-                        fmt(rad),
-                        fmt(chord / 2.0)
-                    )
+                    format!("radius {} is shorter than half the chord {}", fmt(rad), fmt(chord / 2.0))
                 };
                 self.diag(Code::ArcRadiusTooSmall, rw.span, msg);
                 return;
@@ -771,22 +707,11 @@ impl<'a> Interp<'a> {
             (cz, cr)
         } else {
             let span = b.all(b'G').next().map_or(b.span, |w| w.span);
-            self.diag(
-                Code::ArcMissingCenter,
-                span,
-                format!("{name} needs R or I/K for its centre"),
-            );
+            self.diag(Code::ArcMissingCenter, span, format!("{name} needs R or I/K for its centre"));
             return;
         };
-        let arc = ArcData {
-            center: Point::new(center.1 * 2.0, center.0),
-            cw,
-        };
-        if (end.x - start.x).abs() > EPS
-            || (end.z - start.z).abs() > EPS
-            || b.has(b'I')
-            || b.has(b'K')
-        {
+        let arc = ArcData { center: Point::new(center.1 * 2.0, center.0), cw };
+        if (end.x - start.x).abs() > EPS || (end.z - start.z).abs() > EPS || b.has(b'I') || b.has(b'K') {
             self.emit(MoveKind::Arc, start, end, b.line, Some(arc), b.span);
         }
         self.arrive(end, true, true, b.line);

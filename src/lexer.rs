@@ -20,10 +20,7 @@ pub struct LexLimits {
 
 impl Default for LexLimits {
     fn default() -> Self {
-        LexLimits {
-            block_chars: 256,
-            digits: 8,
-        }
+        LexLimits { block_chars: 256, digits: 8 }
     }
 }
 
@@ -66,14 +63,7 @@ impl<'a> Lexer<'a> {
     /// A lexer over `text` for `dialect`.
     pub fn new(text: &'a str, dialect: Dialect, limits: LexLimits) -> Lexer<'a> {
         let pos = if text.starts_with('\u{FEFF}') { 3 } else { 0 };
-        Lexer {
-            text,
-            pos,
-            line: 0,
-            dialect,
-            limits,
-            chars: Vec::with_capacity(128),
-        }
+        Lexer { text, pos, line: 0, dialect, limits, chars: Vec::with_capacity(128) }
     }
 
     /// Byte offset of the next unread line.
@@ -96,9 +86,7 @@ impl<'a> Lexer<'a> {
         }
         let start = self.pos;
         let bytes = text.as_bytes();
-        let rel = bytes[start..]
-            .iter()
-            .position(|&b| b == b'\n' || b == b'\r');
+        let rel = bytes[start..].iter().position(|&b| b == b'\n' || b == b'\r');
         let end = rel.map_or(bytes.len(), |r| start + r);
         self.pos = match rel {
             None => bytes.len() + 1,
@@ -138,11 +126,7 @@ impl<'a> Lexer<'a> {
                         None => (OTHER, false),
                     }
                 };
-                self.chars.push(Ch {
-                    b,
-                    folded,
-                    at: (base + i) as u32,
-                });
+                self.chars.push(Ch { b, folded, at: (base + i) as u32 });
             }
         }
         let end = (base + line.len()) as u32;
@@ -158,11 +142,7 @@ impl<'a> Lexer<'a> {
             block.has_error = true;
             return;
         }
-        self.chars.push(Ch {
-            b: 0,
-            folded: false,
-            at: end,
-        });
+        self.chars.push(Ch { b: 0, folded: false, at: end });
         let chars = std::mem::take(&mut self.chars);
         LineLexer {
             chars: &chars,
@@ -230,11 +210,7 @@ impl LineLexer<'_> {
                 b')' => {
                     let i = self.i;
                     self.bump();
-                    diags.push(
-                        Code::UnmatchedParen,
-                        self.span(i, i + 1),
-                        "')' without an opening '('",
-                    );
+                    diags.push(Code::UnmatchedParen, self.span(i, i + 1), "')' without an opening '('");
                     block.has_error = true;
                 }
                 b';' => {
@@ -260,7 +236,10 @@ impl LineLexer<'_> {
                     diags.push(
                         Code::UnsupportedMacro,
                         self.span(i, i + 1),
-                        format!("'{}': macro variables and expressions are not interpreted; the block is skipped", c as char),
+                        format!(
+                            "'{}': macro variables and expressions are not interpreted; the block is skipped",
+                            c as char
+                        ),
                     );
                     block.has_error = true;
                     // Skip to the end of the code part of the line.
@@ -295,10 +274,7 @@ impl LineLexer<'_> {
                     diags.push(
                         Code::UnexpectedCharacter,
                         self.span(i, self.i),
-                        format!(
-                            "number '{}' without an address letter",
-                            self.slice(i, self.i)
-                        ),
+                        format!("number '{}' without an address letter", self.slice(i, self.i)),
                     );
                     block.has_error = true;
                 }
@@ -320,10 +296,7 @@ impl LineLexer<'_> {
         }
         if let (Some(a), Some(b)) = (self.first_fold, self.last_fold) {
             let original = &self.text[self.at(a)..self.after(b)];
-            let folded: String = original
-                .chars()
-                .map(|c| fold(c).map_or(c, |b| b as char))
-                .collect();
+            let folded: String = original.chars().map(|c| fold(c).map_or(c, |b| b as char)).collect();
             diags.push(
                 Code::FullWidth,
                 Span::new(self.at(a), self.after(b)),
@@ -377,10 +350,8 @@ impl LineLexer<'_> {
         }
         let c0 = self.chars[j].b.to_ascii_uppercase();
         let c1 = self.chars[j + (c0 != 0) as usize].b;
-        let looks_like_code = matches!(
-            c0,
-            b'G' | b'M' | b'X' | b'Z' | b'U' | b'W' | b'N' | b'T' | b'S' | b'F'
-        ) && (c1.is_ascii_digit() || c1 == b'-' || c1 == b'.');
+        let looks_like_code = matches!(c0, b'G' | b'M' | b'X' | b'Z' | b'U' | b'W' | b'N' | b'T' | b'S' | b'F')
+            && (c1.is_ascii_digit() || c1 == b'-' || c1 == b'.');
         if looks_like_code {
             let end = self.chars.len() - 1;
             diags.push(
@@ -404,11 +375,7 @@ impl LineLexer<'_> {
         while self.peek().is_ascii_digit() {
             self.bump();
         }
-        let digits = self
-            .slice(ds, self.i)
-            .chars()
-            .filter(|c| !c.is_whitespace())
-            .count();
+        let digits = self.slice(ds, self.i).chars().filter(|c| !c.is_whitespace()).count();
         let text: String = self.chars[ds..self.i].iter().map(|c| c.b as char).collect();
         if digits == 0 || digits > 5 || self.peek() == b'.' {
             while matches!(self.peek(), b'0'..=b'9' | b'.') {
@@ -417,10 +384,7 @@ impl LineLexer<'_> {
             diags.push(
                 Code::MalformedProgramNumber,
                 self.span(at, self.i),
-                format!(
-                    "'{}' is not a program number (O followed by up to four digits)",
-                    self.slice(at, self.i)
-                ),
+                format!("'{}' is not a program number (O followed by up to four digits)", self.slice(at, self.i)),
             );
             block.has_error = true;
             return;
@@ -445,11 +409,7 @@ impl LineLexer<'_> {
             diags.push(
                 Code::UnknownAddress,
                 self.span(start, start + 1),
-                format!(
-                    "'{}' is not an address of the {} controller",
-                    letter as char,
-                    self.dialect.title()
-                ),
+                format!("'{}' is not an address of the {} controller", letter as char, self.dialect.title()),
             );
             block.has_error = true;
             return;
@@ -479,7 +439,10 @@ impl LineLexer<'_> {
                 diags.push(
                     Code::TooManyDigits,
                     self.span(ns, ne),
-                    format!("{n} significant digits: the controller accepts at most {} (setting limits.digits)", self.limits.digits),
+                    format!(
+                        "{n} significant digits: the controller accepts at most {} (setting limits.digits)",
+                        self.limits.digits
+                    ),
                 );
                 block.has_error = true;
                 return;
@@ -491,10 +454,7 @@ impl LineLexer<'_> {
                 diags.push(
                     Code::RepeatedWord,
                     span,
-                    format!(
-                        "second sequence number in one block (first at {})",
-                        first.display()
-                    ),
+                    format!("second sequence number in one block (first at {})", first.display()),
                 );
                 block.has_error = true;
             } else {
@@ -527,8 +487,8 @@ enum NumError {
 }
 
 const POW10: [f64; 23] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
+    1e21, 1e22,
 ];
 
 /// Parses `[+-]digits[.digits]` exactly: the mantissa is an integer and the
@@ -566,9 +526,7 @@ fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
                 if mantissa < 100_000_000_000_000_000 {
                     mantissa = mantissa * 10 + d;
                 } else {
-                    return Err(NumError::TooManyDigits(
-                        body.iter().filter(|c| c.is_ascii_digit()).count(),
-                    ));
+                    return Err(NumError::TooManyDigits(body.iter().filter(|c| c.is_ascii_digit()).count()));
                 }
             }
             b'.' if !point => point = true,
@@ -581,21 +539,14 @@ fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
     if sig > max_digits {
         return Err(NumError::TooManyDigits(sig));
     }
-    let mut value = if frac < POW10.len() {
-        mantissa as f64 / POW10[frac]
-    } else {
-        0.0
-    };
+    let mut value = if frac < POW10.len() { mantissa as f64 / POW10[frac] } else { 0.0 };
     if neg {
         value = -value;
     }
     if value == 0.0 {
         value = 0.0; // no negative zero
     }
-    Ok(Number {
-        value,
-        has_point: point,
-    })
+    Ok(Number { value, has_point: point })
 }
 
 #[cfg(test)]
@@ -616,35 +567,18 @@ mod tests {
 
     #[test]
     fn numbers_parse_exactly() {
-        for s in [
-            "27.4286",
-            "48.8571",
-            "-75",
-            "0.0001",
-            "2.0",
-            "1234.5678",
-            "-0.5",
-        ] {
+        for s in ["27.4286", "48.8571", "-75", "0.0001", "2.0", "1234.5678", "-0.5"] {
             let n = parse_number(s.as_bytes(), 8).ok().unwrap();
             assert_eq!(n.value, s.parse::<f64>().unwrap(), "{s}");
         }
         assert!(parse_number(b"27.", 8).ok().unwrap().has_point);
         assert!(!parse_number(b"27", 8).ok().unwrap().has_point);
         assert_eq!(parse_number(b".5", 8).ok().unwrap().value, 0.5);
-        assert!(matches!(
-            parse_number(b"1.2.3", 8),
-            Err(NumError::Malformed)
-        ));
+        assert!(matches!(parse_number(b"1.2.3", 8), Err(NumError::Malformed)));
         assert!(matches!(parse_number(b"--1", 8), Err(NumError::Malformed)));
         assert!(matches!(parse_number(b"-", 8), Err(NumError::Malformed)));
-        assert!(matches!(
-            parse_number(b"123456789", 8),
-            Err(NumError::TooManyDigits(9))
-        ));
-        assert!(matches!(
-            parse_number(b"12345678901234567890", 8),
-            Err(NumError::TooManyDigits(_))
-        ));
+        assert!(matches!(parse_number(b"123456789", 8), Err(NumError::TooManyDigits(9))));
+        assert!(matches!(parse_number(b"12345678901234567890", 8), Err(NumError::TooManyDigits(_))));
         // Leading zeros and trailing fraction zeros are not significant.
         assert_eq!(parse_number(b"00000080", 8).ok().unwrap().value, 80.0);
         assert_eq!(parse_number(b"1.000000000", 8).ok().unwrap().value, 1.0);

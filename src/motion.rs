@@ -26,18 +26,12 @@ impl Point {
 
     /// Moves by a radial `dr` and an axial `dz`.
     pub fn offset_r(self, dr: f64, dz: f64) -> Point {
-        Point {
-            x: self.x + 2.0 * dr,
-            z: self.z + dz,
-        }
+        Point { x: self.x + 2.0 * dr, z: self.z + dz }
     }
 
     /// Linear interpolation towards `o` by `t`.
     pub fn lerp(self, o: Point, t: f64) -> Point {
-        Point {
-            x: self.x + (o.x - self.x) * t,
-            z: self.z + (o.z - self.z) * t,
-        }
+        Point { x: self.x + (o.x - self.x) * t, z: self.z + (o.z - self.z) * t }
     }
 
     /// Euclidean distance in true geometry (radial, axial).

@@ -41,9 +41,7 @@ pub struct Plan {
 impl Plan {
     /// Whether any diagnostic is an alarm.
     pub fn has_alarm(&self) -> bool {
-        self.diagnostics
-            .iter()
-            .any(|d| d.severity == Severity::Error)
+        self.diagnostics.iter().any(|d| d.severity == Severity::Error)
     }
 
     /// The diagnostics with `code`.
@@ -65,7 +63,10 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
         it.diag(
             Code::ProgramTooLarge,
             Span::new(0, 0),
-            format!("the program is {} bytes, larger than the limit of {limit} (setting limits.program_bytes)", text.len()),
+            format!(
+                "the program is {} bytes, larger than the limit of {limit} (setting limits.program_bytes)",
+                text.len()
+            ),
         );
     } else {
         let limits = LexLimits {
@@ -83,18 +84,10 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
         it.finish();
     }
     let index = LineIndex::new(text);
-    let Interp {
-        mut diags,
-        moves,
-        mut threads,
-        inch,
-        ..
-    } = it;
+    let Interp { mut diags, moves, mut threads, inch, .. } = it;
     let spans = |line: u32| {
         let start = index.line_start(line);
-        let end = text[start..]
-            .find(['\n', '\r'])
-            .map_or(text.len(), |e| start + e);
+        let end = text[start..].find(['\n', '\r']).map_or(text.len(), |e| start + e);
         Span::new(start, end)
     };
     crate::advice::finish_manual(&mut threads, &moves, settings, inch, &mut diags, &spans);
@@ -103,20 +96,12 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
     if dropped > 0 {
         if let Some(last) = diagnostics.last().cloned() {
             diagnostics.push(Diagnostic {
-                message: format!(
-                    "{dropped} more diagnostics not shown (setting limits.diagnostics)"
-                ),
+                message: format!("{dropped} more diagnostics not shown (setting limits.diagnostics)"),
                 ..last
             });
         }
     }
-    Plan {
-        dialect: settings.dialect(),
-        units: if inch { Units::Inch } else { Units::Mm },
-        diagnostics,
-        moves,
-        threads,
-    }
+    Plan { dialect: settings.dialect(), units: if inch { Units::Inch } else { Units::Mm }, diagnostics, moves, threads }
 }
 
 /// Plans `text` with the default settings of `dialect`.

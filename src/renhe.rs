@@ -15,9 +15,5 @@ pub fn g30(it: &mut Interp, _b: &Block, w: Word) {
 
 /// Renhe G32/G33 block.
 pub fn thread_block(it: &mut Interp, b: &Block, _inch: bool) {
-    it.diag(
-        Code::NotSimulated,
-        b.span,
-        "Renhe threads are not drawn yet",
-    );
+    it.diag(Code::NotSimulated, b.span, "Renhe threads are not drawn yet");
 }

@@ -74,17 +74,7 @@ const fn d(
     help: &'static str,
     help_zh: &'static str,
 ) -> Def {
-    Def {
-        name,
-        dialects,
-        kind,
-        defaults,
-        min: range.0,
-        max: range.1,
-        unit,
-        help,
-        help_zh,
-    }
+    Def { name, dialects, kind, defaults, min: range.0, max: range.1, unit, help, help_zh }
 }
 
 /// Choices of `x_mode`.
@@ -250,11 +240,7 @@ impl std::fmt::Display for SettingError {
         match self {
             SettingError::Unknown(n) => write!(f, "unknown setting '{n}'"),
             SettingError::WrongDialect(n, d) => {
-                write!(
-                    f,
-                    "setting '{n}' does not belong to the {} dialect",
-                    d.title()
-                )
+                write!(f, "setting '{n}' does not belong to the {} dialect", d.title())
             }
             SettingError::BadValue(n, v) => write!(f, "setting '{n}': '{v}' is not a valid value"),
             SettingError::OutOfRange(n, v, lo, hi) => {
@@ -270,20 +256,13 @@ impl std::error::Error for SettingError {}
 fn normalize_name(name: &str) -> String {
     let n = name.trim().to_ascii_lowercase();
     // "No.058", "no058", "058", "NO182.7", "No.182.7" all name the GSK parameter.
-    let bare = n
-        .strip_prefix("no.")
-        .or_else(|| n.strip_prefix("no"))
-        .unwrap_or(&n);
+    let bare = n.strip_prefix("no.").or_else(|| n.strip_prefix("no")).unwrap_or(&n);
     let bare = bare.trim_start_matches('.');
     if bare.chars().next().is_some_and(|c| c.is_ascii_digit()) && !bare.contains('#') {
         let (int, frac) = bare.split_once('.').unwrap_or((bare, ""));
         if let Ok(v) = int.parse::<u32>() {
             if v < 1000 {
-                return if frac.is_empty() {
-                    format!("no.{v:03}")
-                } else {
-                    format!("no.{v:03}.{frac}")
-                };
+                return if frac.is_empty() { format!("no.{v:03}") } else { format!("no.{v:03}.{frac}") };
             }
         }
     }
@@ -294,10 +273,7 @@ impl Settings {
     /// The defaults of `dialect`.
     pub fn new(dialect: Dialect) -> Settings {
         let i = dialect_index(dialect);
-        Settings {
-            dialect,
-            values: DEFS.iter().map(|d| d.defaults[i]).collect(),
-        }
+        Settings { dialect, values: DEFS.iter().map(|d| d.defaults[i]).collect() }
     }
 
     /// The dialect these settings are for.
@@ -328,36 +304,28 @@ impl Settings {
     /// Finds a setting definition by name (`No.058`, `no58`, `3401#0`, `x_mode`).
     pub fn find(name: &str) -> Option<(P, &'static Def)> {
         let n = normalize_name(name);
-        DEFS.iter()
-            .enumerate()
-            .find(|(_, d)| normalize_name(d.name) == n)
-            .map(|(i, d)| (p_from_index(i), d))
+        DEFS.iter().enumerate().find(|(_, d)| normalize_name(d.name) == n).map(|(i, d)| (p_from_index(i), d))
     }
 
     /// Applies `NAME=VALUE`.
     pub fn assign(&mut self, text: &str) -> Result<(), SettingError> {
-        let (name, value) = text
-            .split_once('=')
-            .ok_or_else(|| SettingError::Syntax(text.into()))?;
+        let (name, value) = text.split_once('=').ok_or_else(|| SettingError::Syntax(text.into()))?;
         self.set_named(name, value)
     }
 
     /// Sets the named setting from its text value, checking kind, range and dialect.
     pub fn set_named(&mut self, name: &str, value: &str) -> Result<(), SettingError> {
-        let (p, def) =
-            Settings::find(name).ok_or_else(|| SettingError::Unknown(name.trim().into()))?;
+        let (p, def) = Settings::find(name).ok_or_else(|| SettingError::Unknown(name.trim().into()))?;
         if !def.dialects.is_empty() && !def.dialects.contains(&self.dialect) {
             return Err(SettingError::WrongDialect(def.name.into(), self.dialect));
         }
         let value = value.trim();
         let bad = || SettingError::BadValue(def.name.into(), value.into());
         let v = match def.kind {
-            Kind::Choice(choices) => {
-                match choices.iter().position(|c| c.eq_ignore_ascii_case(value)) {
-                    Some(i) => i as f64,
-                    None => value.parse::<f64>().map_err(|_| bad())?,
-                }
-            }
+            Kind::Choice(choices) => match choices.iter().position(|c| c.eq_ignore_ascii_case(value)) {
+                Some(i) => i as f64,
+                None => value.parse::<f64>().map_err(|_| bad())?,
+            },
             Kind::Bool => match value.to_ascii_lowercase().as_str() {
                 "1" | "true" | "on" | "yes" => 1.0,
                 "0" | "false" | "off" | "no" => 0.0,
@@ -376,12 +344,7 @@ impl Settings {
             return Err(bad());
         }
         if v < def.min || v > def.max {
-            return Err(SettingError::OutOfRange(
-                def.name.into(),
-                v,
-                def.min,
-                def.max,
-            ));
+            return Err(SettingError::OutOfRange(def.name.into(), v, def.min, def.max));
         }
         self.values[p as usize] = v;
         Ok(())
@@ -407,11 +370,7 @@ impl Settings {
 
     /// Least input increment for angles (degrees).
     pub fn angle_increment(&self) -> f64 {
-        if self.int(P::Increment) == 0 {
-            0.001
-        } else {
-            0.0001
-        }
+        if self.int(P::Increment) == 0 { 0.001 } else { 0.0001 }
     }
 
     /// Whether X is programmed as a radius.
@@ -462,26 +421,11 @@ mod tests {
         assert_eq!(s.get(P::No058), 55.0);
         s.assign("x_mode=radius").unwrap();
         assert!(s.radius_x());
-        assert!(matches!(
-            s.assign("No.058=100"),
-            Err(SettingError::OutOfRange(..))
-        ));
-        assert!(matches!(
-            s.assign("No.058=5.5"),
-            Err(SettingError::BadValue(..))
-        ));
-        assert!(matches!(
-            s.assign("3401#0=1"),
-            Err(SettingError::WrongDialect(..))
-        ));
-        assert!(matches!(
-            s.assign("nonsense=1"),
-            Err(SettingError::Unknown(..))
-        ));
+        assert!(matches!(s.assign("No.058=100"), Err(SettingError::OutOfRange(..))));
+        assert!(matches!(s.assign("No.058=5.5"), Err(SettingError::BadValue(..))));
+        assert!(matches!(s.assign("3401#0=1"), Err(SettingError::WrongDialect(..))));
+        assert!(matches!(s.assign("nonsense=1"), Err(SettingError::Unknown(..))));
         assert!(matches!(s.assign("No.058"), Err(SettingError::Syntax(..))));
-        assert!(matches!(
-            s.assign("No.107=NaN"),
-            Err(SettingError::BadValue(..))
-        ));
+        assert!(matches!(s.assign("No.107=NaN"), Err(SettingError::BadValue(..))));
     }
 }

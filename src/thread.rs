@@ -121,10 +121,7 @@ pub struct Pass {
     #[serde(serialize_with = "ser_round")]
     pub angle: f64,
     /// Area of the thread space this pass removes (program units²), when the tool angle is known.
-    #[serde(
-        serialize_with = "ser_round_opt",
-        skip_serializing_if = "Option::is_none"
-    )]
+    #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
     pub area: Option<f64>,
 }
 

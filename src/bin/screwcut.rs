@@ -10,11 +10,7 @@ use screwcut::settings::{Kind, Settings};
 use screwcut::{Code, Dialect, Plan};
 
 #[derive(Parser)]
-#[command(
-    name = "screwcut",
-    version,
-    about = "Preview CNC lathe thread-cutting G-code: threads, passes and alarms"
-)]
+#[command(name = "screwcut", version, about = "Preview CNC lathe thread-cutting G-code: threads, passes and alarms")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -53,12 +49,7 @@ fn parse_dialect(s: &str) -> Result<Dialect, String> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Plan {
-            file,
-            dialect,
-            set,
-            json,
-        } => plan(&file, dialect, &set, json),
+        Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Settings { dialect } => {
             let s = Settings::new(dialect);
             for (def, v) in s.entries() {
@@ -66,10 +57,7 @@ fn main() -> ExitCode {
                     Kind::Choice(c) => c.get(v as usize).copied().unwrap_or("?").to_string(),
                     _ => fmt(v),
                 };
-                println!(
-                    "{:<24} {:<10} {:<12} {}",
-                    def.name, value, def.unit, def.help
-                );
+                println!("{:<24} {:<10} {:<12} {}", def.name, value, def.unit, def.help);
             }
             ExitCode::SUCCESS
         }
@@ -113,11 +101,7 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
     } else {
         print!("{}", summary(&plan, file));
     }
-    if plan.has_alarm() {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    }
+    if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
 
 fn summary(plan: &Plan, file: &str) -> String {
@@ -151,11 +135,7 @@ fn summary(plan: &Plan, file: &str) -> String {
             fmt(t.pitch),
             t.starts,
             if t.internal { "internal" } else { "external" },
-            if t.long_axis == screwcut::thread::Axis::Z {
-                "X"
-            } else {
-                "Z"
-            },
+            if t.long_axis == screwcut::thread::Axis::Z { "X" } else { "Z" },
             fmt(t.crest),
             t.crest_source,
             fmt(t.height)
@@ -166,12 +146,7 @@ fn summary(plan: &Plan, file: &str) -> String {
             "start", "pass", "X from", "Z from", "X to", "Z to", "depth", "infeed", "role"
         );
         for p in &t.passes {
-            let lines = p
-                .lines
-                .iter()
-                .map(|l| l.to_string())
-                .collect::<Vec<_>>()
-                .join(",");
+            let lines = p.lines.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(",");
             let _ = writeln!(
                 out,
                 "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7}  {}",
@@ -196,11 +171,7 @@ fn summary(plan: &Plan, file: &str) -> String {
                 Severity::Warning => "warning",
                 Severity::Info => "note",
             };
-            let _ = writeln!(
-                out,
-                "  {}:{}: {sev} [{}] {}",
-                d.line, d.column, d.code, d.message
-            );
+            let _ = writeln!(out, "  {}:{}: {sev} [{}] {}", d.line, d.column, d.code, d.message);
         }
     }
     out

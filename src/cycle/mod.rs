@@ -41,21 +41,11 @@ pub fn turning(it: &mut Interp, b: &Block, facing: bool) {
     let pts: [(MoveKind, Point); 4] = if facing {
         // R: taper along Z, start minus end.
         let p1 = Point::new(a.x, end.z + r);
-        [
-            (MoveKind::Rapid, p1),
-            (MoveKind::Feed, end),
-            (MoveKind::Feed, Point::new(end.x, a.z)),
-            (MoveKind::Rapid, a),
-        ]
+        [(MoveKind::Rapid, p1), (MoveKind::Feed, end), (MoveKind::Feed, Point::new(end.x, a.z)), (MoveKind::Rapid, a)]
     } else {
         // R: taper as a radius difference, start minus end.
         let p1 = Point::new(end.x + 2.0 * r, a.z);
-        [
-            (MoveKind::Rapid, p1),
-            (MoveKind::Feed, end),
-            (MoveKind::Feed, Point::new(a.x, end.z)),
-            (MoveKind::Rapid, a),
-        ]
+        [(MoveKind::Rapid, p1), (MoveKind::Feed, end), (MoveKind::Feed, Point::new(a.x, end.z)), (MoveKind::Rapid, a)]
     };
     let mut from = a;
     for (kind, to) in pts {
