@@ -17,6 +17,7 @@ pub mod advice;
 pub mod block;
 pub mod cycle;
 pub mod diagnostic;
+pub mod diagram;
 pub mod dialect;
 pub mod g32;
 pub mod gcode;
@@ -30,6 +31,8 @@ pub mod renhe;
 pub mod settings;
 pub mod span;
 pub mod thread;
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;
 
 pub use diagnostic::{Code, Diagnostic, Severity};
 pub use dialect::Dialect;

@@ -21,3 +21,79 @@ pub fn run(program: &str, args: &[&str], dir: Option<&Path>) -> Result {
         .map_err(|e| format!("cannot run {program}: {e}"))?;
     if status.success() { Ok(()) } else { Err(format!("{program} {} failed ({status})", args.join(" "))) }
 }
+
+/// Whether `program` can be started (found on PATH).
+pub fn have(program: &str) -> bool {
+    Command::new(program).arg("--version").output().is_ok_and(|o| o.status.success())
+}
+
+/// Output of a command, if it ran and succeeded.
+pub fn output(program: &str, args: &[&str]) -> Option<String> {
+    let o = Command::new(program).args(args).output().ok()?;
+    o.status.success().then(|| String::from_utf8_lossy(&o.stdout).into_owned())
+}
+
+/// The version of a package in Cargo.lock.
+pub fn locked_version(package: &str) -> Result<String> {
+    let lock = std::fs::read_to_string(root().join("Cargo.lock")).map_err(|e| format!("Cargo.lock: {e}"))?;
+    let needle = format!("name = \"{package}\"\nversion = \"");
+    let at = lock.find(&needle).ok_or_else(|| format!("{package} is not in Cargo.lock"))? + needle.len();
+    Ok(lock[at..].split('"').next().unwrap_or_default().to_string())
+}
+
+/// Adds the wasm32 target when rustup does not list it as installed.
+pub fn ensure_wasm_target() -> Result {
+    let installed = output("rustup", &["target", "list", "--installed"]).unwrap_or_default();
+    if installed.lines().any(|l| l.trim() == "wasm32-unknown-unknown") {
+        return Ok(());
+    }
+    run("rustup", &["target", "add", "wasm32-unknown-unknown"], None)
+}
+
+/// Installs wasm-bindgen-cli at exactly the version of the `wasm-bindgen` crate in Cargo.lock.
+pub fn ensure_wasm_bindgen() -> Result {
+    let want = locked_version("wasm-bindgen")?;
+    let have = output("wasm-bindgen", &["--version"]).unwrap_or_default();
+    if have.split_whitespace().nth(1) == Some(want.as_str()) {
+        return Ok(());
+    }
+    run("cargo", &["install", "wasm-bindgen-cli", "--version", &want], None)
+}
+
+/// Installs Debian's Chromium and ChromeDriver when they are missing.
+pub fn ensure_chromium() -> Result {
+    if Path::new("/usr/bin/chromium").exists() && Path::new("/usr/bin/chromedriver").exists() {
+        return Ok(());
+    }
+    let sudo = output("id", &["-u"]).is_some_and(|u| u.trim() != "0");
+    let apt: Vec<&str> = if sudo { vec!["sudo", "-n", "apt-get"] } else { vec!["apt-get"] };
+    let (prog, pre) = apt.split_first().expect("non-empty");
+    let mut update: Vec<&str> = pre.to_vec();
+    update.extend(["update", "-q"]);
+    run(prog, &update, None)?;
+    let mut inst: Vec<&str> = pre.to_vec();
+    inst.extend(["install", "-y", "-q", "--no-install-recommends", "chromium", "chromium-driver"]);
+    let mut cmd = Command::new(prog);
+    cmd.args(&inst).env("DEBIAN_FRONTEND", "noninteractive");
+    eprintln!("$ {prog} {}", inst.join(" "));
+    let status = cmd.status().map_err(|e| format!("cannot run apt-get: {e}"))?;
+    if status.success() { Ok(()) } else { Err("installing chromium and chromium-driver failed".into()) }
+}
+
+/// `npm ci` in `dir` when its node_modules is missing or older than its lock file.
+pub fn ensure_npm(dir: &Path) -> Result {
+    let lock = dir.join("package-lock.json");
+    let modules = dir.join("node_modules");
+    let stale = match (std::fs::metadata(&lock), std::fs::metadata(modules.join(".package-lock.json"))) {
+        (Ok(l), Ok(m)) => l.modified().ok() > m.modified().ok(),
+        _ => true,
+    };
+    if !stale {
+        return Ok(());
+    }
+    if lock.exists() {
+        run("npm", &["ci", "--no-audit", "--no-fund"], Some(dir))
+    } else {
+        run("npm", &["install", "--no-audit", "--no-fund"], Some(dir))
+    }
+}

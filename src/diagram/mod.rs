@@ -1,0 +1,1 @@
+//! Scenes: what the views draw, computed from a plan.
