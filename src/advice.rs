@@ -176,7 +176,9 @@ pub fn finish_manual(
                     ),
                 );
                 let largest = table[0];
-                for p in &t.passes {
+                // The first infeed is only known when the crest is (from the outline).
+                let known = |p: &&crate::thread::Pass| p.index > 1 || outline.is_some();
+                for p in t.passes.iter().filter(known) {
                     let inf = 2.0 * p.infeed * mm;
                     if inf > largest + 1e-3 {
                         diags.push(
