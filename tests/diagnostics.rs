@@ -1,0 +1,162 @@
+//! Every diagnostic code, triggered by a program, at its line and column.
+//! The coverage test fails when a code has no case here.
+
+mod common;
+use common::*;
+use screwcut::{Code, Dialect};
+
+use Dialect::{Fanuc0i as F, Gsk980tdc as G};
+
+/// (code, dialect, settings, program, line, column, text the message must contain)
+type Case = (Code, Dialect, &'static [&'static str], &'static str, u32, u32, &'static str);
+
+const TURNED_48: &str = "G00 X48 Z67\nG01 Z15 F0.2\nG00 X58 Z70\n";
+
+const CASES: &[Case] = &[
+    (Code::FullWidth, G, &[], "Ｇ００ Ｘ１０ Ｚ５；\n", 1, 1, "'G00 X10 Z5;'"),
+    (Code::MalformedNumber, G, &[], "G00 X1.2.3\n", 1, 6, "'1.2.3'"),
+    (Code::MissingValue, G, &[], "G00 X Z5\n", 1, 5, "'X'"),
+    (Code::UnknownAddress, G, &[], "G00 Y10\n", 1, 5, "GSK980TDc"),
+    (Code::UnexpectedCharacter, G, &[], "G00 X10 @\n", 1, 9, "'@'"),
+    (Code::RepeatedWord, G, &[], "G00 X10 X20\n", 1, 9, "X10 and X20"),
+    (Code::BlockTooLong, G, &["limits.block_chars=8"], "G00 X10 Z20\n", 1, 1, "11 characters"),
+    (Code::TooManyDigits, G, &[], "G00 X123456789\n", 1, 6, "9 significant digits"),
+    (Code::UnclosedComment, G, &[], "G00 X10 (oops\n", 1, 9, "not closed"),
+    (Code::UnmatchedParen, G, &[], "G00 X10 )\n", 1, 9, "')'"),
+    (Code::NestedComment, G, &[], "G00 X10 (a (b))\n", 1, 12, "do not nest"),
+    (Code::CodeAfterSemicolon, G, &[], "G00 X10; G01 Z5\n", 1, 10, "'G01 Z5'"),
+    (Code::UnsupportedMacro, F, &[], "#1=10\n", 1, 1, "'#'"),
+    (Code::MalformedProgramNumber, G, &[], "O12.5\n", 1, 1, "'O12.5'"),
+    (Code::ProgramTooLarge, G, &["limits.program_bytes=10"], "G00 X10 Z20\n", 1, 1, "12 bytes"),
+    (Code::UnsupportedGCode, G, &[], "G07 X10\n", 1, 1, "G7"),
+    (Code::NotSimulated, G, &[], "G71 U2 R1\n", 1, 1, "G71"),
+    (Code::ConflictingGCodes, G, &[], "G00 G01 X10\n", 1, 5, "G0 and G1"),
+    (Code::AxisConflict, G, &[], "G00 X10 U5\n", 1, 5, "X10 and U5"),
+    (Code::NoDecimalPoint, F, &[], "G00 X75\n", 1, 5, "0.075 mm"),
+    (Code::MissingFeed, G, &[], "G00 X10 Z5\nG01 Z0\n", 2, 1, "no F"),
+    (Code::ArcRadiusTooSmall, G, &[], "G00 X0 Z0\nG02 X20 Z-20 R5 F0.1\n", 2, 14, "half the chord"),
+    (Code::ArcRadiusMismatch, G, &[], "G00 X0 Z0\nG03 X20 Z-10 I0 K-5 F0.1\n", 2, 14, "from the end"),
+    (Code::ArcMissingCenter, G, &[], "G00 X0 Z0\nG02 X20 Z-10 F0.1\n", 2, 1, "R or I/K"),
+    (Code::UnexpectedWord, G, &[], "G00 X10 Q5\n", 1, 9, "G00 does not take Q5"),
+    (Code::ValueOutOfRange, G, &[], "G00 X40 Z5\nG32 Z-30 F600\n", 2, 10, "F600"),
+    (Code::AfterEnd, G, &[], "M30\nG00 X10\n", 2, 1, "never executed"),
+    (Code::UnitsChanged, G, &[], "G00 X10 Z5\nG20\n", 2, 1, "units changed"),
+    (Code::MissingWord, G, &[], "G04\n", 1, 1, "dwell time"),
+    (Code::DecimalPointNotAllowed, F, &[], "G00 X40. Z5.\nG32 Z-30. F2. Q180.\n", 2, 15, "Q180000"),
+    (Code::StartAssumed, G, &[], "G00 U10\n", 1, 5, "X0 Z0"),
+    (Code::MoveLimit, G, &["limits.moves=1"], "G00 X10 Z5\nG00 X20\nG00 X30\n", 3, 1, "limits.moves"),
+    (Code::MissingLead, G, &[], "G00 X40 Z5\nG32 Z-30\n", 2, 1, "without a lead"),
+    (Code::ZeroLengthThread, G, &[], "G00 X40 Z5\nG32 Z5 F2\n", 2, 5, "does not move"),
+    (Code::RunoutTooLong, G, &[], "G00 X40 Z5\nG32 W-10 F2 J1 K12\n", 2, 16, "K = 12"),
+    (Code::QIgnored, G, &[], "G00 X40 Z5\nG32 W-10 F2 Q90000\nG32 W-10 Q180000\n", 3, 10, "ignored"),
+    (Code::RunoutSpeed, G, &["No.107=400"], "G00 X40 Z5\nS300\nG32 Z-30 F2 J2\n", 3, 13, "No.107"),
+    (
+        Code::TooManyStarts,
+        G,
+        &["limits.starts=1"],
+        "G00 X40 Z5\nG32 Z-30 F4\nG00 X50\nZ5\nX40\nG32 Z-30 Q180000\n",
+        6,
+        1,
+        "2 starts",
+    ),
+    (Code::CrestAssumed, G, &[], include_str!("../examples/o1006.nc"), 5, 1, "crest assumed at 48"),
+    (
+        Code::DepthVsStandard,
+        G,
+        &[],
+        // Turned to X48, threaded to X46.5 only: 1.5 of diameter against 1.3·2 = 2.6.
+        concat!(
+            "G00 X48 Z67\nG01 Z15 F0.2\nG00 X58 Z70\n",
+            "X47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\nZ70\n"
+        ),
+        4,
+        1,
+        "not cut to full depth",
+    ),
+    (Code::InfeedGuidance, G, &[], include_str!("../examples/o1006.nc"), 5, 1, "table 4-3 for pitch 2"),
+    (
+        Code::InfeedTooLarge,
+        G,
+        &[],
+        "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX45.4\nG32 Z13\nG00 X58\nZ70\n",
+        6,
+        1,
+        "pass 2 takes 1.7",
+    ),
+    (
+        Code::Clearance,
+        G,
+        &[],
+        // The work ends at Z67 and the pass starts at Z68: δ1 = 1 < 2.
+        concat!("G00 X48 Z67\nG01 Z15 F0.2\nG00 X58 Z68\n", "X45.4\nG32 Z13 F2\nG00 X58\nZ68\n"),
+        4,
+        1,
+        "δ1 = 1",
+    ),
+];
+
+#[test]
+fn every_code_at_its_line_and_column() {
+    for &(code, dialect, sets, src, line, col, text) in CASES {
+        let plan = plan_with(src, dialect, sets);
+        let d = at(&plan, code, line, col);
+        assert!(d.message.contains(text), "{code}: message {:?} lacks {text:?}", d.message);
+    }
+}
+
+#[test]
+fn every_code_has_a_case() {
+    for code in Code::ALL {
+        assert!(CASES.iter().any(|c| c.0 == *code), "no test case triggers {code}");
+    }
+}
+
+/// The outline makes the crest known: no assumption note, real first infeed.
+#[test]
+fn crest_from_outline() {
+    let src = format!("{TURNED_48}X47.1\nG32 Z13 F2\nG00 X58\nZ70\nX45.4\nG32 Z13\nG00 X58\nZ70\n");
+    let plan = gsk(&src);
+    no_alarm(&plan);
+    assert_eq!(plan.with_code(Code::CrestAssumed).count(), 0);
+    let t = &plan.threads[0];
+    assert_eq!(t.crest_source, screwcut::thread::CrestSource::Outline);
+    eq(t.crest, 48.0);
+    eq(t.passes[0].depth, 0.45);
+    eq(t.passes[1].depth, 1.3);
+    // δ1 = 70 − 67 = 3: no clearance warning; full depth 2.6: no depth warning.
+    assert_eq!(plan.with_code(Code::Clearance).count(), 0);
+    assert_eq!(plan.with_code(Code::DepthVsStandard).count(), 0);
+}
+
+/// Bad input of every kind gives diagnostics, never a panic.
+#[test]
+fn garbage_never_panics() {
+    let inputs = [
+        "",
+        "\n\n\n",
+        "%\n",
+        "((((",
+        "))))",
+        "G",
+        "G32",
+        "X-",
+        "\u{0}\u{1}\u{2}",
+        "Ｇ３２ Ｗ－１０ Ｆ２",
+        "G02 R-0 X0",
+        "G32 X1e308 F1",
+        "N1 N2 N3",
+        "/G00 X10",
+        "G00 X99999999 Z-99999999\nG32 Z99999999 F500 J99999999 K99999999",
+        "G03 X10 Z10 I0 K0 F1",
+        ";;;;;;",
+        "G50 S2000",
+        "O",
+        ":1234",
+    ];
+    for d in Dialect::ALL {
+        for src in inputs {
+            let plan = plan_with(src, d, &[]);
+            let _ = plan.to_json();
+        }
+    }
+}
