@@ -113,9 +113,9 @@ pub fn start_angle(it: &mut Interp, q: &Word) -> Option<f64> {
 pub fn runout_rule(j: Option<f64>, k: Option<f64>) -> Option<(f64, f64)> {
     match (j, k) {
         (None, _) => None,
-        (Some(j), _) if j == 0.0 => None,
+        (Some(0.0), _) => None,
         (Some(j), None) => Some((j, j.abs())),
-        (Some(j), Some(k)) if k == 0.0 => Some((j, j.abs())),
+        (Some(j), Some(0.0)) => Some((j, j.abs())),
         (Some(j), Some(k)) => Some((j, k.abs())),
     }
 }

@@ -339,10 +339,8 @@ impl<'a> Interp<'a> {
     pub fn go(&mut self, kind: MoveKind, t: &Target, line: u32, span: Span) {
         let from = self.pos;
         let to = t.p;
-        if from.kx && from.kz {
-            if (to.x - from.p.x).abs() > EPS || (to.z - from.p.z).abs() > EPS {
-                self.emit(kind, from.p, to, line, None, span);
-            }
+        if from.kx && from.kz && ((to.x - from.p.x).abs() > EPS || (to.z - from.p.z).abs() > EPS) {
+            self.emit(kind, from.p, to, line, None, span);
         }
         self.arrive(to, t.has_x || from.kx, t.has_z || from.kz, line);
     }
@@ -682,8 +680,8 @@ impl<'a> Interp<'a> {
             (mz + side * h * nz, mr + side * h * nr)
         } else if b.has(b'I') || b.has(b'K') {
             // I and K: centre minus start, I as a radius.
-            let i = b.get(b'I').map(|w| *w);
-            let k = b.get(b'K').map(|w| *w);
+            let i = b.get(b'I').copied();
+            let k = b.get(b'K').copied();
             let di = i.map_or(0.0, |w| self.length(&w));
             let dk = k.map_or(0.0, |w| self.length(&w));
             let (cz, cr) = (sz + dk, sr + di);

@@ -64,6 +64,7 @@ macro_rules! params {
     };
 }
 
+#[allow(clippy::too_many_arguments)]
 const fn d(
     name: &'static str,
     dialects: &'static [Dialect],
