@@ -71,7 +71,7 @@ pub fn finish_manual(
     spans: &dyn Fn(u32) -> Span,
 ) {
     let advice = s.flag(P::Advice);
-    for t in threads.iter_mut().filter(|t| matches!(t.source, Source::G32 | Source::Renhe)) {
+    for t in threads.iter_mut().filter(|t| matches!(t.source, Source::G32 | Source::Renhe | Source::G92)) {
         let long = t.long_axis;
         let dir = t.depth_dir;
         let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth

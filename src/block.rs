@@ -9,6 +9,10 @@ pub struct Number {
     pub value: f64,
     /// Whether the text had a decimal point (`X27.` and `X27.0` do; `X27` does not).
     pub has_point: bool,
+    /// Digits written before the decimal point, leading zeros included (`P060` has 3).
+    pub int_digits: u8,
+    /// Digits written after the decimal point (`F11.2` has 1).
+    pub frac_digits: u8,
 }
 
 impl Number {

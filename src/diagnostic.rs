@@ -125,6 +125,28 @@ codes! {
     RunoutSpeed = "runout-speed", Info;
     /// More starts than the controller allows.
     TooManyStarts = "too-many-starts", Error;
+    // ---- cycles ----
+    /// G76/G78 without the thread height P(k).
+    MissingThreadHeight = "missing-thread-height", Error;
+    /// G76/G78 without the first depth Q(Δd).
+    MissingFirstDepth = "missing-first-depth", Error;
+    /// A threading cycle asked for a face thread (or a cut mostly along X).
+    FaceThreadNotAllowed = "face-thread-not-allowed", Error;
+    /// A cycle whose depth schedule needs more passes than `limits.passes_per_start`.
+    PassLimit = "pass-limit", Error;
+    /// A decimal point that does not change the unit (NO182.7 = 0 increments).
+    DecimalPointIgnored = "decimal-point-ignored", Warning;
+    /// The cycle's start point is not outside the thread.
+    StartInsideThread = "start-inside-thread", Warning;
+    // ---- Renhe ----
+    /// Renhe: absolute X or Z in a G32/G33 thread block.
+    E18_03 = "E18-03", Error;
+    /// Renhe: |W| must exceed |U| and 4 mm.
+    E18_04 = "E18-04", Error;
+    /// Renhe: no X feed (G00/G01) before the thread to set the run-out direction.
+    E18_05 = "E18-05", Error;
+    /// Spindle speed above the controller's advice for the pitch (Renhe n ≤ 2300/t − 60).
+    SpindleSpeed = "spindle-speed", Warning;
     // ---- textbook advice ----
     /// The crest diameter was not turned in the program and was assumed.
     CrestAssumed = "crest-assumed", Info;

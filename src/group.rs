@@ -122,8 +122,12 @@ pub fn after_rapid(it: &mut Interp, t: &Target, line: u32) {
 
 /// Adds a finished chain: it joins the current thread or starts a new one.
 pub fn add_chain(it: &mut Interp, mut chain: Chain) {
+    // Block-by-block passes own their infeed, retract and return; a G92 block is all of its pass.
+    let blockwise = chain.source != Source::G92;
     if let Some(l) = it.grouper.infeed_line.take() {
-        chain.lines.insert(0, l);
+        if blockwise {
+            chain.lines.insert(0, l);
+        }
     }
     let max_infeed = it.s.get(P::GroupMaxInfeed);
     if let Some(last) = it.grouper.cuts.last() {
@@ -132,7 +136,7 @@ pub fn add_chain(it: &mut Interp, mut chain: Chain) {
         }
     }
     it.grouper.cuts.push(chain);
-    it.grouper.after = After::Retract;
+    it.grouper.after = if blockwise { After::Retract } else { After::Nothing };
 }
 
 /// Whether `b` cuts the same helix as `a` (one more pass of it).

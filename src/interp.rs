@@ -473,6 +473,9 @@ impl<'a> Interp<'a> {
         // ---- the command ----
         if let Some((g, w)) = motion_g {
             self.motion = Motion::from_g(g);
+            if self.motion != Motion::G92 {
+                self.cycle.g92 = None;
+            }
             if let Motion::NotSimulated(what, _) = self.motion {
                 self.diag(Code::NotSimulated, w.span, format!("{}: {what} is not drawn", w.display()));
             }
@@ -487,7 +490,7 @@ impl<'a> Interp<'a> {
         if let Some((g, w)) = one_shot {
             self.end_thread_chain();
             self.one_shot(b, g, w);
-        } else if has_axes || (self.motion == Motion::G92 && self.cycle.g92_active()) {
+        } else if has_axes {
             let thread_block = self.motion.is_thread_block() && has_axes;
             if !thread_block {
                 self.end_thread_chain();
@@ -588,7 +591,11 @@ impl<'a> Interp<'a> {
                 }
                 self.jk = (None, None);
                 let t = self.target(b);
+                let (x0, kx0) = (self.pos.p.x, self.pos.kx);
                 self.go(MoveKind::Rapid, &t, b.line, b.span);
+                if t.has_x && kx0 {
+                    crate::renhe::note_x_feed(self, t.p.x - x0, b.line);
+                }
                 crate::group::after_rapid(self, &t, b.line);
             }
             Motion::Linear => {
@@ -599,7 +606,11 @@ impl<'a> Interp<'a> {
                 self.feed_word(b);
                 let t = self.target(b);
                 crate::group::close(self);
+                let (x0, kx0) = (self.pos.p.x, self.pos.kx);
                 self.go(MoveKind::Feed, &t, b.line, b.span);
+                if t.has_x && kx0 {
+                    crate::renhe::note_x_feed(self, t.p.x - x0, b.line);
+                }
             }
             Motion::ArcCw | Motion::ArcCcw => {
                 self.jk = (None, None);
@@ -621,7 +632,6 @@ impl<'a> Interp<'a> {
             }
             Motion::G92 => {
                 self.jk = (None, None);
-                crate::group::close(self);
                 cycle::g92::block(self, b, has_axes);
             }
             Motion::NotSimulated(_, returns) => {

@@ -506,6 +506,7 @@ fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
     let mut point = false;
     let mut any_digit = false;
     let mut pending_zeros = 0usize; // trailing fraction zeros not yet counted
+    let mut int_digits = 0usize;
     for &b in body {
         match b {
             b'0'..=b'9' => {
@@ -513,6 +514,8 @@ fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
                 let d = (b - b'0') as u64;
                 if point {
                     frac += 1;
+                } else {
+                    int_digits += 1;
                 }
                 if mantissa == 0 && d == 0 && !point {
                     continue; // leading zero
@@ -546,7 +549,7 @@ fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
     if value == 0.0 {
         value = 0.0; // no negative zero
     }
-    Ok(Number { value, has_point: point })
+    Ok(Number { value, has_point: point, int_digits: int_digits.min(255) as u8, frac_digits: frac.min(255) as u8 })
 }
 
 #[cfg(test)]

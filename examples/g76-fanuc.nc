@@ -1,0 +1,5 @@
+O0076 (Fanuc G76 example: lead 6, k 3.68, first depth 1.8)
+G00 X80. Z130.
+G76 P011060 Q100 R0.2
+G76 X60.64 Z25. P3680 Q1800 F6.
+M30

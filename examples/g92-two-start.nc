@@ -1,0 +1,8 @@
+O0092 (GSK G92: two-start M24 x Ph3 P1.5, four passes, L2)
+G00 X30 Z5
+G92 X23.2 Z-30 F3 L2
+X22.6
+X22.2
+X22.05
+G00 X100 Z100
+M30
