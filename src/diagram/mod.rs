@@ -1,1 +1,28 @@
 //! Scenes: what the views draw, computed from a plan.
+//!
+//! Pure Rust, no wasm or DOM: the web app renders these scenes on canvas and
+//! as SVG, and tests check them natively. Every item carries the source
+//! lines, thread and pass it comes from, so that hovering a drawing
+//! highlights the program and the editor cursor highlights the drawing.
+//!
+//! - [`side()`]: the side section of the whole program ([`side`]).
+//! - [`tooth()`]: one thread space of one thread at large scale ([`tooth`]).
+//! - [`starts()`]: the start angles and axial offsets of one thread ([`starts`]).
+
+pub mod editor;
+pub mod packed;
+pub mod paths;
+pub mod profile;
+pub mod scene;
+pub mod side;
+pub mod starts;
+pub mod tooth;
+
+pub use packed::{Packed, pack};
+pub use scene::{Item, Label, Rect, Scene, Shape, Style, ViewKind};
+pub use side::side;
+pub use starts::starts;
+pub use tooth::tooth;
+
+#[cfg(test)]
+mod tests;

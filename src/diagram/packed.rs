@@ -1,0 +1,145 @@
+//! Scenes as flat arrays, for moving bulk geometry across the wasm boundary
+//! as typed arrays instead of one JS object per point.
+//!
+//! Every item is [`STRIDE`] `u32`s in `items`:
+//! `[shape, style, coord_start, coord_len, thread + 1, pass + 1, line_start, line_len, label + 1, extra]`
+//! (0 for "none" in the thread, pass and label fields). `coords` holds the
+//! numbers of each shape: polyline/polygon `x0 y0 x1 y1 …`; circle `cx cy r`;
+//! arrow `x0 y0 x1 y1`; dim `ax ay bx by offset`; text `x y dx dy`; marker
+//! `x y`. `extra` is the anchor of a text (0 start, 1 middle, 2 end) or the
+//! glyph of a marker (0 dot, 1 bar, 2 cross). `lines` holds every item's
+//! source lines; `labels` holds `key \u{1f} value` records separated by `\u{1e}`.
+
+use serde::Serialize;
+
+use super::scene::{Anchor, Glyph, Item, Rect, Scene, Shape, ViewKind};
+
+/// Number of `u32`s per item.
+pub const STRIDE: usize = 10;
+
+/// Shape codes, in the order of their numbers.
+pub const SHAPES: [&str; 7] = ["polyline", "polygon", "circle", "arrow", "dim", "text", "marker"];
+
+/// Separates a label's key from its value.
+pub const UNIT_SEP: char = '\u{1f}';
+/// Separates labels.
+pub const RECORD_SEP: char = '\u{1e}';
+
+/// A scene as flat arrays.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Packed {
+    /// Which view.
+    pub view: ViewKind,
+    /// `[x0, y0, x1, y1]` of every item.
+    pub bounds: [f64; 4],
+    /// `[x0, y0, x1, y1]` to fit first.
+    pub focus: [f64; 4],
+    /// Shape numbers.
+    pub coords: Vec<f64>,
+    /// Item records, [`STRIDE`] each.
+    pub items: Vec<u32>,
+    /// Source lines of all items.
+    pub lines: Vec<u32>,
+    /// Label records.
+    pub labels: String,
+}
+
+fn rect(r: Rect) -> [f64; 4] {
+    [r.x0, r.y0, r.x1, r.y1]
+}
+
+fn anchor_code(a: Anchor) -> u32 {
+    match a {
+        Anchor::Start => 0,
+        Anchor::Middle => 1,
+        Anchor::End => 2,
+    }
+}
+
+fn glyph_code(g: Glyph) -> u32 {
+    match g {
+        Glyph::Dot => 0,
+        Glyph::Bar => 1,
+        Glyph::Cross => 2,
+    }
+}
+
+/// Packs a scene.
+pub fn pack(scene: &Scene) -> Packed {
+    let mut p = Packed {
+        view: scene.view,
+        bounds: rect(scene.bounds),
+        focus: rect(scene.focus),
+        coords: Vec::with_capacity(scene.items.len() * 4),
+        items: Vec::with_capacity(scene.items.len() * STRIDE),
+        lines: Vec::with_capacity(scene.items.len()),
+        labels: String::new(),
+    };
+    let mut label_count = 0u32;
+    for item in &scene.items {
+        push_item(&mut p, item, &mut label_count);
+    }
+    p
+}
+
+fn push_item(p: &mut Packed, item: &Item, label_count: &mut u32) {
+    let start = p.coords.len() as u32;
+    let mut label = 0u32;
+    let mut extra = 0u32;
+    let mut add_label = |p: &mut Packed, key: &str, value: &str| {
+        if *label_count > 0 {
+            p.labels.push(RECORD_SEP);
+        }
+        p.labels.push_str(key);
+        p.labels.push(UNIT_SEP);
+        p.labels.push_str(value);
+        *label_count += 1;
+        *label_count
+    };
+    let shape = match &item.shape {
+        Shape::Polyline { points } | Shape::Polygon { points } => {
+            for q in points {
+                p.coords.extend_from_slice(q);
+            }
+            if matches!(item.shape, Shape::Polyline { .. }) { 0 } else { 1 }
+        }
+        Shape::Circle { center, radius } => {
+            p.coords.extend_from_slice(&[center[0], center[1], *radius]);
+            2
+        }
+        Shape::Arrow { from, to } => {
+            p.coords.extend_from_slice(&[from[0], from[1], to[0], to[1]]);
+            3
+        }
+        Shape::Dim { a, b, offset, label: l } => {
+            p.coords.extend_from_slice(&[a[0], a[1], b[0], b[1], *offset]);
+            label = add_label(p, l.key, &l.value);
+            4
+        }
+        Shape::Text { at, label: l, anchor, dx, dy } => {
+            p.coords.extend_from_slice(&[at[0], at[1], *dx, *dy]);
+            label = add_label(p, l.key, &l.value);
+            extra = anchor_code(*anchor);
+            5
+        }
+        Shape::Marker { at, glyph } => {
+            p.coords.extend_from_slice(at);
+            extra = glyph_code(*glyph);
+            6
+        }
+    };
+    let line_start = p.lines.len() as u32;
+    p.lines.extend_from_slice(&item.lines);
+    p.items.extend_from_slice(&[
+        shape,
+        item.style.code(),
+        start,
+        p.coords.len() as u32 - start,
+        item.thread.map_or(0, |t| t + 1),
+        item.pass.map_or(0, |t| t + 1),
+        line_start,
+        item.lines.len() as u32,
+        label,
+        extra,
+    ]);
+}

@@ -1,0 +1,424 @@
+//! The side section: the X–Z plane, upper half, +Z right, radius up. It
+//! shows the part outline (the program's turning moves, or each thread's
+//! crest line when the program turns none), every pass as its own path
+//! (rapids dashed, cut solid, run-out and screw-in marked), the threaded
+//! band between crest and root, the lead-in and run-out zones δ1/δ2 where
+//! the work is known, and dimensions of the major and minor diameters, the
+//! lead, the pitch of multi-start threads, the threaded length and the taper.
+
+use crate::motion::{Move, MoveKind, Point};
+use crate::plan::Plan;
+use crate::thread::{Axis, CrestSource, Pass, Thread};
+
+use super::paths::{PassPath, pass_paths};
+use super::scene::{Anchor, Glyph, Item, Label, Pt, Scene, Shape, Style, ViewKind, num};
+
+/// Most motions drawn; a larger plan is drawn up to here, with a note.
+pub const MAX_MOVES_DRAWN: usize = 250_000;
+
+/// World point of a program point: `[Z, radius]`.
+pub fn world(p: Point) -> Pt {
+    [p.z, p.x / 2.0]
+}
+
+fn line(a: Pt, b: Pt) -> Shape {
+    Shape::Polyline { points: vec![a, b] }
+}
+
+/// The points of an arc motion, tessellated (at most 3° per chord).
+pub fn arc_points(m: &Move) -> Vec<Pt> {
+    let (a, b) = (world(m.from), world(m.to));
+    let Some(arc) = m.arc else { return vec![a, b] };
+    let c = world(arc.center);
+    let r = ((a[0] - c[0]).powi(2) + (a[1] - c[1]).powi(2)).sqrt();
+    if !(r.is_finite() && r > 0.0) {
+        return vec![a, b];
+    }
+    let a0 = (a[1] - c[1]).atan2(a[0] - c[0]);
+    let a1 = (b[1] - c[1]).atan2(b[0] - c[0]);
+    let tau = std::f64::consts::TAU;
+    let mut sweep = a1 - a0;
+    if arc.cw {
+        while sweep >= 0.0 {
+            sweep -= tau;
+        }
+        if sweep <= -tau {
+            sweep += tau;
+        }
+    } else {
+        while sweep <= 0.0 {
+            sweep += tau;
+        }
+        if sweep >= tau {
+            sweep -= tau;
+        }
+    }
+    let n = ((sweep.abs() / 3f64.to_radians()).ceil() as usize).clamp(2, 120);
+    let mut pts: Vec<Pt> = (0..n)
+        .map(|i| {
+            let t = a0 + sweep * i as f64 / n as f64;
+            [c[0] + r * t.cos(), c[1] + r * t.sin()]
+        })
+        .collect();
+    pts.push(b);
+    pts
+}
+
+/// Where a thread sits: its crest and root as functions of the long axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Band {
+    /// Long axis of the thread.
+    pub long: Axis,
+    /// Long-axis start and end of the first pass's cut (radius for X).
+    pub l0: f64,
+    /// See `l0`.
+    pub l1: f64,
+    /// Smallest and largest long-axis position of any pass's cut.
+    pub lo: f64,
+    /// See `lo`.
+    pub hi: f64,
+    /// Crest short-axis position at `l0` (radius for Z threads, Z for face threads).
+    pub crest0: f64,
+    /// Change of the crest from `l0` to `l1` (minus the taper R(i)).
+    pub slope_total: f64,
+    /// Radial (axial for face threads) direction in which the depth grows.
+    pub dir: f64,
+    /// Thread height (deepest pass depth).
+    pub height: f64,
+}
+
+impl Band {
+    /// The band of a thread, from its first pass, crest, taper and height.
+    pub fn of(t: &Thread) -> Option<Band> {
+        let p0 = t.passes.first()?;
+        let dir = if t.depth_dir != 0.0 {
+            t.depth_dir.signum()
+        } else if t.internal {
+            1.0
+        } else {
+            -1.0
+        };
+        let (l0, l1, crest0, slope_total) = match t.long_axis {
+            Axis::Z => (p0.from.z, p0.to.z, t.crest / 2.0, -t.taper),
+            Axis::X => (p0.from.r(), p0.to.r(), t.crest, 0.0),
+        };
+        let long = |p: Point| if t.long_axis == Axis::Z { p.z } else { p.r() };
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in &t.passes {
+            for q in [p.from, p.to] {
+                let l = long(q);
+                if l.is_finite() {
+                    lo = lo.min(l);
+                    hi = hi.max(l);
+                }
+            }
+        }
+        let b = Band { long: t.long_axis, l0, l1, lo, hi, crest0, slope_total, dir, height: t.height };
+        (l0.is_finite() && l1.is_finite() && crest0.is_finite() && lo <= hi).then_some(b)
+    }
+
+    /// Crest position at long-axis position `l`.
+    pub fn crest(&self, l: f64) -> f64 {
+        let span = self.l1 - self.l0;
+        if span.abs() < 1e-12 { self.crest0 } else { self.crest0 + self.slope_total * (l - self.l0) / span }
+    }
+
+    /// Root position (deepest pass) at `l`.
+    pub fn root(&self, l: f64) -> f64 {
+        self.crest(l) + self.dir * self.height
+    }
+
+    /// World point of a (long, short) pair.
+    pub fn pt(&self, l: f64, s: f64) -> Pt {
+        match self.long {
+            Axis::Z => [l, s],
+            Axis::X => [s, l],
+        }
+    }
+
+    /// Direction of cutting along the long axis (+1 or −1).
+    pub fn sense(&self) -> f64 {
+        if self.l1 >= self.l0 { 1.0 } else { -1.0 }
+    }
+}
+
+/// The work's extent along the thread: the turned moves that lie on the
+/// crest line and overlap the cut. `None` when the crest is not turned.
+pub fn work_extent(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)> {
+    if t.crest_source != CrestSource::Outline || band.long != Axis::Z {
+        return None;
+    }
+    let on_crest = |p: Point| {
+        let c = band.crest(p.z);
+        (p.r() - c).abs() <= 1e-4 + 1e-6 * c.abs()
+    };
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for m in moves.iter().filter(|m| m.kind == MoveKind::Feed) {
+        let (a, b) = (m.from.z.min(m.to.z), m.from.z.max(m.to.z));
+        if b - a > 1e-9 && on_crest(m.from) && on_crest(m.to) && b > band.lo && a < band.hi {
+            lo = lo.min(a);
+            hi = hi.max(b);
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// Lead-in δ1 and run-out δ2 of a thread on work spanning `lo..hi`.
+pub fn deltas(band: &Band, work: (f64, f64)) -> (f64, f64) {
+    let (lo, hi) = work;
+    if band.sense() < 0.0 { (band.l0 - hi, lo - band.l1) } else { (lo - band.l0, band.l1 - hi) }
+}
+
+/// Builds the side section of a plan.
+pub fn side(plan: &Plan) -> Scene {
+    let mut scene = Scene::new(ViewKind::Side);
+    let paths = pass_paths(plan);
+    let drawn = plan.moves.len().min(MAX_MOVES_DRAWN);
+    let mut owner = vec![false; drawn];
+    for p in &paths {
+        for k in p.lead_in.start..p.tail.end {
+            if let Some(o) = owner.get_mut(k) {
+                *o = true;
+            }
+        }
+    }
+    let mut back: Vec<(Item, bool)> = Vec::new();
+    let mut mid: Vec<(Item, bool)> = Vec::new();
+    let mut front: Vec<(Item, bool)> = Vec::new();
+    let has_threads = !plan.threads.is_empty();
+    // Motions of no pass: the part outline and other tool paths.
+    for (k, m) in plan.moves[..drawn].iter().enumerate() {
+        if owner[k] {
+            continue;
+        }
+        let (shape, style, focus) = match m.kind {
+            MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
+            MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
+            MoveKind::Arc => (Shape::Polyline { points: arc_points(m) }, Style::Outline, !has_threads),
+            MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),
+            MoveKind::Runout => (line(world(m.from), world(m.to)), Style::Runout, true),
+        };
+        mid.push((Item::new(shape, style).lines([m.line]), focus));
+    }
+    if drawn < plan.moves.len() {
+        let at = world(plan.moves[drawn - 1].to);
+        front.push((
+            Item::new(
+                Shape::Text {
+                    at,
+                    label: Label::new("moves_capped", drawn.to_string()),
+                    anchor: Anchor::Start,
+                    dx: 6.0,
+                    dy: 6.0,
+                },
+                Style::Note,
+            ),
+            false,
+        ));
+    }
+    for (ti, t) in plan.threads.iter().enumerate() {
+        thread_items(plan, ti, t, &mut back, &mut front);
+    }
+    let mut found = vec![false; plan.threads.iter().map(|t| t.passes.len()).sum()];
+    let base: Vec<usize> = plan
+        .threads
+        .iter()
+        .scan(0, |acc, t| {
+            let b = *acc;
+            *acc += t.passes.len();
+            Some(b)
+        })
+        .collect();
+    for p in &paths {
+        if p.tail.end > drawn {
+            continue;
+        }
+        found[base[p.thread] + p.pass] = true;
+        pass_items(plan, p, &mut mid);
+    }
+    for (ti, t) in plan.threads.iter().enumerate() {
+        for (pi, p) in t.passes.iter().enumerate() {
+            if !found[base[ti] + pi] {
+                mid.push((
+                    Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut)
+                        .lines(p.lines.clone())
+                        .of(ti, Some(pi)),
+                    true,
+                ));
+            }
+        }
+    }
+    for (item, focus) in back.into_iter().chain(mid).chain(front) {
+        scene.push(item, focus);
+    }
+    // The passes' rapids join the focus where they stay near the cuts.
+    let core = scene.focus;
+    if !core.is_empty() {
+        let grow = 0.25 * core.width().max(core.height());
+        let near = |p: &Pt| {
+            p[0] >= core.x0 - grow && p[0] <= core.x1 + grow && p[1] >= core.y0 - grow && p[1] <= core.y1 + grow
+        };
+        for item in scene.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
+            for p in item.points().iter().filter(|p| near(p)) {
+                scene.focus.add(*p);
+            }
+        }
+    }
+    // The spindle axis across everything, behind the rest.
+    let b = scene.bounds.or_unit();
+    let margin = 0.05 * b.width().max(1.0);
+    scene.items.insert(0, Item::new(line([b.x0 - margin, 0.0], [b.x1 + margin, 0.0]), Style::Axis));
+    scene.bounds.add([b.x0 - margin, 0.0]);
+    scene.bounds.add([b.x1 + margin, 0.0]);
+    scene.finish();
+    scene
+}
+
+/// The points of a pass's cut from its own data (screw-in, segments, run-out).
+fn pass_points(p: &Pass) -> Vec<Pt> {
+    let mut pts = Vec::new();
+    if let Some(s) = p.screw_in_from {
+        pts.push(world(s));
+    }
+    if p.segments.is_empty() {
+        pts.push(world(p.from));
+        pts.push(world(p.to));
+    } else {
+        pts.extend(p.segments.iter().map(|s| world(*s)));
+    }
+    if let Some(r) = p.runout_to {
+        pts.push(world(r));
+    }
+    pts
+}
+
+/// The items of one matched pass: its rapids, cut, run-out and screw-in.
+fn pass_items(plan: &Plan, p: &PassPath, out: &mut Vec<(Item, bool)>) {
+    let pass = &plan.threads[p.thread].passes[p.pass];
+    for k in p.lead_in.start..p.tail.end {
+        let m = &plan.moves[k];
+        let style = match m.kind {
+            MoveKind::Rapid => Style::Rapid,
+            MoveKind::ScrewIn => Style::ScrewIn,
+            MoveKind::Runout => Style::Runout,
+            _ => Style::Cut,
+        };
+        let shape = if m.kind == MoveKind::Arc {
+            Shape::Polyline { points: arc_points(m) }
+        } else {
+            line(world(m.from), world(m.to))
+        };
+        out.push((Item::new(shape, style).lines([m.line]).of(p.thread, Some(p.pass)), style != Style::Rapid));
+    }
+    let mark = |at: Point| Item::new(Shape::Marker { at: world(at), glyph: Glyph::Bar }, Style::Runout);
+    if pass.runout_to.is_some() {
+        out.push((mark(pass.to).lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true));
+    }
+    if pass.screw_in_from.is_some() {
+        let item = Item { style: Style::ScrewIn, ..mark(pass.from) };
+        out.push((item.lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true));
+    }
+}
+
+/// The band, crest and root lines, δ zones and dimensions of one thread.
+fn thread_items(plan: &Plan, ti: usize, t: &Thread, back: &mut Vec<(Item, bool)>, front: &mut Vec<(Item, bool)>) {
+    let Some(band) = Band::of(t) else { return };
+    let lines: Vec<u32> = vec![t.line];
+    let own = |shape: Shape, style: Style| Item::new(shape, style).lines(lines.clone()).of(ti, None);
+    let (lo, hi) = (band.lo, band.hi);
+    let zone = vec![
+        band.pt(lo, band.crest(lo)),
+        band.pt(hi, band.crest(hi)),
+        band.pt(hi, band.root(hi)),
+        band.pt(lo, band.root(lo)),
+    ];
+    back.push((own(Shape::Polygon { points: zone }, Style::ThreadZone), true));
+    if t.crest_source != CrestSource::Outline {
+        back.push((own(line(band.pt(lo, band.crest(lo)), band.pt(hi, band.crest(hi))), Style::Crest), true));
+    }
+    back.push((own(line(band.pt(lo, band.root(lo)), band.pt(hi, band.root(hi))), Style::Root), true));
+    // δ1 before the work, δ2 after it.
+    if let Some(work) = work_extent(t, &band, &plan.moves) {
+        let (d1, d2) = deltas(&band, work);
+        let s = band.sense();
+        let zones = [
+            (band.l0, band.l0 + s * d1, d1, Style::Delta1, "delta1"),
+            (band.l1 - s * d2, band.l1, d2, Style::Delta2, "delta2"),
+        ];
+        for (a, b, d, style, key) in zones {
+            if d <= 1e-9 {
+                continue;
+            }
+            let top = |l: f64| band.crest(l) - band.dir * 0.25 * band.height.max(1e-3);
+            let bottom = |l: f64| band.root(l);
+            let poly = vec![band.pt(a, bottom(a)), band.pt(b, bottom(b)), band.pt(b, top(b)), band.pt(a, top(a))];
+            back.push((own(Shape::Polygon { points: poly }, style), true));
+            let mid = (a + b) / 2.0;
+            let up = if band.dir < 0.0 { 1.0 } else { -1.0 };
+            let label = Label::new(key, num(d));
+            front.push((
+                own(
+                    Shape::Text { at: band.pt(mid, top(mid)), label, anchor: Anchor::Middle, dx: 0.0, dy: 10.0 * up },
+                    style,
+                ),
+                true,
+            ));
+        }
+    }
+    // Dimensions, on the side of the crest away from the material.
+    let s = band.sense();
+    let away = -band.dir; // +1: above the crest in the drawing (external thread)
+    if band.long == Axis::Z {
+        let (major_r, minor_r) = {
+            let (c, r) = (band.crest(band.l1), band.root(band.l1));
+            if t.internal { (r, c) } else { (c, r) }
+        };
+        // Diameters at the cut's end, beyond it.
+        for (r, key, off) in [(minor_r, "dia_minor", 22.0), (major_r, "dia_major", 44.0)] {
+            let shape = Shape::Dim {
+                a: [band.l1, 0.0],
+                b: [band.l1, r],
+                offset: -s * off,
+                label: Label::new(key, num(2.0 * r)),
+            };
+            front.push((own(shape, Style::Dimension), false));
+        }
+    } else {
+        let outer = band.l0.max(band.l1);
+        let shape = Shape::Dim {
+            a: band.pt(outer, band.crest(outer)),
+            b: band.pt(outer, band.root(outer)),
+            offset: 22.0,
+            label: Label::new("height", num(band.height)),
+        };
+        front.push((own(shape, Style::Dimension), false));
+    }
+    let along = |l: f64, off: f64, key: &'static str, len: f64| {
+        let (a, b) = (band.pt(band.l0, band.crest(band.l0)), band.pt(l, band.crest(l)));
+        // Walking from a to b, is the left side the positive short-axis side?
+        let left_is_plus = match band.long {
+            Axis::Z => s > 0.0,
+            Axis::X => s < 0.0,
+        };
+        let offset = if left_is_plus == (away > 0.0) { off } else { -off };
+        Shape::Dim { a, b, offset, label: Label::new(key, num(len)) }
+    };
+    if t.lead > 0.0 && t.lead.is_finite() {
+        front.push((own(along(band.l0 + s * t.lead, 18.0, "lead", t.lead), Style::Dimension), true));
+        if t.starts > 1 {
+            front.push((own(along(band.l0 + s * t.pitch, 34.0, "pitch", t.pitch), Style::Dimension), true));
+        }
+    }
+    let length = (band.l1 - band.l0).abs();
+    front.push((own(along(band.l1, 50.0, "length", length), Style::Dimension), false));
+    if t.taper.abs() > 1e-9 && band.long == Axis::Z && length > 0.0 {
+        let mid = (band.l0 + band.l1) / 2.0;
+        let half_angle = (t.taper.abs() / length).atan().to_degrees();
+        let label = Label::new("taper", format!("i={} α/2={}°", num(t.taper), num(half_angle)));
+        let at = band.pt(mid, band.crest(mid));
+        front.push((
+            own(Shape::Text { at, label, anchor: Anchor::Middle, dx: 0.0, dy: 64.0 * away }, Style::Dimension),
+            false,
+        ));
+    }
+}

@@ -1,0 +1,393 @@
+//! Scene tests on real programs and on a cycle-shaped plan.
+
+use super::packed::{STRIDE, pack};
+use super::paths::pass_paths;
+use super::scene::{Item, Scene, Shape, Style};
+use super::side::{Band, deltas, work_extent};
+use super::starts::{RULER_LEN, RULER_X, starts_of};
+use super::tooth::cuts;
+use super::*;
+use crate::motion::{Move, MoveKind, Point};
+use crate::plan::{Plan, Units, plan_default};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, Role, Source, Thread, ThreadKind};
+use crate::{Dialect, Settings};
+
+const O1006: &str = include_str!("../../examples/o1006.nc");
+const O0009: &str = include_str!("../../examples/o0009.nc");
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() < 1e-9
+}
+
+fn polyline(item: &Item) -> &[[f64; 2]] {
+    match &item.shape {
+        Shape::Polyline { points } | Shape::Polygon { points } => points,
+        _ => &[],
+    }
+}
+
+fn dims(scene: &Scene) -> Vec<(&'static str, String)> {
+    scene
+        .items
+        .iter()
+        .filter_map(|i| match &i.shape {
+            Shape::Dim { label, .. } => Some((label.key, label.value.clone())),
+            _ => None,
+        })
+        .collect()
+}
+
+fn texts(scene: &Scene) -> Vec<(&'static str, String)> {
+    scene
+        .items
+        .iter()
+        .filter_map(|i| match &i.shape {
+            Shape::Text { label, .. } => Some((label.key, label.value.clone())),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn o1006_side_has_five_pass_paths_from_z70_to_z13() {
+    let plan = plan_default(O1006, Dialect::Gsk980tdc);
+    let scene = side(&plan);
+    let cuts: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Cut).collect();
+    assert_eq!(cuts.len(), 5);
+    let xs = [47.1, 46.5, 45.9, 45.5, 45.4];
+    let lines = [6, 10, 14, 18, 22];
+    for (k, c) in cuts.iter().enumerate() {
+        assert_eq!(c.thread, Some(0));
+        assert_eq!(c.pass, Some(k as u32));
+        assert_eq!(c.lines, vec![lines[k]]);
+        let r = xs[k] / 2.0;
+        assert_eq!(polyline(c), &[[70.0, r], [13.0, r]], "pass {k}");
+    }
+    // Each pass is its own path: infeed, cut, retract, return.
+    for (k, x) in xs.iter().enumerate() {
+        let items: Vec<&Item> = scene.of_pass(0, k).collect();
+        let styles: Vec<Style> = items.iter().map(|i| i.style).collect();
+        assert_eq!(styles, vec![Style::Rapid, Style::Cut, Style::Rapid, Style::Rapid], "pass {k}");
+        let infeed = polyline(items[0]);
+        assert_eq!(infeed[1], [70.0, x / 2.0]);
+    }
+    // The approach from G50 X0 Z0 belongs to no pass.
+    let other: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::OtherRapid).collect();
+    assert_eq!(other.len(), 1);
+    assert_eq!(polyline(other[0]), &[[0.0, 0.0], [70.0, 29.0]]);
+    assert_eq!(other[0].lines, vec![4]);
+    // Dimensions: major 48 (assumed crest), minor 45.4, lead 2, length 57.
+    let d = dims(&scene);
+    assert!(d.contains(&("dia_major", "48".into())), "{d:?}");
+    assert!(d.contains(&("dia_minor", "45.4".into())), "{d:?}");
+    assert!(d.contains(&("lead", "2".into())), "{d:?}");
+    assert!(d.contains(&("length", "57".into())), "{d:?}");
+    assert!(!d.iter().any(|(k, _)| *k == "pitch"), "single start: no pitch dimension");
+    // No outline: the crest line is drawn at the assumed major diameter.
+    let crest: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Crest).collect();
+    assert_eq!(crest.len(), 1);
+    assert_eq!(polyline(crest[0]), &[[13.0, 24.0], [70.0, 24.0]]);
+    let root = scene.items.iter().find(|i| i.style == Style::Root).unwrap();
+    assert!(polyline(root).iter().all(|p| close(p[1], 22.7)));
+    // Focus: the cuts and the nearby rapids, not the G50 origin nor the final retract to X100 Z100.
+    let f = scene.focus;
+    assert!(close(f.x0, 13.0) && close(f.x1, 70.0) && close(f.y0, 22.7) && close(f.y1, 29.0), "{f:?}");
+    assert!(close(scene.bounds.y0, 0.0));
+    // The axis is the first item and spans the drawing.
+    assert_eq!(scene.items[0].style, Style::Axis);
+}
+
+#[test]
+fn o0009_side_is_a_taper_with_its_dimension() {
+    let plan = plan_default(O0009, Dialect::Gsk980tdc);
+    let scene = side(&plan);
+    let cuts: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Cut).collect();
+    assert_eq!(cuts.len(), 2);
+    assert_eq!(polyline(cuts[0]), &[[3.0, 27.4286 / 2.0], [-72.0, 48.8571 / 2.0]]);
+    let t = texts(&scene);
+    let taper = t.iter().find(|(k, _)| *k == "taper").expect("taper label");
+    assert!(taper.1.starts_with("i=-10.714") && taper.1.ends_with("α/2=8.1301°"), "{taper:?}");
+    // The crest follows the taper: 29.0286 at Z3, 50.4571 at Z-72.
+    let crest = scene.items.iter().find(|i| i.style == Style::Crest).unwrap();
+    let pts = polyline(crest);
+    assert!(close(pts[0][0], -72.0) && (pts[0][1] - 50.4571 / 2.0).abs() < 1e-6, "{pts:?}");
+    assert!(close(pts[1][0], 3.0) && (pts[1][1] - 29.0286 / 2.0).abs() < 1e-6, "{pts:?}");
+}
+
+#[test]
+fn turned_outline_gives_delta_zones() {
+    let text = "G00 X52 Z67\nG01 X48 F0.2\nZ15\nX52\nG00 Z70\nX47.1\nG32 Z13 F2\nG00 X52\nZ70\nX46.5\nG32 Z13 F2\nG00 X52\nZ70\nM30\n";
+    let plan = plan_default(text, Dialect::Gsk980tdc);
+    let t = &plan.threads[0];
+    assert_eq!(t.crest_source, CrestSource::Outline);
+    let band = Band::of(t).unwrap();
+    let work = work_extent(t, &band, &plan.moves).unwrap();
+    assert_eq!(work, (15.0, 67.0));
+    assert_eq!(deltas(&band, work), (3.0, 2.0));
+    let scene = side(&plan);
+    let t = texts(&scene);
+    assert!(t.contains(&("delta1", "3".into())), "{t:?}");
+    assert!(t.contains(&("delta2", "2".into())), "{t:?}");
+    let z1 = scene.items.iter().find(|i| i.style == Style::Delta1).unwrap();
+    let xs: Vec<f64> = polyline(z1).iter().map(|p| p[0]).collect();
+    assert_eq!(
+        (xs.iter().cloned().fold(f64::INFINITY, f64::min), xs.iter().cloned().fold(0.0, f64::max)),
+        (67.0, 70.0)
+    );
+    // The turning moves are the outline, not a crest line.
+    assert_eq!(scene.items.iter().filter(|i| i.style == Style::Outline).count(), 3);
+    assert!(!scene.items.iter().any(|i| i.style == Style::Crest));
+}
+
+/// A plan shaped as the cycles produce it: every motion on one line, a
+/// screw-in and a run-out per pass, flank shifts and two starts.
+fn cycle_plan() -> Plan {
+    let line = 3;
+    let a = Point::new(60.0, 75.0);
+    let mut moves = vec![Move { kind: MoveKind::Rapid, from: Point::new(100.0, 100.0), to: a, line: 2, arc: None }];
+    let mut passes = Vec::new();
+    let t60 = 30f64.to_radians().tan();
+    let crest = 48.0;
+    let depths = [0.5, 0.8, 1.0, 1.1];
+    for start in 1..=2u32 {
+        let dz = if start == 2 { 1.5 } else { 0.0 }; // lead 3, two starts
+        let mut prev = 0.0;
+        for (i, &d) in depths.iter().enumerate() {
+            let shift = -(1.1 - d) * t60; // left flank
+            let x = crest - 2.0 * d;
+            let z0 = 70.0 + shift + dz;
+            let screw = Point::new(x + 2.0 * 0.4, z0);
+            let from = Point::new(x, z0 - 3.0);
+            let to = Point::new(x, 20.0 + shift + dz);
+            let run = Point::new(x + 2.0, 17.0 + shift + dz);
+            let seq = [
+                (MoveKind::Rapid, a, Point::new(screw.x, a.z)),
+                (MoveKind::Rapid, Point::new(screw.x, a.z), screw),
+                (MoveKind::ScrewIn, screw, from),
+                (MoveKind::Thread, from, to),
+                (MoveKind::Runout, to, run),
+                (MoveKind::Rapid, run, Point::new(a.x, run.z)),
+                (MoveKind::Rapid, Point::new(a.x, run.z), a),
+            ];
+            for (kind, f, t) in seq {
+                moves.push(Move { kind, from: f, to: t, line, arc: None });
+            }
+            passes.push(Pass {
+                start,
+                index: i as u32 + 1,
+                from,
+                to,
+                depth: d,
+                infeed: d - prev,
+                role: if i + 1 == depths.len() { Role::Finish } else { Role::Rough },
+                lines: vec![2, 3],
+                segments: Vec::new(),
+                runout_to: Some(run),
+                screw_in_from: Some(screw),
+                shift,
+                angle: 180.0 * (start - 1) as f64,
+                area: crate::thread::v_area(60.0, prev, d),
+            });
+            prev = d;
+        }
+    }
+    let thread = Thread {
+        line: 2,
+        end_line: 3,
+        source: Source::G78,
+        kind: ThreadKind::Straight,
+        long_axis: Axis::Z,
+        lead: 3.0,
+        pitch: 1.5,
+        starts: 2,
+        internal: false,
+        infeed: Infeed::Left,
+        tool_angle: 60.0,
+        crest,
+        crest_source: CrestSource::Cycle,
+        height: 1.1,
+        taper: 0.0,
+        passes,
+        depth_dir: -1.0,
+    };
+    Plan { dialect: Dialect::Gsk980tdc, units: Units::Mm, diagnostics: Vec::new(), moves, threads: vec![thread] }
+}
+
+#[test]
+fn cycle_passes_split_their_shared_line_into_paths() {
+    let plan = cycle_plan();
+    let paths = pass_paths(&plan);
+    assert_eq!(paths.len(), 8);
+    for (k, p) in paths.iter().enumerate() {
+        assert_eq!((p.thread, p.pass), (0, k));
+        let base = 1 + 7 * k;
+        // The first pass takes both rapids from A; later passes only the last one.
+        // (pass 1 also takes the approach to A: line 2 is the cycle's first block).
+        let lead_start = if k == 0 { 0 } else { base + 1 };
+        assert_eq!(p.lead_in, lead_start..base + 2, "pass {k}");
+        assert_eq!(p.cut, base + 2..base + 5, "pass {k}");
+        let tail_end = if k == 7 { base + 7 } else { base + 8 };
+        assert_eq!(p.tail, base + 5..tail_end, "pass {k}");
+    }
+    let scene = side(&plan);
+    let styles: Vec<Style> = scene.of_pass(0, 1).map(|i| i.style).collect();
+    assert_eq!(
+        styles,
+        vec![
+            Style::Rapid,
+            Style::ScrewIn,
+            Style::Cut,
+            Style::Runout,
+            Style::Rapid,
+            Style::Rapid,
+            Style::Rapid,
+            Style::Runout,
+            Style::ScrewIn
+        ]
+    );
+    let d = dims(&scene);
+    assert!(d.contains(&("lead", "3".into())) && d.contains(&("pitch", "1.5".into())), "{d:?}");
+    assert!(d.contains(&("dia_major", "48".into())) && d.contains(&("dia_minor", "45.8".into())), "{d:?}");
+}
+
+#[test]
+fn tooth_areas_match_the_plan_and_follow_the_flank() {
+    let plan = cycle_plan();
+    let scene = tooth(&plan, 0, 1).unwrap();
+    let t = &plan.threads[0];
+    let passes: Vec<(usize, &Pass)> = t.passes.iter().enumerate().filter(|(_, p)| p.start == 1).collect();
+    let tool = tooth::tool_of(t, t.pitch);
+    let (list, surface) = cuts(tool, &passes, -4.0, 4.0);
+    for (c, (_, p)) in list.iter().zip(&passes) {
+        // A left-flank infeed keeps the left edge on the flank: each pass removes
+        // exactly the V area between its depth and the previous one.
+        assert!((c.area - p.area.unwrap()).abs() < 1e-9, "pass {}: {} vs {:?}", p.index, c.area, p.area);
+    }
+    // The finished space: root at depth 1.1, crest width 2·1.1·tan 30°.
+    assert!((surface.at(0.0) + 1.1).abs() < 1e-9);
+    let w = 2.0 * 1.1 * 30f64.to_radians().tan();
+    assert!(surface.at(-w / 2.0 - 1e-6) > -1e-12 && surface.at(w / 2.0 - 1e-3) < 0.0, "{:?}", surface.pts);
+    // Scene: one area and one tool per pass of start 1, a start caption, an infeed arrow along the flank.
+    assert_eq!(scene.items.iter().filter(|i| i.style == Style::Area).count(), 4);
+    assert_eq!(
+        scene.items.iter().filter(|i| i.style == Style::Tool && matches!(i.shape, Shape::Polyline { .. })).count(),
+        4
+    );
+    let tx = texts(&scene);
+    assert!(tx.contains(&("start_of", "1/2".into())), "{tx:?}");
+    assert!(tx.contains(&("pass_depth_finish", "4: 1.1".into())), "{tx:?}");
+    assert!(tx.contains(&("infeed_left", String::new())), "{tx:?}");
+    let arrow = scene
+        .items
+        .iter()
+        .find_map(|i| match i.shape {
+            Shape::Arrow { from, to } => Some((from, to)),
+            _ => None,
+        })
+        .unwrap();
+    let slope = (arrow.1[0] - arrow.0[0]) / (arrow.0[1] - arrow.1[1]);
+    assert!((slope - 30f64.to_radians().tan()).abs() < 1e-9, "along the left flank: {slope}");
+    assert_eq!(dims(&scene), vec![("height", "1.1".into()), ("pitch", "1.5".into())]);
+    assert!(tooth(&plan, 0, 3).is_none());
+    assert!(tooth(&plan, 1, 1).is_none());
+}
+
+#[test]
+fn o1006_tooth_shows_radial_chevrons() {
+    let plan = plan_default(O1006, Dialect::Gsk980tdc);
+    let scene = tooth(&plan, 0, 1).unwrap();
+    let areas: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Area).collect();
+    assert_eq!(areas.len(), 5);
+    let t = &plan.threads[0];
+    for a in &areas {
+        let p = &t.passes[a.pass.unwrap() as usize];
+        let pts: Vec<(f64, f64)> = polyline(a).iter().map(|q| (q[0], q[1])).collect();
+        let got = profile::area(&pts);
+        assert!((got - p.area.unwrap()).abs() < 1e-5, "pass {}: {got} vs {:?}", p.index, p.area);
+        assert_eq!(a.lines, p.lines);
+    }
+    let tx = texts(&scene);
+    assert!(
+        tx.contains(&("pass_depth", "1: 0.45".into())) && tx.contains(&("pass_depth_finish", "5: 1.3".into())),
+        "{tx:?}"
+    );
+    assert!(tx.contains(&("infeed_programmed", String::new())), "{tx:?}");
+    assert!(tx.contains(&("tool_angle", "60°".into())), "{tx:?}");
+    // External thread: the space opens upward, the root is 1.3 below the crest.
+    let prof = scene.items.iter().find(|i| i.style == Style::Profile).unwrap();
+    let low = polyline(prof).iter().map(|p| p[1]).fold(0.0, f64::min);
+    assert!(close(low, -1.3), "{low}");
+}
+
+#[test]
+fn starts_view_places_angles_and_offsets() {
+    let text = "G00 X58 Z70\nX47.1\nG32 Z13 F2 Q0\nG00 X58\nZ70\nX47.1\nG32 Z13 F2 Q180000\nG00 X58\nZ70\nM30\n";
+    let plan = plan_default(text, Dialect::Gsk980tdc);
+    assert_eq!(plan.threads[0].starts, 2);
+    let list = starts_of(&plan, 0);
+    assert_eq!(list.len(), 2);
+    assert_eq!((list[1].number, list[1].angle, list[1].offset), (2, 180.0, 1.0));
+    let scene = starts(&plan, 0).unwrap();
+    let spokes: Vec<&Item> =
+        scene.items.iter().filter(|i| i.style == Style::Start && polyline(i).first() == Some(&[0.0, 0.0])).collect();
+    assert_eq!(spokes.len(), 2);
+    let end = polyline(spokes[1])[1];
+    assert!(end[0].abs() < 1e-12 && close(end[1], -1.0), "180° points down: {end:?}");
+    assert_eq!(spokes[1].lines, vec![6, 7, 8, 9]);
+    // Start 2's tick sits half way along the one-lead ruler.
+    let tick = scene.items.iter().filter(|i| i.style == Style::Start && i.pass == Some(1)).nth(2).unwrap();
+    assert!(close(polyline(tick)[0][0], RULER_X + RULER_LEN / 2.0));
+    let tx = texts(&scene);
+    assert!(tx.contains(&("start_angle", "2: 180°".into())) && tx.contains(&("", "2: 1".into())), "{tx:?}");
+    assert!(dims(&scene).contains(&("pitch", "1".into())));
+}
+
+#[test]
+fn packing_keeps_every_item() {
+    let plan = plan_default(O1006, Dialect::Gsk980tdc);
+    let scene = side(&plan);
+    let p = pack(&scene);
+    assert_eq!(p.items.len(), scene.items.len() * STRIDE);
+    let labels = p.labels.split(packed::RECORD_SEP).count();
+    let labelled = scene.items.iter().filter(|i| matches!(i.shape, Shape::Dim { .. } | Shape::Text { .. })).count();
+    assert_eq!(labels, labelled);
+    // The first cut of the first pass: a polyline of 4 numbers with its thread, pass and line.
+    let k = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
+    let rec = &p.items[k * STRIDE..(k + 1) * STRIDE];
+    assert_eq!(rec[0], 0);
+    assert_eq!(rec[1], Style::Cut.code());
+    assert_eq!(&p.coords[rec[2] as usize..(rec[2] + rec[3]) as usize], &[70.0, 23.55, 13.0, 23.55]);
+    assert_eq!((rec[4], rec[5]), (1, 1));
+    assert_eq!(&p.lines[rec[6] as usize..(rec[6] + rec[7]) as usize], &[6]);
+    assert_eq!(
+        Style::ALL.iter().map(|s| s.code()).collect::<Vec<_>>(),
+        (0..Style::ALL.len() as u32).collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn scenes_of_bad_input_are_empty_but_usable() {
+    for text in ["", "G32 Z10\n", "G00 X1e999\n", "\u{0}\u{ffff}", "G02 X10 Z10 R1\n"] {
+        for d in Dialect::ALL {
+            let plan = crate::plan(text, &Settings::new(d));
+            let s = side(&plan);
+            assert!(!s.bounds.is_empty() && s.bounds.width() > 0.0 && s.bounds.height() > 0.0, "{text:?}");
+            assert!(tooth(&plan, 5, 1).is_none() && starts(&plan, 5).is_none());
+        }
+    }
+}
+
+#[test]
+fn arcs_are_tessellated_on_their_circle() {
+    let text = "G00 X40 Z10\nG01 X40 Z0 F0.2\nG02 X60 Z-10 R10\nM30\n";
+    let plan = plan_default(text, Dialect::Gsk980tdc);
+    let arc = plan.moves.iter().find(|m| m.kind == MoveKind::Arc).expect("an arc");
+    let pts = side::arc_points(arc);
+    let c = side::world(arc.arc.unwrap().center);
+    assert!(pts.len() > 10);
+    for p in &pts {
+        let r = ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2)).sqrt();
+        assert!((r - 10.0).abs() < 1e-9, "{p:?}");
+    }
+    assert_eq!(*pts.last().unwrap(), side::world(arc.to));
+}

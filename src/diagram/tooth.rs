@@ -1,0 +1,221 @@
+//! The tooth section: one thread space at large scale. The horizontal axis
+//! is the axial offset from the thread middle, the vertical axis the radial
+//! position from the crest; an external thread's depth grows downward, an
+//! internal thread's upward. It shows the material and the finished
+//! profile (with the neighbouring spaces one pitch away), the tool at every
+//! pass of one start with its depth and shift, the area each pass removes,
+//! the infeed direction, and dimensions of the height and pitch.
+
+use crate::plan::Plan;
+use crate::thread::{Infeed, Pass, Role, Thread};
+
+use super::profile::{Pl, Tool, area};
+use super::scene::{Anchor, Glyph, Item, Label, Pt, Scene, Shape, Style, ViewKind, num};
+
+/// Most depth labels written beside the space; more passes are labelled sparsely.
+pub const MAX_DEPTH_LABELS: usize = 40;
+
+/// The tool of a thread: a V of its tool angle, or for a 0° (square) tool a
+/// flat tip half a pitch wide (the drawing's assumption).
+pub fn tool_of(t: &Thread, pitch: f64) -> Tool {
+    if t.tool_angle > 0.0 && t.tool_angle < 180.0 {
+        Tool { t: (t.tool_angle.to_radians() / 2.0).tan(), flat: 0.0 }
+    } else {
+        Tool { t: 1e-4, flat: pitch / 4.0 }
+    }
+}
+
+/// One pass's area polygons (external orientation), with the surface after it.
+pub struct PassCut {
+    /// Index of the pass in the thread.
+    pub index: usize,
+    /// Region(s) the pass removes.
+    pub regions: Vec<Vec<(f64, f64)>>,
+    /// Total area removed.
+    pub area: f64,
+}
+
+/// The cuts of `passes` (in order) on one space over `[u0, u1]`, and the final surface.
+pub fn cuts(tool: Tool, passes: &[(usize, &Pass)], u0: f64, u1: f64) -> (Vec<PassCut>, Pl) {
+    let mut surface = Pl::flat(u0, u1);
+    let mut out = Vec::with_capacity(passes.len());
+    for &(index, p) in passes {
+        let next = surface.min(&tool.cut(p.depth, p.shift, u0, u1));
+        let regions = surface.regions_above(&next);
+        let a = regions.iter().map(|r| area(r)).sum();
+        out.push(PassCut { index, regions, area: a });
+        surface = next;
+    }
+    (out, surface)
+}
+
+/// Builds the tooth section of thread `ti`, start `start` (1-based).
+pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
+    let t = plan.threads.get(ti)?;
+    let passes: Vec<(usize, &Pass)> = t.passes.iter().enumerate().filter(|(_, p)| p.start == start).collect();
+    if passes.is_empty() {
+        return None;
+    }
+    let max_depth = passes.iter().map(|(_, p)| p.depth).fold(0.0f64, f64::max);
+    let pitch = [t.pitch, t.lead, 1.0].into_iter().find(|v| v.is_finite() && *v > 0.0).unwrap_or(1.0);
+    let h = [t.height, max_depth, 0.6495 * pitch].into_iter().find(|v| v.is_finite() && *v > 0.0).unwrap_or(1.0);
+    let tool = tool_of(t, pitch);
+    let max_shift = passes.iter().map(|(_, p)| p.shift.abs()).filter(|v| v.is_finite()).fold(0.0f64, f64::max);
+    let half = (tool.flat + h * tool.t + max_shift).max(pitch / 2.0);
+    let l = pitch.max(half * 1.15);
+    let (u0, u1) = (-l - pitch, l + pitch);
+    let (cut_list, surface) = cuts(tool, &passes, u0, u1);
+    // Final profile with the neighbouring spaces (same profile a pitch away).
+    let neighbours = surface.min(&surface.shifted(pitch, u0, u1)).min(&surface.shifted(-pitch, u0, u1));
+    let bottom = -h * 1.35 - 0.1 * pitch;
+    let top = 0.35 * h;
+    let flip = if t.internal { -1.0 } else { 1.0 };
+    let pt = |u: f64, w: f64| -> Pt { [u, w * flip] };
+    let mut scene = Scene::new(ViewKind::Tooth);
+    let tl = vec![t.line];
+    let own = |shape: Shape, style: Style| Item::new(shape, style).lines(tl.clone()).of(ti, None);
+    // Material and finished profile over [-l, l].
+    let mut prof: Vec<Pt> = vec![pt(-l, neighbours.at(-l))];
+    prof.extend(neighbours.pts.iter().filter(|p| p.0 > -l && p.0 < l).map(|p| pt(p.0, p.1)));
+    prof.push(pt(l, neighbours.at(l)));
+    let mut material = vec![pt(-l, bottom)];
+    material.extend(prof.iter().copied());
+    material.push(pt(l, bottom));
+    scene.push(own(Shape::Polygon { points: material }, Style::Material), true);
+    scene.push(own(Shape::Polyline { points: vec![pt(0.0, bottom), pt(0.0, top)] }, Style::Axis), true);
+    // Areas, then tools, so every outline stays visible.
+    for c in &cut_list {
+        let p = &t.passes[c.index];
+        for r in &c.regions {
+            let points = r.iter().map(|q| pt(q.0, q.1)).collect();
+            scene.push(
+                Item::new(Shape::Polygon { points }, Style::Area).lines(p.lines.clone()).of(ti, Some(c.index)),
+                true,
+            );
+        }
+    }
+    scene.push(own(Shape::Polyline { points: prof }, Style::Profile), true);
+    let every = passes.len().div_ceil(MAX_DEPTH_LABELS).max(1);
+    let tick = 0.08 * l;
+    for (k, &(index, p)) in passes.iter().enumerate() {
+        let of = |item: Item| item.lines(p.lines.clone()).of(ti, Some(index));
+        let (d, s) = (p.depth, p.shift);
+        let rise = d + top;
+        let edge = vec![
+            pt(s - tool.flat - rise * tool.t, top),
+            pt(s - tool.flat, -d),
+            pt(s + tool.flat, -d),
+            pt(s + tool.flat + rise * tool.t, top),
+        ];
+        scene.push(of(Item::new(Shape::Polyline { points: edge }, Style::Tool)), true);
+        let glyph = if p.role == Role::Rough { Glyph::Dot } else { Glyph::Cross };
+        scene.push(of(Item::new(Shape::Marker { at: pt(s, -d), glyph }, Style::Tool)), true);
+        scene
+            .push(of(Item::new(Shape::Polyline { points: vec![pt(l, -d), pt(l + tick, -d)] }, Style::DepthTick)), true);
+        if k % every == 0 || k + 1 == passes.len() {
+            let key = match p.role {
+                Role::Rough => "pass_depth",
+                Role::Finish => "pass_depth_finish",
+                Role::Spring => "pass_depth_spring",
+            };
+            let label = Label::new(key, format!("{}: {}", p.index, num(d)));
+            let text = Shape::Text { at: pt(l + tick, -d), label, anchor: Anchor::Start, dx: 4.0, dy: 0.0 };
+            scene.push(of(Item::new(text, Style::DepthTick)), false);
+        }
+    }
+    infeed_arrows(&mut scene, t, &passes, tool, h, top, flip, ti);
+    // Dimensions: height at the left, pitch below the material.
+    let dim = |a: Pt, b: Pt, offset: f64, key: &'static str, v: f64| Shape::Dim {
+        a,
+        b,
+        offset: offset * flip,
+        label: Label::new(key, num(v)),
+    };
+    scene.push(own(dim(pt(-l, 0.0), pt(-l, -h), -16.0, "height", h), Style::Dimension), true);
+    scene.push(own(dim(pt(0.0, bottom), pt(pitch, bottom), -16.0, "pitch", pitch), Style::Dimension), true);
+    let angle = Label::new("tool_angle", format!("{}°", num(t.tool_angle)));
+    scene.push(
+        own(Shape::Text { at: pt(-l, top), label: angle, anchor: Anchor::Start, dx: 0.0, dy: 8.0 * flip }, Style::Note),
+        true,
+    );
+    if t.starts > 1 {
+        let label = Label::new("start_of", format!("{start}/{}", t.starts));
+        scene.push(
+            own(Shape::Text { at: pt(l, top), label, anchor: Anchor::End, dx: 0.0, dy: 8.0 * flip }, Style::Note),
+            true,
+        );
+    }
+    if tool.flat > 0.0 {
+        let label = Label::new("square_tool", num(2.0 * tool.flat));
+        scene.push(
+            own(
+                Shape::Text { at: pt(0.0, bottom), label, anchor: Anchor::Middle, dx: 0.0, dy: 22.0 * flip },
+                Style::Note,
+            ),
+            false,
+        );
+    }
+    scene.finish();
+    Some(scene)
+}
+
+/// Arrows above the space showing how the tool feeds in: straight down the
+/// middle, along a flank, or both flanks in turn.
+#[allow(clippy::too_many_arguments)]
+fn infeed_arrows(
+    scene: &mut Scene,
+    t: &Thread,
+    passes: &[(usize, &Pass)],
+    tool: Tool,
+    h: f64,
+    top: f64,
+    flip: f64,
+    ti: usize,
+) {
+    let tip = |p: &Pass| (p.shift, -p.depth);
+    let direction = |ps: &[&Pass]| -> Option<(f64, f64)> {
+        let (a, b) = (ps.first()?, ps.last()?);
+        let (du, dw) = (b.shift - a.shift, -(b.depth - a.depth));
+        (dw < -1e-12 && du.abs() > 1e-9).then_some((du, dw))
+    };
+    let all: Vec<&Pass> = passes.iter().map(|(_, p)| *p).collect();
+    let odd: Vec<&Pass> = all.iter().copied().step_by(2).collect();
+    let even: Vec<&Pass> = all.iter().copied().skip(1).step_by(2).collect();
+    let flank = |side: f64| (side * tool.t, -1.0);
+    let mut arrows: Vec<((f64, f64), (f64, f64))> = Vec::new(); // (through point, direction)
+    let key = match t.infeed {
+        Infeed::Radial => "infeed_radial",
+        Infeed::Left => "infeed_left",
+        Infeed::Right => "infeed_right",
+        Infeed::Alternating => "infeed_alternating",
+        Infeed::Programmed => "infeed_programmed",
+    };
+    match t.infeed {
+        Infeed::Alternating => {
+            for group in [&odd, &even] {
+                if let Some(first) = group.first() {
+                    let d = direction(group).unwrap_or(flank(if first.shift <= 0.0 { 1.0 } else { -1.0 }));
+                    arrows.push((tip(first), d));
+                }
+            }
+        }
+        _ => {
+            if let Some(first) = all.first() {
+                let d = direction(&all).unwrap_or((0.0, -1.0));
+                arrows.push((tip(first), d));
+            }
+        }
+    }
+    let (y0, y1) = (top + 0.55 * h, top + 0.1 * h);
+    for (k, ((pu, pw), (du, dw))) in arrows.into_iter().enumerate() {
+        // Where the line through the first tip along the infeed crosses y0 and y1.
+        let at = |y: f64| -> Pt { [pu + du * (y - pw) / dw, y * flip] };
+        let item = Item::new(Shape::Arrow { from: at(y0), to: at(y1) }, Style::Infeed).lines([t.line]).of(ti, None);
+        scene.push(item, true);
+        if k == 0 {
+            let label = Label::new(key, "");
+            let text = Shape::Text { at: at(y0), label, anchor: Anchor::Middle, dx: 0.0, dy: 8.0 * flip };
+            scene.push(Item::new(text, Style::Infeed).lines([t.line]).of(ti, None), true);
+        }
+    }
+}
