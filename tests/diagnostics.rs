@@ -5,7 +5,7 @@ mod common;
 use common::*;
 use screwcut::{Code, Dialect};
 
-use Dialect::{Fanuc0i as F, Gsk980tdc as G};
+use Dialect::{Fanuc0i as F, Gsk980tdc as G, Renhe as R};
 
 /// (code, dialect, settings, program, line, column, text the message must contain)
 type Case = (Code, Dialect, &'static [&'static str], &'static str, u32, u32, &'static str);
@@ -93,6 +93,24 @@ const CASES: &[Case] = &[
         1,
         "δ1 = 1",
     ),
+    (Code::MissingThreadHeight, G, &[], "G00 X35 Z5\nG78 X27.4 Z-30 Q400 F2\n", 2, 1, "P(k)"),
+    (Code::MissingFirstDepth, G, &[], "G00 X35 Z5\nG78 X27.4 Z-30 P1300 F2\n", 2, 1, "Q(Δd)"),
+    (Code::FaceThreadNotAllowed, G, &[], "G00 X35 Z5\nG78 X60 P1300 Q400 F2\n", 2, 1, "face thread"),
+    (
+        Code::PassLimit,
+        G,
+        &[],
+        "G00 X35 Z5\nG78 P1060 Q0 R0.05 D1\nG78 X27.4 Z-30 P1300 Q1 F2\n",
+        3,
+        1,
+        "1562501 passes",
+    ),
+    (Code::DecimalPointIgnored, G, &[], "G00 X35 Z5\nG78 X27.4 Z-30 P1.3 Q400 F2\n", 2, 16, "0.0013 mm"),
+    (Code::StartInsideThread, G, &[], "G00 X29 Z5\nG78 X27.4 Z-30 P1300 Q400 F2\n", 2, 1, "X30"),
+    (Code::E18_03, R, &[], "G00 X40 Z5\nG00 U-10\nG33 Z-40 F1.5\n", 3, 5, "incremental"),
+    (Code::E18_04, R, &[], "G00 X40 Z5\nG00 U-10\nG33 W-3 F1\n", 3, 5, "4 mm"),
+    (Code::E18_05, R, &[], "G00 X40 Z5\nG33 W-40 F1.5\n", 2, 1, "X feed"),
+    (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
 ];
 
 #[test]

@@ -150,6 +150,14 @@ impl Geometry {
     /// does not run along Z or does not move.
     pub fn new(it: &mut Interp, a: Point, end: Point, i: f64, span: Span, what: &str) -> Option<Geometry> {
         let root_start = Point::new(end.x + 2.0 * i, a.z);
+        if (end.z - a.z).abs() < EPS {
+            it.diag(
+                Code::FaceThreadNotAllowed,
+                span,
+                format!("{what} cuts straight and taper threads along Z only: the end Z is the start Z, which would be a face thread (use G32)"),
+            );
+            return None;
+        }
         match classify(root_start, end) {
             None => {
                 it.diag(
