@@ -1,0 +1,19 @@
+O0032 (G32: two-start thread by start angle Q, lead 4, pitch 2)
+G00 X45 Z5
+X39.4
+G32 Z-30 F4 Q0
+G00 X45
+Z5
+X39.4
+G32 Z-30 F4 Q180000
+G00 X45
+Z5
+X38.8
+G32 Z-30 F4 Q0
+G00 X45
+Z5
+X38.8
+G32 Z-30 F4 Q180000
+G00 X45
+Z5
+M30
