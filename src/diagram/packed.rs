@@ -12,6 +12,8 @@
 
 use serde::Serialize;
 
+use crate::thread::Role;
+
 use super::scene::{Anchor, Glyph, Item, Rect, Scene, Shape, ViewKind};
 
 /// Number of `u32`s per item.
@@ -85,7 +87,12 @@ pub fn pack(scene: &Scene) -> Packed {
 fn push_item(p: &mut Packed, item: &Item, label_count: &mut u32) {
     let start = p.coords.len() as u32;
     let mut label = 0u32;
-    let mut extra = 0u32;
+    let mut extra = match item.role {
+        None => 0,
+        Some(Role::Rough) => 1,
+        Some(Role::Finish) => 2,
+        Some(Role::Spring) => 3,
+    };
     let mut add_label = |p: &mut Packed, key: &str, value: &str| {
         if *label_count > 0 {
             p.labels.push(RECORD_SEP);

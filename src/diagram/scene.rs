@@ -6,6 +6,8 @@
 
 use serde::Serialize;
 
+use crate::thread::Role;
+
 /// A point in world coordinates: `[horizontal, vertical]`.
 pub type Pt = [f64; 2];
 
@@ -329,12 +331,15 @@ pub struct Item {
     /// Index of the pass in its thread's `passes`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pass: Option<u32>,
+    /// What the pass does, for items of a pass (finishing and spring passes are marked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub role: Option<Role>,
 }
 
 impl Item {
     /// An item with no source attached.
     pub fn new(shape: Shape, style: Style) -> Item {
-        Item { shape, style, lines: Vec::new(), thread: None, pass: None }
+        Item { shape, style, lines: Vec::new(), thread: None, pass: None, role: None }
     }
 
     /// Attaches source lines.
@@ -347,6 +352,12 @@ impl Item {
     pub fn of(mut self, thread: usize, pass: Option<usize>) -> Item {
         self.thread = Some(thread as u32);
         self.pass = pass.map(|p| p as u32);
+        self
+    }
+
+    /// Marks the item with the role of its pass.
+    pub fn role(mut self, role: Role) -> Item {
+        self.role = Some(role);
         self
     }
 

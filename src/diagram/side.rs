@@ -242,7 +242,8 @@ pub fn side(plan: &Plan) -> Scene {
                 mid.push((
                     Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut)
                         .lines(p.lines.clone())
-                        .of(ti, Some(pi)),
+                        .of(ti, Some(pi))
+                        .role(p.role),
                     true,
                 ));
             }
@@ -308,7 +309,8 @@ fn pass_items(plan: &Plan, p: &PassPath, out: &mut Vec<(Item, bool)>) {
         } else {
             line(world(m.from), world(m.to))
         };
-        out.push((Item::new(shape, style).lines([m.line]).of(p.thread, Some(p.pass)), style != Style::Rapid));
+        let item = Item::new(shape, style).lines([m.line]).of(p.thread, Some(p.pass)).role(pass.role);
+        out.push((item, style != Style::Rapid));
     }
     let mark = |at: Point| Item::new(Shape::Marker { at: world(at), glyph: Glyph::Bar }, Style::Runout);
     if pass.runout_to.is_some() {

@@ -1,13 +1,368 @@
 //! Building, bundling and serving the web app.
+//!
+//! The site is: `index.html` and the other files of `www/static/`, `app.js`
+//! (the front end bundled by esbuild, with the wasm-bindgen glue),
+//! `screwcut_bg.wasm` (the core, optimised by wasm-opt when it is on PATH)
+//! and `examples/` (every file listed in `examples/index.json`).
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::Command;
 
 use crate::Result;
+use crate::install::{ensure_chromium, ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, have, root, run};
 
-/// `cargo xtask serve`.
-pub fn serve(_args: &[String]) -> Result {
-    Err("serve: not built yet".into())
+/// Default port of `cargo xtask serve`.
+pub const DEFAULT_PORT: u16 = 8080;
+
+/// `cargo xtask serve [--port N]`: builds the site (release wasm) and serves it on 127.0.0.1.
+pub fn serve(args: &[String]) -> Result {
+    let mut port = DEFAULT_PORT;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--port" | "-p" => {
+                let v = it.next().ok_or("--port needs a number")?;
+                port = v.parse().map_err(|_| format!("--port: '{v}' is not a port number"))?;
+            }
+            s if s.starts_with("--port=") => {
+                let v = &s["--port=".len()..];
+                port = v.parse().map_err(|_| format!("--port: '{v}' is not a port number"))?;
+            }
+            other => return Err(format!("serve: unknown option '{other}' (usage: cargo xtask serve [--port N])")),
+        }
+    }
+    let out = target_dir()?.join("site");
+    build_site(true, &out)?;
+    let listener =
+        TcpListener::bind(("127.0.0.1", port)).map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
+    eprintln!("serving {} on http://127.0.0.1:{port}/ (Ctrl-C to stop)", out.display());
+    serve_forever(listener, out);
+    Ok(())
 }
 
-/// `cargo xtask dist`.
-pub fn dist(_args: &[String]) -> Result {
-    Err("dist: not built yet".into())
+/// `cargo xtask dist`: writes the deployable static site to `dist/`.
+pub fn dist(args: &[String]) -> Result {
+    if let Some(a) = args.first() {
+        return Err(format!("dist: unknown option '{a}' (usage: cargo xtask dist)"));
+    }
+    let out = root().join("dist");
+    build_site(true, &out)?;
+    eprintln!("wrote the site to {}", out.display());
+    Ok(())
+}
+
+/// Builds the site, serves it on a free local port and runs the Playwright
+/// test in `tests/browser/` against it with the system Chromium; fails when
+/// the test fails.
+#[allow(dead_code)]
+pub fn browser_tests() -> Result {
+    ensure_chromium()?;
+    let out = target_dir()?.join("site-test");
+    build_site(true, &out)?;
+    let dir = root().join("tests").join("browser");
+    ensure_npm(&dir)?;
+    let listener = TcpListener::bind(("127.0.0.1", 0)).map_err(|e| format!("cannot listen on 127.0.0.1: {e}"))?;
+    let port = listener.local_addr().map_err(|e| e.to_string())?.port();
+    std::thread::spawn(move || serve_forever(listener, out));
+    let url = format!("http://127.0.0.1:{port}/");
+    run("node", &["test.mjs", &url], Some(&dir))
+}
+
+/// Builds the site into `out` (emptied first): wasm (release or debug),
+/// wasm-bindgen glue, wasm-opt when available, the esbuild bundle, static
+/// files and examples.
+pub fn build_site(release: bool, out: &Path) -> Result {
+    ensure_wasm_target()?;
+    ensure_wasm_bindgen()?;
+    let root = root();
+    let www = root.join("www");
+    let mut args = vec!["build", "--package", "screwcut", "--lib", "--target", "wasm32-unknown-unknown"];
+    if release {
+        args.push("--release");
+    }
+    run("cargo", &args, None)?;
+    let profile = if release { "release" } else { "debug" };
+    let wasm = target_dir()?.join("wasm32-unknown-unknown").join(profile).join("screwcut.wasm");
+    let pkg = www.join("pkg");
+    run(
+        "wasm-bindgen",
+        &["--target", "web", "--no-typescript", "--out-dir", &path_str(&pkg)?, &path_str(&wasm)?],
+        None,
+    )?;
+    let bg = pkg.join("screwcut_bg.wasm");
+    if release {
+        optimise(&bg)?;
+    }
+    ensure_npm(&www)?;
+    if out.exists() {
+        std::fs::remove_dir_all(out).map_err(|e| format!("cannot empty {}: {e}", out.display()))?;
+    }
+    std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let esbuild = www.join("node_modules").join(".bin").join("esbuild");
+    let outfile = format!("--outfile={}", path_str(&out.join("app.js"))?);
+    let mut args = vec!["src/main.js", "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];
+    if release {
+        args.push("--minify");
+    } else {
+        args.push("--sourcemap");
+    }
+    run(&path_str(&esbuild)?, &args, Some(&www))?;
+    copy(&bg, &out.join("screwcut_bg.wasm"))?;
+    let statics = www.join("static");
+    for entry in std::fs::read_dir(&statics).map_err(|e| format!("{}: {e}", statics.display()))? {
+        let entry = entry.map_err(|e| e.to_string())?;
+        if entry.path().is_file() {
+            copy(&entry.path(), &out.join(entry.file_name()))?;
+        }
+    }
+    let examples = root.join("examples");
+    let index = read(&examples.join("index.json"))?;
+    for file in example_files(&index)? {
+        copy(&examples.join(&file), &out.join("examples").join(&file))?;
+    }
+    copy(&examples.join("index.json"), &out.join("examples").join("index.json"))?;
+    let size = std::fs::metadata(out.join("screwcut_bg.wasm")).map(|m| m.len()).unwrap_or(0);
+    eprintln!("site: {} (wasm {} KiB)", out.display(), size / 1024);
+    Ok(())
+}
+
+/// Runs `wasm-opt -Oz` on `wasm` in place when wasm-opt is on PATH, and
+/// keeps the result only if the wasm-bindgen glue still loads it and plans
+/// with it (old binaryen releases break the externref table).
+fn optimise(wasm: &Path) -> Result {
+    if !have("wasm-opt") {
+        eprintln!("note: wasm-opt is not on PATH, the wasm is not size-optimised (apt-get install binaryen)");
+        return Ok(());
+    }
+    let tmp = wasm.with_extension("opt.wasm");
+    let features = [
+        "--enable-bulk-memory",
+        "--enable-nontrapping-float-to-int",
+        "--enable-sign-ext",
+        "--enable-mutable-globals",
+        "--enable-reference-types",
+        "--enable-multivalue",
+    ];
+    let (w, t) = (path_str(wasm)?, path_str(&tmp)?);
+    let mut args = vec!["-Oz"];
+    args.extend(features);
+    args.extend([w.as_str(), "-o", t.as_str()]);
+    let outcome = run("wasm-opt", &args, None).and_then(|()| smoke_test(&tmp));
+    match outcome {
+        Ok(()) => std::fs::rename(&tmp, wasm).map_err(|e| format!("{}: {e}", wasm.display())),
+        Err(e) => {
+            eprintln!("note: {e}; keeping the wasm as wasm-bindgen wrote it");
+            let _ = std::fs::remove_file(&tmp);
+            Ok(())
+        }
+    }
+}
+
+/// Loads `wasm` with the wasm-bindgen glue beside it in Node and plans a thread.
+fn smoke_test(wasm: &Path) -> Result {
+    let glue = wasm.with_file_name("screwcut.js");
+    let script = format!(
+        "import fs from 'node:fs';\
+         const m = await import({glue:?});\
+         m.initSync({{ module: fs.readFileSync({wasm:?}) }});\
+         const r = m.update('G00 X58 Z70\\nX47.1\\nG32 Z13 F2\\nG00 X58\\nZ70\\n', 'gsk980tdc', '', 0, 1);\
+         if (r.threads.length !== 1 || r.side.items.length === 0) throw new Error('the optimised wasm plans wrongly');",
+        glue = format!("file://{}", path_str(&glue)?),
+        wasm = path_str(wasm)?,
+    );
+    let out = Command::new("node")
+        .args(["--input-type=module", "-e", &script])
+        .output()
+        .map_err(|e| format!("cannot run node: {e}"))?;
+    if out.status.success() {
+        Ok(())
+    } else {
+        let msg = String::from_utf8_lossy(&out.stderr);
+        let first = msg.lines().find(|l| l.contains("Error")).unwrap_or("failed").trim().to_string();
+        Err(format!("the wasm-opt output does not load ({first})"))
+    }
+}
+
+/// The `file` entries of `examples/index.json`, checked to be plain file names.
+fn example_files(index: &str) -> Result<Vec<String>> {
+    let mut files = Vec::new();
+    let mut rest = index;
+    while let Some(at) = rest.find("\"file\"") {
+        rest = &rest[at + 6..];
+        let open = rest.find('"').ok_or("examples/index.json: a \"file\" without a value")?;
+        let value = &rest[open + 1..];
+        let close = value.find('"').ok_or("examples/index.json: unterminated file name")?;
+        let name = &value[..close];
+        if name.is_empty() || name.contains(['/', '\\']) || name.starts_with('.') {
+            return Err(format!("examples/index.json: '{name}' is not a plain file name"));
+        }
+        files.push(name.to_string());
+        rest = &value[close + 1..];
+    }
+    if files.is_empty() {
+        return Err("examples/index.json lists no files".into());
+    }
+    Ok(files)
+}
+
+/// Cargo's target directory: `CARGO_TARGET_DIR`, else what `cargo metadata` says.
+fn target_dir() -> Result<PathBuf> {
+    if let Some(dir) = std::env::var_os("CARGO_TARGET_DIR").filter(|d| !d.is_empty()) {
+        let dir = PathBuf::from(dir);
+        return Ok(if dir.is_absolute() { dir } else { root().join(dir) });
+    }
+    let out = Command::new("cargo")
+        .args(["metadata", "--format-version", "1", "--no-deps"])
+        .current_dir(root())
+        .output()
+        .map_err(|e| format!("cannot run cargo metadata: {e}"))?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let key = "\"target_directory\":\"";
+    let at = text.find(key).ok_or("cargo metadata gave no target_directory")? + key.len();
+    let end = text[at..].find('"').ok_or("cargo metadata: bad target_directory")?;
+    Ok(PathBuf::from(text[at..at + end].replace("\\\\", "\\")))
+}
+
+fn path_str(p: &Path) -> Result<String> {
+    p.to_str().map(str::to_string).ok_or_else(|| format!("path is not UTF-8: {}", p.display()))
+}
+
+fn read(p: &Path) -> Result<String> {
+    std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))
+}
+
+fn copy(from: &Path, to: &Path) -> Result {
+    std::fs::copy(from, to).map(|_| ()).map_err(|e| format!("cannot copy {} to {}: {e}", from.display(), to.display()))
+}
+
+/// The MIME type of a file by its extension.
+pub fn mime(path: &Path) -> &'static str {
+    match path.extension().and_then(|e| e.to_str()).unwrap_or("") {
+        "html" => "text/html; charset=utf-8",
+        "js" | "mjs" => "text/javascript; charset=utf-8",
+        "css" => "text/css; charset=utf-8",
+        "wasm" => "application/wasm",
+        "json" | "map" => "application/json; charset=utf-8",
+        "svg" => "image/svg+xml",
+        "png" => "image/png",
+        "ico" => "image/x-icon",
+        "nc" | "txt" => "text/plain; charset=utf-8",
+        _ => "application/octet-stream",
+    }
+}
+
+/// Serves the files under `dir` on `listener` until the process ends.
+fn serve_forever(listener: TcpListener, dir: PathBuf) {
+    for stream in listener.incoming().flatten() {
+        let dir = dir.clone();
+        std::thread::spawn(move || {
+            let _ = respond(stream, &dir);
+        });
+    }
+}
+
+/// The file a request path names under `dir`, if it is inside it.
+pub fn resolve(dir: &Path, target: &str) -> Option<PathBuf> {
+    let path = target.split(['?', '#']).next().unwrap_or("/");
+    let decoded = percent_decode(path)?;
+    let mut file = dir.to_path_buf();
+    for part in decoded.split('/').filter(|p| !p.is_empty()) {
+        if part == ".." || part == "." || part.contains('\\') {
+            return None;
+        }
+        file.push(part);
+    }
+    if decoded.ends_with('/') || file == dir {
+        file.push("index.html");
+    }
+    Some(file)
+}
+
+fn percent_decode(s: &str) -> Option<String> {
+    let b = s.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == b'%' {
+            let hex = std::str::from_utf8(b.get(i + 1..i + 3)?).ok()?;
+            out.push(u8::from_str_radix(hex, 16).ok()?);
+            i += 3;
+        } else {
+            out.push(b[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).ok()
+}
+
+fn respond(stream: TcpStream, dir: &Path) -> std::io::Result<()> {
+    let mut reader = BufReader::new(stream.try_clone()?);
+    let mut request = String::new();
+    reader.by_ref().take(8192).read_line(&mut request)?;
+    // Skip the headers.
+    let mut header = String::new();
+    while reader.by_ref().take(8192).read_line(&mut header)? > 2 {
+        header.clear();
+    }
+    let mut parts = request.split_whitespace();
+    let (method, target) = (parts.next().unwrap_or(""), parts.next().unwrap_or("/"));
+    let mut stream = stream;
+    if method != "GET" && method != "HEAD" {
+        return write_response(&mut stream, "405 Method Not Allowed", "text/plain", b"method not allowed\n", false);
+    }
+    let head = method == "HEAD";
+    match resolve(dir, target).and_then(|f| std::fs::read(&f).ok().map(|body| (f, body))) {
+        Some((file, body)) => write_response(&mut stream, "200 OK", mime(&file), &body, head),
+        None => write_response(&mut stream, "404 Not Found", "text/plain", b"not found\n", head),
+    }
+}
+
+fn write_response(stream: &mut TcpStream, status: &str, mime: &str, body: &[u8], head: bool) -> std::io::Result<()> {
+    let header = format!(
+        "HTTP/1.1 {status}\r\nContent-Type: {mime}\r\nContent-Length: {}\r\nCache-Control: no-cache\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n",
+        body.len()
+    );
+    stream.write_all(header.as_bytes())?;
+    if !head {
+        stream.write_all(body)?;
+    }
+    stream.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths_resolve_inside_the_site_only() {
+        let d = Path::new("/site");
+        assert_eq!(resolve(d, "/"), Some(PathBuf::from("/site/index.html")));
+        assert_eq!(resolve(d, "/?x=1#frag"), Some(PathBuf::from("/site/index.html")));
+        assert_eq!(resolve(d, "/examples/o1006.nc"), Some(PathBuf::from("/site/examples/o1006.nc")));
+        assert_eq!(resolve(d, "/a%20b.js"), Some(PathBuf::from("/site/a b.js")));
+        assert_eq!(resolve(d, "/../etc/passwd"), None);
+        assert_eq!(resolve(d, "/%2e%2e/etc/passwd"), None);
+        assert_eq!(resolve(d, "/bad%zz"), None);
+    }
+
+    #[test]
+    fn mime_types() {
+        assert_eq!(mime(Path::new("a/screwcut_bg.wasm")), "application/wasm");
+        assert_eq!(mime(Path::new("app.js")), "text/javascript; charset=utf-8");
+        assert_eq!(mime(Path::new("index.html")), "text/html; charset=utf-8");
+        assert_eq!(mime(Path::new("examples/index.json")), "application/json; charset=utf-8");
+        assert_eq!(mime(Path::new("LICENSE")), "application/octet-stream");
+    }
+
+    #[test]
+    fn example_files_are_read_from_the_index() {
+        let index = r#"[{"file": "o1006.nc", "dialect": "gsk980tdc"}, {"file":"b.nc"}]"#;
+        assert_eq!(example_files(index).unwrap(), vec!["o1006.nc", "b.nc"]);
+        assert!(example_files(r#"[{"file": "../x"}]"#).is_err());
+        assert!(example_files("[]").is_err());
+        let real = read(&root().join("examples").join("index.json")).unwrap();
+        assert!(example_files(&real).unwrap().contains(&"o1006.nc".to_string()));
+    }
 }

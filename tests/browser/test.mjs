@@ -1,0 +1,253 @@
+// Browser test of the screwcut site: node test.mjs http://127.0.0.1:PORT/
+//
+// Drives the system Chromium (/usr/bin/chromium) with playwright-core: loads
+// the page, waits for the default example (O1006) to draw, checks the pass
+// table, the canvases (pixels), typing a sixth pass, reload persistence, an
+// alarm in the diagnostics list with line:column, the language switch, SVG
+// and PNG export, and that no console or page error happened. Measures the
+// edit-to-frame time on a 5,000-line program and the cost of moving a scene
+// across the wasm boundary as typed arrays, objects or JSON (printed, not
+// asserted). Screenshots go to tests/browser/screenshots/.
+
+import { chromium } from 'playwright-core';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+
+const url = process.argv[2];
+if (!url) {
+  console.error('usage: node test.mjs http://127.0.0.1:PORT/');
+  process.exit(2);
+}
+const here = path.dirname(fileURLToPath(import.meta.url));
+const shots = path.join(here, 'screenshots');
+fs.mkdirSync(shots, { recursive: true });
+
+let passed = 0;
+let failed = 0;
+function check(name, ok, detail = '') {
+  if (ok) {
+    passed++;
+    console.log(`ok   ${name}`);
+  } else {
+    failed++;
+    console.log(`FAIL ${name}${detail ? `: ${detail}` : ''}`);
+  }
+}
+
+/** A 5,000-line program: O1006-style passes on many threads. */
+function bigProgram(lines = 5000) {
+  const out = ['O2000;', 'G50 X100 Z100;', 'S300 M03 T0101;'];
+  let k = 0;
+  while (out.length < lines - 1) {
+    const z0 = 70 + (k % 40) * 80;
+    out.push(`G00 X58 Z${z0};`);
+    for (const x of [47.1, 46.5, 45.9, 45.5, 45.4]) out.push(`X${x};`, `G32 Z${z0 - 57} F2;`, 'G00 X58;', `Z${z0};`);
+    k++;
+  }
+  out.length = lines - 1;
+  out.push('M30;');
+  return out.join('\n') + '\n';
+}
+
+function fragment(state) {
+  const z = zlib.deflateRawSync(Buffer.from(JSON.stringify(state)), { level: 9 });
+  return '#z=' + z.toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+const median = (a) => {
+  const s = [...a].sort((x, y) => x - y);
+  return s.length ? s[Math.floor(s.length / 2)] : NaN;
+};
+
+const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-chromium-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  acceptDownloads: true,
+  viewport: { width: 1400, height: 900 },
+  args: [
+    '--headless',
+    '--no-sandbox',
+    '--disable-gpu',
+    '--disable-quic',
+    '--no-first-run',
+    '--disable-background-networking',
+    '--disable-component-update',
+    '--disable-sync',
+  ],
+});
+const guard = setTimeout(() => {
+  console.log('FAIL the test took longer than 180 s');
+  process.exit(1);
+}, 180_000);
+
+const problems = [];
+const page = context.pages()[0] || (await context.newPage());
+page.on('console', (m) => {
+  if (m.type() === 'error') problems.push(`console: ${m.text()}`);
+});
+page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+
+const rows = () => page.locator('#passes tbody tr').count();
+const ready = () => page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+
+/** Counts pixels that are not background in a canvas. */
+const inked = (id) =>
+  page.evaluate((id) => {
+    const c = document.getElementById(id);
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 235 || d[i + 1] < 235 || d[i + 2] < 235)) n++;
+    return { n, w: c.width, h: c.height };
+  }, id);
+
+try {
+  // ---- load: the default example draws ----
+  await page.goto(url);
+  await ready();
+  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr').length > 0);
+  check('O1006 loads by default with 5 passes', (await rows()) === 5, `${await rows()} rows`);
+  const firstX = await page.locator('#passes tbody tr:first-child td:nth-child(3)').textContent();
+  check('first pass at X47.1', firstX === '47.1', firstX);
+  for (const id of ['side', 'tooth', 'starts']) {
+    const px = await inked(id);
+    check(`${id} canvas is drawn (${px.n} inked pixels of ${px.w}×${px.h})`, px.n > 500 && px.w > 100 && px.h > 100);
+  }
+  await page.screenshot({ path: path.join(shots, '1-o1006.png') });
+
+  // ---- edit: type a sixth pass after N200 ----
+  await page.locator('.cm-line', { hasText: 'N200 G32' }).click();
+  await page.keyboard.press('End');
+  await page.keyboard.type('\nN201 G00 X58.0;\nN202 Z70.0;\nN203 X45.3;\nN204 G32 Z13.0 F2.0;', { delay: 5 });
+  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr').length === 6, null, { timeout: 10_000 }).catch(() => {});
+  check('typing a sixth pass grows the table to 6 rows', (await rows()) === 6, `${await rows()} rows`);
+  const lastX = await page.locator('#passes tbody tr:last-child td:nth-child(3)').textContent();
+  check('sixth pass at X45.3', lastX === '45.3', lastX);
+  await page.screenshot({ path: path.join(shots, '2-six-passes.png') });
+
+  // Hovering a table row marks its source lines in the editor.
+  await page.locator('#passes tbody tr:last-child').hover();
+  const marked = await page.locator('.cm-line.cm-marked').allTextContents();
+  check('hovering pass 6 marks its lines', marked.some((t) => t.includes('N204 G32')), JSON.stringify(marked));
+  await page.mouse.move(5, 5);
+
+  // ---- reload: the program survives ----
+  await page.waitForTimeout(600);
+  await page.reload();
+  await ready();
+  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr').length > 0);
+  check('the edited program survives a reload', (await rows()) === 6, `${await rows()} rows`);
+
+  // ---- an alarm: listed with line:column, drawing kept greyed ----
+  await page.locator('.cm-line', { hasText: 'N203 X45.3' }).click();
+  await page.keyboard.press('End');
+  await page.keyboard.press('ArrowLeft'); // before the ';' that ends the block
+  await page.keyboard.type(' X1.2.3');
+  await page.waitForSelector('#diagnostics li.error', { timeout: 10_000 }).catch(() => {});
+  const errors = await page.locator('#diagnostics li.error').allTextContents();
+  check('a malformed number is an alarm in the list', errors.length > 0, JSON.stringify(errors));
+  const pos = errors.length ? await page.locator('#diagnostics li.error .pos').first().textContent() : '';
+  check('the alarm gives line:column 25:13', pos === '25:13', pos);
+  check('the editor underlines it', (await page.locator('.cm-lintRange-error').count()) > 0);
+  check('the stale banner shows', await page.locator('#stale').isVisible());
+  const greyed = await inked('side');
+  check('the last good drawing stays visible', greyed.n > 300, `${greyed.n} pixels`);
+  await page.screenshot({ path: path.join(shots, '3-alarm.png') });
+  for (let i = 0; i < 7; i++) await page.keyboard.press('Backspace');
+  await page.waitForFunction(() => !document.querySelector('#diagnostics li.error'), null, { timeout: 10_000 }).catch(() => {});
+  check('removing it clears the alarm', (await page.locator('#diagnostics li.error').count()) === 0);
+
+  // ---- language, export ----
+  await page.click('#lang');
+  const head = await page.locator('#passes thead').textContent();
+  check('Chinese labels', head.includes('切深'), head);
+  await page.click('#lang');
+  const [svg] = await Promise.all([page.waitForEvent('download'), page.click('#side-panel [data-act="svg"]')]);
+  const svgText = fs.readFileSync(await svg.path(), 'utf8');
+  check('side view exports as SVG', svgText.startsWith('<?xml') && (svgText.match(/<path /g) || []).length > 20, svgText.slice(0, 80));
+  const [png] = await Promise.all([page.waitForEvent('download'), page.click('#tooth-panel [data-act="png"]')]);
+  const pngBytes = fs.readFileSync(await png.path());
+  check('tooth view exports as PNG', pngBytes.length > 1000 && pngBytes.subarray(1, 4).toString() === 'PNG', `${pngBytes.length} bytes`);
+
+  // ---- every example plans without an alarm from the page ----
+  const examples = await page.evaluate(async () => (await fetch('examples/index.json')).json());
+  check(`examples/index.json lists ${examples.length} examples`, examples.length >= 2);
+
+  // ---- 5,000 lines: edit-to-frame ----
+  const big = bigProgram(5000);
+  await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: {}, program: big }));
+  await page.reload();
+  await ready();
+  await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 30_000 });
+  const lines = await page.evaluate(() => window.__screwcut.updates.at(-1).lines);
+  check('the 5,000-line program is loaded from a link', lines >= 5000, `${lines} lines`);
+  await page.locator('.cm-line', { hasText: 'G50 X100 Z100' }).click();
+  await page.keyboard.press('End');
+  await page.evaluate(() => {
+    window.__screwcut.frames.length = 0;
+    window.__screwcut.updates.length = 0;
+  });
+  for (const ch of ' (edit-to-frame)') {
+    await page.keyboard.type(ch);
+    await page.waitForTimeout(40);
+  }
+  await page.waitForTimeout(200);
+  const m = await page.evaluate(() => ({ frames: window.__screwcut.frames, updates: window.__screwcut.updates }));
+  check('every keystroke re-planned', m.updates.length >= 16 && m.frames.length >= 16, `${m.updates.length} updates, ${m.frames.length} frames`);
+  const fmt = (v) => v.toFixed(1);
+  console.log(
+    `edit-to-frame, ${lines} lines, ${m.frames.length} keystrokes: median ${fmt(median(m.frames.map((f) => f.frame)))} ms to the next frame, ` +
+      `${fmt(median(m.frames.map((f) => f.drawn)))} ms to drawn (max ${fmt(Math.max(...m.frames.map((f) => f.drawn)))}); ` +
+      `plan+transfer ${fmt(median(m.updates.map((u) => u.plan)))} ms, lists+draw ${fmt(median(m.updates.map((u) => u.draw)))} ms`,
+  );
+  const part = (k) => fmt(median(m.updates.map((u) => u[k] || 0)));
+  console.log(`  parts: lint ${part('lint')} ms, lists ${part('lists')} ms, views ${part('views')} ms, highlight ${part('highlight')} ms`);
+  await page.screenshot({ path: path.join(shots, '4-5000-lines.png') });
+
+  // ---- transfer: typed arrays vs serde-wasm-bindgen objects vs JSON ----
+  const tr = await page.evaluate(() => {
+    const core = window.__screwcut.core;
+    const time = (f, n = 15) => {
+      f();
+      const t0 = performance.now();
+      for (let i = 0; i < n; i++) f();
+      return (performance.now() - t0) / n;
+    };
+    const walk = (s) => {
+      // Touch every number once, as a renderer would.
+      let sum = 0;
+      if (s.coords) for (let i = 0; i < s.coords.length; i++) sum += s.coords[i];
+      else for (const it of s.items) for (const v of Object.values(it.shape)) if (Array.isArray(v)) for (const p of v) sum += Array.isArray(p) ? p[0] + p[1] : p;
+      return sum;
+    };
+    const items = core.side_scene_as('packed').items.length / 10;
+    return {
+      items,
+      packed: time(() => walk(core.side_scene_as('packed'))),
+      objects: time(() => walk(core.side_scene_as('objects'))),
+      json: time(() => walk(JSON.parse(core.side_scene_as('json')))),
+      threadsObjects: time(() => core.threads_as('objects')),
+      threadsJson: time(() => JSON.parse(core.threads_as('json'))),
+    };
+  });
+  console.log(
+    `side scene of ${tr.items} items (build + transfer + read): typed arrays ${fmt(tr.packed)} ms, serde-wasm-bindgen objects ${fmt(tr.objects)} ms, JSON ${fmt(tr.json)} ms; ` +
+      `all threads with passes: serde-wasm-bindgen ${fmt(tr.threadsObjects)} ms, JSON ${fmt(tr.threadsJson)} ms`,
+  );
+
+  // ---- no errors ----
+  const probeErrors = await page.evaluate(() => window.__screwcut.errors);
+  check('no console or page errors', problems.length === 0 && probeErrors.length === 0, JSON.stringify([...problems, ...probeErrors]));
+} catch (e) {
+  check('the test ran to the end', false, e && e.stack ? e.stack : String(e));
+} finally {
+  clearTimeout(guard);
+  await context.close();
+  fs.rmSync(userDataDir, { recursive: true, force: true });
+}
+
+console.log(`browser: ${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);

@@ -1,0 +1,110 @@
+// The code pane: CodeMirror 6 with line numbers, undo/redo, G-code
+// highlighting, diagnostics as underlines and gutter markers (message on
+// hover), and highlighted lines for what the pointer is over in a drawing.
+
+import { EditorState, StateEffect, StateField, RangeSetBuilder } from '@codemirror/state';
+import {
+  EditorView,
+  Decoration,
+  keymap,
+  lineNumbers,
+  highlightActiveLine,
+  highlightActiveLineGutter,
+  drawSelection,
+} from '@codemirror/view';
+import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
+import { setDiagnostics, lintGutter, lintKeymap } from '@codemirror/lint';
+import { gcode } from './gcode.js';
+
+const setMarked = StateEffect.define();
+const markLine = Decoration.line({ class: 'cm-marked' });
+
+/** Lines marked from the drawings (hover, table rows). */
+const marked = StateField.define({
+  create: () => Decoration.none,
+  update(deco, tr) {
+    for (const e of tr.effects) if (e.is(setMarked)) return e.value;
+    return deco.map(tr.changes);
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
+
+/**
+ * Creates the editor in `parent`.
+ * onChange(text) runs on every document change; onCursor(line) when the
+ * cursor moves to another line.
+ */
+export function createEditor(parent, { doc, onChange, onCursor }) {
+  let lastLine = -1;
+  const view = new EditorView({
+    parent,
+    state: EditorState.create({
+      doc,
+      extensions: [
+        lineNumbers(),
+        highlightActiveLineGutter(),
+        history(),
+        drawSelection(),
+        highlightActiveLine(),
+        gcode(),
+        lintGutter(),
+        marked,
+        keymap.of([...defaultKeymap, ...historyKeymap, ...lintKeymap]),
+        EditorView.updateListener.of((u) => {
+          if (u.docChanged) onChange(u.state.doc.toString());
+          if (u.selectionSet || u.docChanged) {
+            const line = u.state.doc.lineAt(u.state.selection.main.head).number;
+            if (line !== lastLine || u.docChanged) {
+              lastLine = line;
+              // After this update: the handler may dispatch (line marks, diagnostics).
+              queueMicrotask(() => onCursor(line));
+            }
+          }
+        }),
+        EditorView.theme({
+          '&': { height: '100%' },
+          '.cm-scroller': { fontFamily: 'ui-monospace, "Cascadia Mono", "Noto Sans Mono CJK SC", Menlo, monospace' },
+        }),
+      ],
+    }),
+  });
+
+  return {
+    view,
+    text: () => view.state.doc.toString(),
+    /** Replaces the whole program (one undoable change). */
+    setText(text) {
+      view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+    },
+    /** Shows the plan's diagnostics (UTF-16 `from`/`to` as computed by the core). */
+    setDiagnostics(list) {
+      const len = view.state.doc.length;
+      const diags = list.map((d) => {
+        const from = Math.min(d.from, len);
+        const to = Math.min(Math.max(d.to, from), len);
+        return { from, to, severity: d.severity === 'error' ? 'error' : d.severity, message: d.message, source: d.code };
+      });
+      view.dispatch(setDiagnostics(view.state, diags));
+    },
+    /** Marks 1-based `lines` (an iterable), replacing the previous marks. */
+    markLines(lines) {
+      const doc = view.state.doc;
+      const sorted = [...new Set(lines)].filter((l) => l >= 1 && l <= doc.lines).sort((a, b) => a - b);
+      const b = new RangeSetBuilder();
+      for (const l of sorted) {
+        const line = doc.line(l);
+        b.add(line.from, line.from, markLine);
+      }
+      view.dispatch({ effects: setMarked.of(b.finish()) });
+    },
+    /** Moves the cursor to `line`:`column` (1-based) and scrolls it into view. */
+    goto(line, column = 1) {
+      const doc = view.state.doc;
+      const l = doc.line(Math.max(1, Math.min(line, doc.lines)));
+      const pos = Math.min(l.from + Math.max(0, column - 1), l.to);
+      view.dispatch({ selection: { anchor: pos }, scrollIntoView: true });
+      view.focus();
+    },
+    cursorLine: () => view.state.doc.lineAt(view.state.selection.main.head).number,
+  };
+}

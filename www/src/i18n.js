@@ -1,0 +1,182 @@
+// English and Chinese labels: the page's own text (data-i18n attributes and
+// t()) and the scene labels (keys from src/diagram with a value put in).
+
+const EN = {
+  title: 'screwcut — lathe thread G-code previewer',
+  dialect: 'Controller',
+  examples: 'Examples',
+  example_pick: 'Open an example…',
+  settings: 'Parameters',
+  reset: 'Reset to defaults',
+  share: 'Copy link',
+  shared: 'Link copied',
+  share_failed: 'Link in the address bar',
+  download_plan: 'Plan JSON',
+  side: 'Side section',
+  tooth: 'Tooth section',
+  starts: 'Starts',
+  fit: 'Fit',
+  stretch: 'Stretch radially',
+  svg: 'SVG',
+  png: 'PNG',
+  passes: 'Passes',
+  diagnostics: 'Diagnostics',
+  thread: 'Thread',
+  start: 'Start',
+  col_pass: 'Pass',
+  col_start: 'Start',
+  col_x: 'X',
+  col_z: 'Z start',
+  col_z_end: 'Z end',
+  col_depth: 'Depth',
+  col_infeed: 'Increment',
+  col_area: 'Area',
+  col_role: 'Role',
+  col_lines: 'Lines',
+  rough: 'rough',
+  finish: 'finish',
+  spring: 'spring',
+  no_threads: 'No thread in this program.',
+  no_diagnostics: 'No diagnostics.',
+  stale: 'Alarm: the drawing shows the last program without alarms.',
+  crashed: 'The planner stopped on this input; the drawing shows the last good program.',
+  summary: '{threads} threads · {moves} moves · {alarms} alarms · {warnings} warnings · {notes} notes',
+  timing: 'plan {plan} ms · draw {draw} ms',
+  error: 'alarm',
+  warning: 'warning',
+  info: 'note',
+  legend_side: 'cut ─  rapid ╌  run-out/screw-in ┄  finish green · spring violet',
+  units: 'units',
+  default: 'default',
+  range: 'range',
+  // Scene labels.
+  dia_major: 'major Ø{}',
+  dia_minor: 'minor Ø{}',
+  lead: 'Ph {}',
+  pitch: 'P {}',
+  length: 'L {}',
+  taper: 'taper {}',
+  delta1: 'δ1 {}',
+  delta2: 'δ2 {}',
+  height: 'h {}',
+  tool_angle: 'tool angle {}',
+  start_of: 'start {}',
+  pass_depth: '{}',
+  pass_depth_finish: '{} finish',
+  pass_depth_spring: '{} spring',
+  infeed_radial: 'radial infeed',
+  infeed_left: 'left flank infeed',
+  infeed_right: 'right flank infeed',
+  infeed_alternating: 'alternating flanks',
+  infeed_programmed: 'infeed as programmed',
+  one_rev: 'one-rev signal {}',
+  axial_offsets: 'axial offsets lead·θ/360',
+  start_angle: '{}',
+  starts_capped: '{} starts: the first 360 are drawn',
+  moves_capped: 'drawing stops after {} moves',
+  square_tool: '0° tool: width {} assumed',
+};
+
+const ZH = {
+  title: 'screwcut — 车床螺纹 G 代码预览',
+  dialect: '系统',
+  examples: '示例',
+  example_pick: '打开示例…',
+  settings: '参数',
+  reset: '恢复默认',
+  share: '复制链接',
+  shared: '链接已复制',
+  share_failed: '链接在地址栏中',
+  download_plan: '计划 JSON',
+  side: '侧剖面',
+  tooth: '牙型剖面',
+  starts: '多头',
+  fit: '适应',
+  stretch: '径向放大',
+  svg: 'SVG',
+  png: 'PNG',
+  passes: '走刀',
+  diagnostics: '诊断',
+  thread: '螺纹',
+  start: '头',
+  col_pass: '次',
+  col_start: '头',
+  col_x: 'X',
+  col_z: 'Z 起点',
+  col_z_end: 'Z 终点',
+  col_depth: '切深',
+  col_infeed: '进刀量',
+  col_area: '面积',
+  col_role: '类型',
+  col_lines: '行',
+  rough: '粗车',
+  finish: '精车',
+  spring: '光刀',
+  no_threads: '程序中没有螺纹。',
+  no_diagnostics: '没有诊断信息。',
+  stale: '报警：图中显示的是上一次无报警的程序。',
+  crashed: '此输入使计算中止；图中显示的是上一次正常的程序。',
+  summary: '{threads} 条螺纹 · {moves} 段运动 · {alarms} 报警 · {warnings} 警告 · {notes} 提示',
+  timing: '计算 {plan} ms · 绘图 {draw} ms',
+  error: '报警',
+  warning: '警告',
+  info: '提示',
+  legend_side: '切削 ─  快移 ╌  退尾/旋进 ┄  精车 绿 · 光刀 紫',
+  units: '单位',
+  default: '默认',
+  range: '范围',
+  dia_major: '大径 Ø{}',
+  dia_minor: '小径 Ø{}',
+  lead: '导程 {}',
+  pitch: '螺距 {}',
+  length: '长 {}',
+  taper: '锥度 {}',
+  delta1: 'δ1 {}',
+  delta2: 'δ2 {}',
+  height: '牙高 {}',
+  tool_angle: '刀尖角 {}',
+  start_of: '第 {} 头',
+  pass_depth: '{}',
+  pass_depth_finish: '{} 精车',
+  pass_depth_spring: '{} 光刀',
+  infeed_radial: '径向进刀(中线)',
+  infeed_left: '左侧面进刀',
+  infeed_right: '右侧面进刀',
+  infeed_alternating: '左右交替进刀',
+  infeed_programmed: '按程序进刀',
+  one_rev: '一转信号 {}',
+  axial_offsets: '轴向偏移 导程·θ/360',
+  start_angle: '{}',
+  starts_capped: '{} 头：只画前 360 头',
+  moves_capped: '只画前 {} 段运动',
+  square_tool: '0° 刀：假定刀宽 {}',
+};
+
+const TABLES = { en: EN, zh: ZH };
+let lang = 'en';
+
+export function setLang(l) {
+  lang = TABLES[l] ? l : 'en';
+  document.documentElement.lang = lang === 'zh' ? 'zh-CN' : 'en';
+  for (const el of document.querySelectorAll('[data-i18n]')) el.textContent = t(el.dataset.i18n);
+  for (const el of document.querySelectorAll('[data-i18n-title]')) el.title = t(el.dataset.i18nTitle);
+  document.title = t('title');
+}
+
+export function getLang() {
+  return lang;
+}
+
+/** Page text by key, with `{name}` fields filled from `vars`. */
+export function t(key, vars) {
+  let s = TABLES[lang][key] ?? EN[key] ?? key;
+  if (vars) s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
+  return s;
+}
+
+/** A scene label: the key's pattern with the value in place of `{}`. */
+export function label(key, value) {
+  const pattern = TABLES[lang][key] ?? EN[key];
+  if (pattern === undefined) return value ? `${key} ${value}` : key;
+  return pattern.includes('{}') ? pattern.replace('{}', value) : pattern;
+}

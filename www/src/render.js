@@ -1,0 +1,488 @@
+// Scene rendering shared by the canvas views and the SVG/PNG export.
+//
+// A scene comes from the wasm core as typed arrays (see src/diagram/packed.rs):
+// `items` holds STRIDE u32s per item, `coords` the numbers of each shape,
+// `lines` the source lines, `labels` the label records. Rendering walks the
+// arrays directly; a painter (canvas or SVG) draws screen-space primitives.
+
+export const STRIDE = 10;
+const SHAPE = { polyline: 0, polygon: 1, circle: 2, arrow: 3, dim: 4, text: 5, marker: 6 };
+const ANCHORS = ['start', 'middle', 'end'];
+
+/** Pens by style name; `role` colours (finish, spring) apply to pass items. */
+export const PENS = {
+  axis: { stroke: '#8a94a6', width: 1, dash: [14, 3, 2, 3] },
+  outline: { stroke: '#1f2937', width: 1.6 },
+  crest: { stroke: '#1f2937', width: 1.3, dash: [7, 3] },
+  root: { stroke: '#64748b', width: 1, dash: [2, 3] },
+  thread_zone: { fill: 'rgba(100,116,139,0.14)' },
+  rapid: { stroke: '#dc2626', width: 1, dash: [5, 4] },
+  cut: { stroke: '#2563eb', width: 2 },
+  runout: { stroke: '#ea580c', width: 2, dash: [2, 2] },
+  screw_in: { stroke: '#b45309', width: 2, dash: [2, 2] },
+  other_rapid: { stroke: '#a3a9b5', width: 1, dash: [3, 4] },
+  delta1: { fill: 'rgba(234,179,8,0.22)', text: '#854d0e' },
+  delta2: { fill: 'rgba(249,115,22,0.20)', text: '#9a3412' },
+  dimension: { stroke: '#374151', width: 1, text: '#111827' },
+  note: { stroke: '#4b5563', width: 1, text: '#374151' },
+  material: { fill: 'rgba(148,163,184,0.38)' },
+  profile: { stroke: '#111827', width: 1.8 },
+  tool: { stroke: '#1d4ed8', width: 1.1, alpha: 0.75 },
+  area: { fill: '#93c5fd', stroke: 'rgba(30,64,175,0.5)', width: 0.6 },
+  depth_tick: { stroke: '#374151', width: 1, text: '#1f2937' },
+  infeed: { stroke: '#dc2626', width: 1.6, text: '#991b1b' },
+  circle: { stroke: '#1f2937', width: 1.5 },
+  start: { stroke: '#2563eb', width: 1.6, text: '#1e3a8a' },
+  ruler: { stroke: '#374151', width: 1.2 },
+};
+const ROLE_STROKE = [null, null, '#059669', '#7c3aed']; // none, rough, finish, spring
+const HIGHLIGHT = '#f59e0b';
+const FONT = '12px system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif';
+
+/** Area fill colour of pass `i` (distinct hues, finishing passes green). */
+export function areaColour(pass, role) {
+  if (role === 2) return 'rgba(16,185,129,0.65)';
+  if (role === 3) return 'rgba(139,92,246,0.5)';
+  const hue = (200 + pass * 47) % 360;
+  return `hsla(${hue},75%,62%,0.6)`;
+}
+
+/** Decodes the label records once per scene. */
+export function prepare(scene, styleNames) {
+  if (scene.prepared) return scene;
+  const labels = scene.labels.length ? scene.labels.split('\u001e').map((r) => r.split('\u001f')) : [];
+  const n = scene.items.length / STRIDE;
+  const styles = new Array(n);
+  for (let i = 0; i < n; i++) styles[i] = styleNames[scene.items[i * STRIDE + 1]];
+  scene.prepared = { labels, styles, count: n };
+  return scene;
+}
+
+/** Indices of the items drawn from source `line` (a scan of the typed arrays). */
+export function itemsOfLine(scene, line) {
+  const it = scene.items;
+  const lines = scene.lines;
+  const out = [];
+  for (let o = 0, i = 0; o < it.length; o += STRIDE, i++) {
+    for (let k = it[o + 6], e = k + it[o + 7]; k < e; k++) {
+      if (lines[k] === line) {
+        out.push(i);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+/** Indices of the items of pass `pass` of thread `thread`. */
+export function itemsOfPass(scene, thread, pass) {
+  const it = scene.items;
+  const out = [];
+  for (let o = 0, i = 0; o < it.length; o += STRIDE, i++) if (it[o + 4] === thread + 1 && it[o + 5] === pass + 1) out.push(i);
+  return out;
+}
+
+/** Facts about item `i`: thread, pass (or -1), role and source lines. */
+export function itemInfo(scene, i) {
+  const it = scene.items;
+  const o = i * STRIDE;
+  const lines = Array.from(scene.lines.subarray(it[o + 6], it[o + 6] + it[o + 7]));
+  return { thread: it[o + 4] - 1, pass: it[o + 5] - 1, lines, style: scene.prepared.styles[i] };
+}
+
+/** A world→screen transform: X = tx + sx·x, Y = ty − sy·y. */
+export function fitTransform(rect, width, height, pad, stretch) {
+  const [x0, y0, x1, y1] = rect;
+  const w = Math.max(x1 - x0, 1e-9);
+  const h = Math.max(y1 - y0, 1e-9);
+  const aw = Math.max(width - 2 * pad, 10);
+  const ah = Math.max(height - 2 * pad, 10);
+  let sx = Math.min(aw / w, ah / h);
+  let sy = sx;
+  if (stretch) sy = Math.max(sx, ah / h);
+  const tx = width / 2 - sx * (x0 + x1) / 2;
+  const ty = height / 2 + sy * (y0 + y1) / 2;
+  return { sx, sy, tx, ty };
+}
+
+function labelText(scene, idx, tr) {
+  const rec = scene.prepared.labels[idx - 1];
+  if (!rec) return '';
+  const [key, value] = rec;
+  return key ? tr(key, value) : value;
+}
+
+/**
+ * Draws `scene` with `painter` under transform `xf`.
+ * opts: { tr(key, value), highlight: Set<item index> | null, stale, width, height }
+ */
+export function drawScene(painter, scene, xf, opts) {
+  prepare(scene, opts.styleNames);
+  const { items, coords } = scene;
+  const { styles, count } = scene.prepared;
+  const X = (x) => xf.tx + xf.sx * x;
+  const Y = (y) => xf.ty - xf.sy * y;
+  const hi = opts.highlight;
+  const view = { w: opts.width, h: opts.height };
+  const penOf = (i) => {
+    const o = i * STRIDE;
+    const shape = items[o];
+    const base = PENS[styles[i]] || PENS.note;
+    const role = shape <= SHAPE.arrow ? items[o + 9] : 0;
+    if (styles[i] === 'area') return { ...base, fill: areaColour(items[o + 5] - 1, role) };
+    if (role >= 2 && ROLE_STROKE[role] && base.stroke) return { ...base, stroke: ROLE_STROKE[role] };
+    return base;
+  };
+  const drawItem = (i, glow) => {
+    const o = i * STRIDE;
+    const shape = items[o];
+    let pen = penOf(i);
+    if (glow) pen = { ...pen, stroke: HIGHLIGHT, width: (pen.width || 1) + 2.5, alpha: 1, text: '#b45309', dash: pen.dash };
+    const c = items[o + 2];
+    const n = items[o + 3];
+    switch (shape) {
+      case SHAPE.polyline:
+      case SHAPE.polygon: {
+        const pts = new Float64Array(n);
+        for (let k = 0; k < n; k += 2) {
+          pts[k] = X(coords[c + k]);
+          pts[k + 1] = Y(coords[c + k + 1]);
+        }
+        const closed = shape === SHAPE.polygon;
+        if (glow && closed) painter.path(pts, true, { fill: 'rgba(245,158,11,0.45)', stroke: HIGHLIGHT, width: 1.5 });
+        else painter.path(pts, closed, pen);
+        break;
+      }
+      case SHAPE.circle:
+        painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, pen);
+        break;
+      case SHAPE.arrow:
+        arrow(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), pen);
+        break;
+      case SHAPE.dim:
+        dimension(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), coords[c + 4],
+          labelText(scene, items[o + 8], opts.tr), pen, view);
+        break;
+      case SHAPE.text: {
+        const s = labelText(scene, items[o + 8], opts.tr);
+        if (s) painter.text(X(coords[c]) + coords[c + 2], Y(coords[c + 1]) - coords[c + 3], s, pen, ANCHORS[items[o + 9]] || 'start', 'middle');
+        break;
+      }
+      case SHAPE.marker:
+        marker(painter, X(coords[c]), Y(coords[c + 1]), items[o + 9], pen);
+        break;
+    }
+  };
+  painter.begin(opts.stale);
+  // Paths of one pen are drawn together (one stroke or fill per pen), in the
+  // order the pens first appear; the other shapes follow, in item order.
+  const batches = new Map();
+  const order = [];
+  const rest = [];
+  for (let i = 0; i < count; i++) {
+    const o = i * STRIDE;
+    const shape = items[o];
+    if (shape !== SHAPE.polyline && shape !== SHAPE.polygon) {
+      rest.push(i);
+      continue;
+    }
+    const style = styles[i];
+    const role = items[o + 9];
+    const key = style === 'area' ? `area:${items[o + 4]}:${items[o + 5]}:${role}` : `${style}:${role}:${shape}`;
+    let b = batches.get(key);
+    if (!b) {
+      b = { first: i, paths: [] };
+      batches.set(key, b);
+      order.push(b);
+    }
+    const c = items[o + 2];
+    const n = items[o + 3];
+    const pts = new Float64Array(n);
+    for (let k = 0; k < n; k += 2) {
+      pts[k] = X(coords[c + k]);
+      pts[k + 1] = Y(coords[c + k + 1]);
+    }
+    b.paths.push(pts);
+  }
+  for (const b of order) {
+    const o = b.first * STRIDE;
+    painter.paths(b.paths, items[o] === SHAPE.polygon, penOf(b.first));
+  }
+  for (const i of rest) drawItem(i, false);
+  if (hi && hi.size && !opts.stale) for (const i of hi) if (i < count) drawItem(i, true);
+  painter.end();
+}
+
+function arrow(p, x0, y0, x1, y1, pen) {
+  p.path(new Float64Array([x0, y0, x1, y1]), false, pen);
+  const a = Math.atan2(y1 - y0, x1 - x0);
+  const L = 9;
+  const s = 0.42;
+  p.path(new Float64Array([x1 - L * Math.cos(a - s), y1 - L * Math.sin(a - s), x1, y1, x1 - L * Math.cos(a + s), y1 - L * Math.sin(a + s)]), true, { ...pen, fill: pen.stroke, dash: null });
+}
+
+function marker(p, x, y, glyph, pen) {
+  const stroke = pen.stroke || '#374151';
+  if (glyph === 0) p.circle(x, y, 3, { fill: stroke });
+  else if (glyph === 1) p.path(new Float64Array([x, y - 6, x, y + 6]), false, { stroke, width: 2 });
+  else p.path(new Float64Array([x - 4, y - 4, x + 4, y + 4, x - 4, y + 4, x + 4, y - 4]), false, { stroke, width: 1.6, segments: true });
+}
+
+/** An aligned dimension: extension lines, dimension line with arrows, text. */
+function dimension(p, ax, ay, bx, by, offset, text, pen, view) {
+  const dx = bx - ax;
+  const dy = by - ay;
+  const len = Math.hypot(dx, dy);
+  if (!(len > 0.5)) return;
+  // Left of a→b in world terms is (dy, -dx) on screen (y points down).
+  const nx = dy / len;
+  const ny = -dx / len;
+  const sgn = offset >= 0 ? 1 : -1;
+  const ext = (x, y) => new Float64Array([x + nx * 2 * sgn, y + ny * 2 * sgn, x + nx * (offset + 4 * sgn), y + ny * (offset + 4 * sgn)]);
+  const thin = { stroke: pen.stroke, width: 0.8 };
+  if (Math.abs(offset) > 3) {
+    p.path(ext(ax, ay), false, thin);
+    p.path(ext(bx, by), false, thin);
+  }
+  const x0 = ax + nx * offset;
+  const y0 = ay + ny * offset;
+  const x1 = bx + nx * offset;
+  const y1 = by + ny * offset;
+  p.path(new Float64Array([x0, y0, x1, y1]), false, pen);
+  const ux = dx / len;
+  const uy = dy / len;
+  const head = (x, y, dir) => {
+    const L = 7;
+    const W = 2.6;
+    const bx2 = x - ux * L * dir;
+    const by2 = y - uy * L * dir;
+    p.path(new Float64Array([x, y, bx2 + nx * W, by2 + ny * W, bx2 - nx * W, by2 - ny * W]), true, { fill: pen.stroke });
+  };
+  if (len > 20) {
+    head(x0, y0, -1);
+    head(x1, y1, 1);
+  } else {
+    head(x0, y0, 1);
+    head(x1, y1, -1);
+  }
+  if (!text) return;
+  // The text sits at the middle of the part of the line that is on screen.
+  const [cx, cy] = visibleMiddle(x0, y0, x1, y1, view);
+  const tx = cx + nx * 7 * sgn;
+  const ty = cy + ny * 7 * sgn;
+  let anchor = 'middle';
+  let baseline = 'middle';
+  if (Math.abs(nx) > 0.7) anchor = nx * sgn > 0 ? 'start' : 'end';
+  else baseline = ny * sgn < 0 ? 'bottom' : 'top';
+  p.text(tx, ty, text, { ...pen, halo: true }, anchor, baseline);
+}
+
+function visibleMiddle(x0, y0, x1, y1, view) {
+  if (!view.w) return [(x0 + x1) / 2, (y0 + y1) / 2];
+  // Liang–Barsky clip to the view with a margin.
+  const m = 14;
+  let t0 = 0;
+  let t1 = 1;
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const clip = (pp, q) => {
+    if (pp === 0) return q >= 0;
+    const r = q / pp;
+    if (pp < 0) {
+      if (r > t1) return false;
+      if (r > t0) t0 = r;
+    } else {
+      if (r < t0) return false;
+      if (r < t1) t1 = r;
+    }
+    return true;
+  };
+  if (clip(-dx, x0 - m) && clip(dx, view.w - m - x0) && clip(-dy, y0 - m) && clip(dy, view.h - m - y0)) {
+    const t = (t0 + t1) / 2;
+    return [x0 + dx * t, y0 + dy * t];
+  }
+  return [(x0 + x1) / 2, (y0 + y1) / 2];
+}
+
+/** A painter on a 2D canvas context (already scaled for devicePixelRatio). */
+export function canvasPainter(ctx) {
+  return {
+    begin(stale) {
+      ctx.save();
+      ctx.lineJoin = 'round';
+      ctx.lineCap = 'butt';
+      ctx.font = FONT;
+      if (stale) {
+        ctx.globalAlpha = 0.35;
+        ctx.filter = 'grayscale(1)';
+      }
+    },
+    end() {
+      ctx.restore();
+    },
+    paths(list, closed, pen) {
+      ctx.beginPath();
+      for (const pts of list) {
+        if (pts.length < 4) continue;
+        ctx.moveTo(pts[0], pts[1]);
+        for (let k = 2; k < pts.length; k += 2) ctx.lineTo(pts[k], pts[k + 1]);
+        if (closed) ctx.closePath();
+      }
+      this.finish(closed, pen);
+    },
+    finish(closed, pen) {
+      const a = ctx.globalAlpha;
+      if (pen.alpha) ctx.globalAlpha = a * pen.alpha;
+      if (closed && pen.fill) {
+        ctx.fillStyle = pen.fill;
+        ctx.fill();
+      }
+      if (pen.stroke) {
+        ctx.setLineDash(pen.dash || []);
+        ctx.strokeStyle = pen.stroke;
+        ctx.lineWidth = pen.width || 1;
+        ctx.stroke();
+      }
+      ctx.globalAlpha = a;
+    },
+    path(pts, closed, pen) {
+      if (pts.length < 4) return;
+      ctx.beginPath();
+      if (pen.segments) {
+        for (let k = 0; k + 3 < pts.length; k += 4) {
+          ctx.moveTo(pts[k], pts[k + 1]);
+          ctx.lineTo(pts[k + 2], pts[k + 3]);
+        }
+      } else {
+        ctx.moveTo(pts[0], pts[1]);
+        for (let k = 2; k < pts.length; k += 2) ctx.lineTo(pts[k], pts[k + 1]);
+        if (closed) ctx.closePath();
+      }
+      this.finish(closed, pen);
+    },
+    circle(x, y, r, pen) {
+      ctx.beginPath();
+      ctx.arc(x, y, Math.max(r, 0), 0, Math.PI * 2);
+      if (pen.fill) {
+        ctx.fillStyle = pen.fill;
+        ctx.fill();
+      }
+      if (pen.stroke) {
+        ctx.setLineDash(pen.dash || []);
+        ctx.strokeStyle = pen.stroke;
+        ctx.lineWidth = pen.width || 1;
+        ctx.stroke();
+      }
+    },
+    text(x, y, s, pen, anchor, baseline) {
+      ctx.textAlign = anchor === 'middle' ? 'center' : anchor === 'end' ? 'right' : 'left';
+      ctx.textBaseline = baseline;
+      if (pen.halo) {
+        ctx.lineWidth = 3;
+        ctx.strokeStyle = 'rgba(255,255,255,0.85)';
+        ctx.setLineDash([]);
+        ctx.strokeText(s, x, y);
+      }
+      ctx.fillStyle = pen.text || pen.stroke || '#111827';
+      ctx.fillText(s, x, y);
+    },
+  };
+}
+
+const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
+const f = (v) => (Math.round(v * 100) / 100).toString();
+
+/** A painter that writes SVG elements; `svg()` returns the document. */
+export function svgPainter(width, height) {
+  const out = [];
+  const style = (pen, closed) => {
+    const a = [];
+    a.push(`fill="${closed && pen.fill ? pen.fill : 'none'}"`);
+    if (pen.stroke) {
+      a.push(`stroke="${pen.stroke}" stroke-width="${pen.width || 1}"`);
+      if (pen.dash && pen.dash.length) a.push(`stroke-dasharray="${pen.dash.join(' ')}"`);
+    }
+    if (pen.alpha) a.push(`opacity="${pen.alpha}"`);
+    return a.join(' ');
+  };
+  return {
+    begin(stale) {
+      out.push(stale ? '<g opacity="0.35" filter="grayscale(1)">' : '<g>');
+    },
+    end() {
+      out.push('</g>');
+    },
+    paths(list, closed, pen) {
+      let d = '';
+      for (const pts of list) {
+        if (pts.length < 4) continue;
+        d += `M${f(pts[0])} ${f(pts[1])}`;
+        for (let k = 2; k < pts.length; k += 2) d += `L${f(pts[k])} ${f(pts[k + 1])}`;
+        if (closed) d += 'Z';
+      }
+      if (d) out.push(`<path d="${d}" ${style(pen, closed)} stroke-linejoin="round"/>`);
+    },
+    path(pts, closed, pen) {
+      if (pts.length < 4) return;
+      let d = '';
+      if (pen.segments) {
+        for (let k = 0; k + 3 < pts.length; k += 4) d += `M${f(pts[k])} ${f(pts[k + 1])}L${f(pts[k + 2])} ${f(pts[k + 3])}`;
+      } else {
+        d = `M${f(pts[0])} ${f(pts[1])}`;
+        for (let k = 2; k < pts.length; k += 2) d += `L${f(pts[k])} ${f(pts[k + 1])}`;
+        if (closed) d += 'Z';
+      }
+      out.push(`<path d="${d}" ${style(pen, closed)} stroke-linejoin="round"/>`);
+    },
+    circle(x, y, r, pen) {
+      out.push(`<circle cx="${f(x)}" cy="${f(y)}" r="${f(Math.max(r, 0))}" ${style(pen, true)}/>`);
+    },
+    text(x, y, s, pen, anchor, baseline) {
+      const dominant = baseline === 'middle' ? 'central' : baseline === 'top' ? 'hanging' : 'text-after-edge';
+      const halo = pen.halo ? ' stroke="white" stroke-width="3" paint-order="stroke"' : '';
+      out.push(`<text x="${f(x)}" y="${f(y)}" text-anchor="${anchor}" dominant-baseline="${dominant}" fill="${pen.text || pen.stroke || '#111827'}"${halo}>${esc(s)}</text>`);
+    },
+    svg() {
+      return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="system-ui, sans-serif" font-size="12">\n<rect width="100%" height="100%" fill="white"/>\n${out.join('\n')}\n</svg>\n`;
+    },
+  };
+}
+
+/** Distance from (px, py) to the nearest part of item `i`, in screen pixels (Infinity if far). */
+export function itemDistance(scene, i, xf, px, py) {
+  const { items, coords } = scene;
+  const o = i * STRIDE;
+  const shape = items[o];
+  const c = items[o + 2];
+  const n = items[o + 3];
+  const X = (x) => xf.tx + xf.sx * x;
+  const Y = (y) => xf.ty - xf.sy * y;
+  if (shape === SHAPE.polyline || shape === SHAPE.polygon) {
+    let best = Infinity;
+    let inside = false;
+    const m = n / 2;
+    for (let k = 0; k < m; k++) {
+      const j = shape === SHAPE.polygon ? (k + 1) % m : k + 1;
+      if (j >= m) break;
+      const x0 = X(coords[c + 2 * k]);
+      const y0 = Y(coords[c + 2 * k + 1]);
+      const x1 = X(coords[c + 2 * j]);
+      const y1 = Y(coords[c + 2 * j + 1]);
+      best = Math.min(best, segDist(px, py, x0, y0, x1, y1));
+      if (shape === SHAPE.polygon && (y0 > py) !== (y1 > py) && px < ((x1 - x0) * (py - y0)) / (y1 - y0) + x0) inside = !inside;
+    }
+    return inside ? 0 : best;
+  }
+  if (shape === SHAPE.marker) return Math.hypot(px - X(coords[c]), py - Y(coords[c + 1]));
+  if (shape === SHAPE.arrow) return segDist(px, py, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]));
+  return Infinity;
+}
+
+function segDist(px, py, x0, y0, x1, y1) {
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const l2 = dx * dx + dy * dy;
+  let t = l2 > 0 ? ((px - x0) * dx + (py - y0) * dy) / l2 : 0;
+  t = Math.max(0, Math.min(1, t));
+  return Math.hypot(px - (x0 + t * dx), py - (y0 + t * dy));
+}

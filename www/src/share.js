@@ -1,0 +1,53 @@
+// Keeping the program: localStorage across reloads, and a link whose
+// fragment carries {dialect, settings, program} as base64url of deflated JSON.
+
+import { deflateSync, inflateSync, strToU8, strFromU8 } from 'fflate';
+
+const KEY = 'screwcut.state.v1';
+
+export function load() {
+  try {
+    const s = localStorage.getItem(KEY);
+    return s ? JSON.parse(s) : null;
+  } catch {
+    return null;
+  }
+}
+
+export function save(state) {
+  try {
+    localStorage.setItem(KEY, JSON.stringify(state));
+  } catch {
+    // Private mode or full storage: nothing to keep.
+  }
+}
+
+function toBase64Url(bytes) {
+  let s = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+  return btoa(s).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+function fromBase64Url(text) {
+  const b = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  const out = new Uint8Array(b.length);
+  for (let i = 0; i < b.length; i++) out[i] = b.charCodeAt(i);
+  return out;
+}
+
+/** The fragment for a shared link: `#z=` + base64url(deflate(JSON)). */
+export function encodeFragment(state) {
+  const json = JSON.stringify({ dialect: state.dialect, settings: state.settings, program: state.program });
+  return `#z=${toBase64Url(deflateSync(strToU8(json), { level: 9 }))}`;
+}
+
+/** The state in a link's fragment (`#z=` deflated or `#j=` plain JSON), or null. */
+export function decodeFragment(hash) {
+  try {
+    if (hash.startsWith('#z=')) return JSON.parse(strFromU8(inflateSync(fromBase64Url(hash.slice(3)))));
+    if (hash.startsWith('#j=')) return JSON.parse(strFromU8(fromBase64Url(hash.slice(3))));
+  } catch {
+    return null;
+  }
+  return null;
+}
