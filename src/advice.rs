@@ -71,134 +71,155 @@ pub fn finish_manual(
     spans: &dyn Fn(u32) -> Span,
 ) {
     let advice = s.flag(P::Advice);
-    for t in threads.iter_mut().filter(|t| matches!(t.source, Source::G32 | Source::Renhe | Source::G92)) {
-        let long = t.long_axis;
-        let dir = t.depth_dir;
-        let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
-        let mm = if inch { 25.4 } else { 1.0 };
-        // Deepest pass: furthest along the depth direction at its start.
-        let deepest = t
-            .passes
-            .iter()
-            .max_by(|a, b| (short_of(long, a.from) * dir).total_cmp(&(short_of(long, b.from) * dir)))
-            .cloned()
-            .expect("a thread has passes");
-        let outline = outline_crest(t, moves, &deepest, h);
-        let crest_at = |p: Point| -> f64 {
-            let l = long_of(long, p);
-            match &outline {
-                Some(o) => line_at(long, o.from, o.to, l),
-                None => line_at(long, deepest.from, deepest.to, l) - dir * h,
-            }
-        };
-        t.crest_source = if outline.is_some() { CrestSource::Outline } else { CrestSource::Assumed };
-        let c0 = crest_at(t.passes[0].from);
-        t.crest = match long {
-            Axis::Z => 2.0 * c0,
-            Axis::X => c0,
-        };
-        // Depths per start.
-        let mut prev: Vec<f64> = vec![0.0; t.starts as usize];
-        let mut max_depth = 0.0f64;
-        for p in t.passes.iter_mut() {
-            let d = (short_of(long, p.from) - crest_at(p.from)) * dir;
-            let si = p.start as usize - 1;
-            p.depth = d;
-            p.infeed = d - prev[si];
-            p.area = v_area(t.tool_angle, prev[si].max(0.0), d.max(0.0));
-            prev[si] = d;
-            max_depth = max_depth.max(d);
-        }
-        t.height = max_depth;
-        // Roles: per start, the first pass at full depth finishes, later ones are spring passes.
-        let mut finished = vec![false; t.starts as usize];
-        for p in t.passes.iter_mut() {
-            let si = p.start as usize - 1;
-            if (p.depth - max_depth).abs() < 1e-6 {
-                p.role = if finished[si] { Role::Spring } else { Role::Finish };
-                finished[si] = true;
-            } else {
-                p.role = Role::Rough;
-            }
-        }
-        if !advice {
+    // The outline a thread is cut on is turned before it: look at the moves
+    // since the previous thread, so the work stays linear in the program.
+    let mut window_start = 0;
+    for t in threads.iter_mut() {
+        let window = &moves[window_start.min(t.first_move)..t.first_move.min(moves.len())];
+        window_start = t.first_move;
+        if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92) {
             continue;
         }
-        let span = spans(t.line);
-        let pitch_mm = t.pitch * mm;
-        let std_depth = s.get(P::DepthFactor) * pitch_mm; // diameter, mm
+        finish_one(t, window, s, inch, advice, diags, spans);
+    }
+}
+
+/// Depths, crest, roles and advice of one block-by-block thread; `moves` is the
+/// window of motions before it where its turned outline may be.
+fn finish_one(
+    t: &mut Thread,
+    moves: &[Move],
+    s: &Settings,
+    inch: bool,
+    advice: bool,
+    diags: &mut Diagnostics,
+    spans: &dyn Fn(u32) -> Span,
+) {
+    let long = t.long_axis;
+    let dir = t.depth_dir;
+    let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
+    let mm = if inch { 25.4 } else { 1.0 };
+    // Deepest pass: furthest along the depth direction at its start.
+    let deepest = t
+        .passes
+        .iter()
+        .max_by(|a, b| (short_of(long, a.from) * dir).total_cmp(&(short_of(long, b.from) * dir)))
+        .cloned()
+        .expect("a thread has passes");
+    let outline = outline_crest(t, moves, &deepest, h);
+    let crest_at = |p: Point| -> f64 {
+        let l = long_of(long, p);
         match &outline {
-            None => diags.push(
-                Code::CrestAssumed,
+            Some(o) => line_at(long, o.from, o.to, l),
+            None => line_at(long, deepest.from, deepest.to, l) - dir * h,
+        }
+    };
+    t.crest_source = if outline.is_some() { CrestSource::Outline } else { CrestSource::Assumed };
+    let c0 = crest_at(t.passes[0].from);
+    t.crest = match long {
+        Axis::Z => 2.0 * c0,
+        Axis::X => c0,
+    };
+    // Depths per start.
+    let mut prev: Vec<f64> = vec![0.0; t.starts as usize];
+    let mut max_depth = 0.0f64;
+    for p in t.passes.iter_mut() {
+        let d = (short_of(long, p.from) - crest_at(p.from)) * dir;
+        let si = p.start as usize - 1;
+        p.depth = d;
+        p.infeed = d - prev[si];
+        p.area = v_area(t.tool_angle, prev[si].max(0.0), d.max(0.0));
+        prev[si] = d;
+        max_depth = max_depth.max(d);
+    }
+    t.height = max_depth;
+    // Roles: per start, the first pass at full depth finishes, later ones are spring passes.
+    let mut finished = vec![false; t.starts as usize];
+    for p in t.passes.iter_mut() {
+        let si = p.start as usize - 1;
+        if (p.depth - max_depth).abs() < 1e-6 {
+            p.role = if finished[si] { Role::Spring } else { Role::Finish };
+            finished[si] = true;
+        } else {
+            p.role = Role::Rough;
+        }
+    }
+    if !advice {
+        return;
+    }
+    let span = spans(t.line);
+    let pitch_mm = t.pitch * mm;
+    let std_depth = s.get(P::DepthFactor) * pitch_mm; // diameter, mm
+    match &outline {
+        None => diags.push(
+            Code::CrestAssumed,
+            span,
+            format!(
+                "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; δ1/δ2 are not checked",
+                if t.internal { "minor" } else { "major" },
+                fmt(t.crest),
+                fmt(s.get(P::DepthFactor))
+            ),
+        ),
+        Some(_) => {
+            let programmed = 2.0 * max_depth * mm;
+            if (programmed - std_depth).abs() > 0.02 * std_depth.max(0.05) {
+                diags.push(
+                    Code::DepthVsStandard,
+                    span,
+                    format!(
+                        "total depth {} (diameter) against {}·P = {} for pitch {}: the thread is {}",
+                        fmt(programmed / mm),
+                        fmt(s.get(P::DepthFactor)),
+                        fmt(std_depth / mm),
+                        fmt(t.pitch),
+                        if programmed < std_depth { "not cut to full depth" } else { "cut deeper than standard" }
+                    ),
+                );
+            }
+        }
+    }
+    if t.starts == 1 && long == Axis::Z {
+        if let Some(table) = table_4_3(pitch_mm) {
+            let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
+            let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
+            let matches = infeeds.len() == table.len() && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
+            diags.push(
+                Code::InfeedGuidance,
                 span,
                 format!(
-                    "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; δ1/δ2 are not checked",
-                    if t.internal { "minor" } else { "major" },
-                    fmt(t.crest),
-                    fmt(s.get(P::DepthFactor))
+                    "table 4-3 for pitch {}: {} passes, diameter infeeds {}; programmed: {} passes, {}{}",
+                    fmt(pitch_mm),
+                    table.len(),
+                    list(table),
+                    infeeds.len(),
+                    list(&infeeds),
+                    if matches { " (as the table)" } else { "" }
                 ),
-            ),
-            Some(_) => {
-                let programmed = 2.0 * max_depth * mm;
-                if (programmed - std_depth).abs() > 0.02 * std_depth.max(0.05) {
+            );
+            let largest = table[0];
+            // The first infeed is only known when the crest is (from the outline).
+            let known = |p: &&crate::thread::Pass| p.index > 1 || outline.is_some();
+            for p in t.passes.iter().filter(known) {
+                let inf = 2.0 * p.infeed * mm;
+                if inf > largest + 1e-3 {
                     diags.push(
-                        Code::DepthVsStandard,
-                        span,
+                        Code::InfeedTooLarge,
+                        spans(p.lines.iter().copied().find(|l| *l >= t.line).unwrap_or(t.line)),
                         format!(
-                            "total depth {} (diameter) against {}·P = {} for pitch {}: the thread is {}",
-                            fmt(programmed / mm),
-                            fmt(s.get(P::DepthFactor)),
-                            fmt(std_depth / mm),
-                            fmt(t.pitch),
-                            if programmed < std_depth { "not cut to full depth" } else { "cut deeper than standard" }
+                            "pass {} takes {} of diameter at once; table 4-3 starts pitch {} with {}",
+                            p.index,
+                            fmt(inf),
+                            fmt(pitch_mm),
+                            fmt(largest)
                         ),
                     );
                 }
             }
         }
-        if t.starts == 1 && long == Axis::Z {
-            if let Some(table) = table_4_3(pitch_mm) {
-                let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
-                let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
-                let matches =
-                    infeeds.len() == table.len() && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
-                diags.push(
-                    Code::InfeedGuidance,
-                    span,
-                    format!(
-                        "table 4-3 for pitch {}: {} passes, diameter infeeds {}; programmed: {} passes, {}{}",
-                        fmt(pitch_mm),
-                        table.len(),
-                        list(table),
-                        infeeds.len(),
-                        list(&infeeds),
-                        if matches { " (as the table)" } else { "" }
-                    ),
-                );
-                let largest = table[0];
-                // The first infeed is only known when the crest is (from the outline).
-                let known = |p: &&crate::thread::Pass| p.index > 1 || outline.is_some();
-                for p in t.passes.iter().filter(known) {
-                    let inf = 2.0 * p.infeed * mm;
-                    if inf > largest + 1e-3 {
-                        diags.push(
-                            Code::InfeedTooLarge,
-                            spans(p.lines.iter().copied().find(|l| *l >= t.line).unwrap_or(t.line)),
-                            format!(
-                                "pass {} takes {} of diameter at once; table 4-3 starts pitch {} with {}",
-                                p.index,
-                                fmt(inf),
-                                fmt(pitch_mm),
-                                fmt(largest)
-                            ),
-                        );
-                    }
-                }
-            }
-        }
-        if let Some(o) = &outline {
-            clearance(t, o, moves, &deepest, mm, diags, span);
-        }
+    }
+    if let Some(o) = &outline {
+        clearance(t, o, moves, &deepest, mm, diags, span);
     }
 }
 

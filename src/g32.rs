@@ -239,6 +239,7 @@ pub fn block(it: &mut Interp, b: &Block) {
         }
         None => (end, None),
     };
+    let first_move = it.moves.len();
     it.emit(MoveKind::Thread, start, cut_end, b.line, None, b.span);
     if let Some(o) = out {
         it.emit(MoveKind::Runout, cut_end, o, b.line, None, b.span);
@@ -260,6 +261,7 @@ pub fn block(it: &mut Interp, b: &Block) {
                 lines: vec![b.line],
                 approach,
                 span: b.span,
+                first_move,
             });
         }
     }

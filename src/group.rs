@@ -72,6 +72,8 @@ pub struct Chain {
     pub approach: f64,
     /// Span of the first block.
     pub span: Span,
+    /// Index in the plan's moves of the chain's first motion.
+    pub first_move: usize,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -277,6 +279,7 @@ fn build(cuts: &[Chain], tool_angle: f64) -> Thread {
         },
         passes,
         depth_dir,
+        first_move: cuts.iter().map(|c| c.first_move).min().unwrap_or(0),
     }
 }
 

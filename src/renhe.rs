@@ -214,6 +214,7 @@ pub fn thread_block(it: &mut Interp, b: &Block, inch: bool) {
         }
         _ => (end, None),
     };
+    let first_move = it.moves.len();
     it.emit(MoveKind::Thread, start, cut_end, b.line, None, b.span);
     if let Some(o) = tail_end {
         it.emit(MoveKind::Runout, cut_end, o, b.line, None, b.span);
@@ -235,6 +236,7 @@ pub fn thread_block(it: &mut Interp, b: &Block, inch: bool) {
                 lines: vec![b.line],
                 approach,
                 span: b.span,
+                first_move,
             })
         }
     }

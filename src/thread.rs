@@ -169,6 +169,9 @@ pub struct Thread {
     /// Direction along the short axis in which depth grows (−1 or +1, radial for Z threads).
     #[serde(skip)]
     pub depth_dir: f64,
+    /// Index in the plan's moves of the thread's first motion.
+    #[serde(skip)]
+    pub first_move: usize,
 }
 
 /// Area a V tool of included angle `angle_deg` removes between depths `h0`

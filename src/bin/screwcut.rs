@@ -96,11 +96,9 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
     // Programs from old controllers are not always UTF-8: read them lossily rather than refuse.
     let text = String::from_utf8_lossy(&bytes);
     let plan = screwcut::plan(&text, &settings);
-    if json {
-        println!("{}", plan.to_json());
-    } else {
-        print!("{}", summary(&plan, file));
-    }
+    // A closed pipe (`| head`) is not an error worth a panic.
+    let out = if json { plan.to_json() + "\n" } else { summary(&plan, file) };
+    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), out.as_bytes());
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
 

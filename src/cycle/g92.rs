@@ -86,6 +86,7 @@ pub fn block(it: &mut Interp, b: &Block, has_axes: bool) {
     }
     let pts = geom.pass(0.0, 0.0, 0.0);
     for s in 0..starts {
+        let first_move = it.moves.len();
         geom.emit(it, &pts, b.line, b.span);
         let kind = geom.kind;
         add_chain(
@@ -98,6 +99,7 @@ pub fn block(it: &mut Interp, b: &Block, has_axes: bool) {
                 lines: vec![b.line],
                 approach: -geom.out,
                 span: b.span,
+                first_move,
             },
         );
     }

@@ -323,6 +323,7 @@ pub fn plan_multi(it: &mut Interp, m: Multi) {
     }
     let k = m.schedule.k;
     let line = *m.lines.last().unwrap_or(&0);
+    let first_move = it.moves.len();
     let mut passes = Vec::with_capacity(sched.len() * m.starts as usize);
     'starts: for s in 0..m.starts {
         let angle = 360.0 * s as f64 / m.starts as f64;
@@ -376,6 +377,7 @@ pub fn plan_multi(it: &mut Interp, m: Multi) {
         taper: g.root_start.r() - g.root_end.r(),
         passes,
         depth_dir: -g.out,
+        first_move,
     });
 }
 
