@@ -11,6 +11,7 @@
 //! the rest (diagnostics, threads, setting tables) through serde-wasm-bindgen.
 
 use std::cell::Cell;
+use std::hash::{DefaultHasher, Hash, Hasher};
 
 use js_sys::{Array, Float64Array, Object, Reflect, Uint32Array};
 use serde::Serialize;
@@ -260,16 +261,42 @@ fn thread_scenes_of(plan: &Plan, thread: Option<usize>, start: u32) -> (JsValue,
     }
 }
 
+/// A key of a list for skipping unchanged transfers: 52 bits of a hash, exact as a JS number.
+fn key_of<T: Hash + ?Sized>(v: &T) -> f64 {
+    let mut h = DefaultHasher::new();
+    v.hash(&mut h);
+    (h.finish() & ((1u64 << 52) - 1)) as f64
+}
+
+/// The key of the diagnostics by position (line and column, not offset): when
+/// it is unchanged the editor's own diagnostics, mapped through the edit, are current.
+fn diagnostics_key(plan: &Plan) -> f64 {
+    let fields: Vec<(u8, &str, &str, u32, u32, u32, u32)> = plan
+        .diagnostics
+        .iter()
+        .map(|d| (d.severity as u8, d.code.as_str(), d.message.as_str(), d.line, d.column, d.end_line, d.end_column))
+        .collect();
+    key_of(&fields)
+}
+
 /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines) and
 /// returns everything the app shows:
 /// `{dialect, units, alarms, warnings, notes, moves, good, settingErrors,
-/// diagnostics, threads, thread, passes, side, tooth, starts}`: `threads`
-/// are summaries (a pass count instead of the passes), `passes` are the
-/// chosen thread's. `thread` and `start`
+/// diagnostics, diagnosticsKey, threads, thread, passes, side, tooth, starts}`:
+/// `threads` are summaries (a pass count instead of the passes), `passes` are
+/// the chosen thread's. `diagnostics` is null when its key equals
+/// `known_diagnostics` (the key of the list the caller already has). `thread` and `start`
 /// choose the thread (−1: none) and start drawn in the tooth and starts views.
 /// `good` is true when the plan draws something (threads or motions) and has no alarm.
 #[wasm_bindgen]
-pub fn update(text: &str, dialect_name: &str, settings: &str, thread: i32, start: u32) -> Result<JsValue, JsValue> {
+pub fn update(
+    text: &str,
+    dialect_name: &str,
+    settings: &str,
+    thread: i32,
+    start: u32,
+    known_diagnostics: f64,
+) -> Result<JsValue, JsValue> {
     let d = dialect(dialect_name)?;
     let (s, problems) = settings_from(d, settings);
     let plan = crate::plan(text, &s);
@@ -284,7 +311,10 @@ pub fn update(text: &str, dialect_name: &str, settings: &str, thread: i32, start
     let good = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
     set(&o, "good", &good.into());
     set(&o, "settingErrors", &to_js(&problems)?);
-    set(&o, "diagnostics", &to_js(&editor_diagnostics(text, &plan))?);
+    let key = diagnostics_key(&plan);
+    set(&o, "diagnosticsKey", &key.into());
+    let diagnostics = if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, &plan))? };
+    set(&o, "diagnostics", &diagnostics);
     set(&o, "threads", &to_js(&plan.threads.iter().map(ThreadSummary::of).collect::<Vec<_>>())?);
     let chosen = pick(&plan, thread);
     set(&o, "thread", &chosen.map_or(JsValue::NULL, |t| (t as u32).into()));

@@ -361,17 +361,27 @@ impl Item {
         self
     }
 
-    /// The world points the item covers (for bounds).
-    pub fn points(&self) -> Vec<Pt> {
+    /// Calls `f` with every world point the item covers (for bounds).
+    pub fn each_point(&self, mut f: impl FnMut(Pt)) {
         match &self.shape {
-            Shape::Polyline { points } | Shape::Polygon { points } => points.clone(),
+            Shape::Polyline { points } | Shape::Polygon { points } => points.iter().for_each(|p| f(*p)),
             Shape::Circle { center, radius } => {
-                vec![[center[0] - radius, center[1] - radius], [center[0] + radius, center[1] + radius]]
+                f([center[0] - radius, center[1] - radius]);
+                f([center[0] + radius, center[1] + radius]);
             }
-            Shape::Arrow { from, to } => vec![*from, *to],
-            Shape::Dim { a, b, .. } => vec![*a, *b],
-            Shape::Text { at, .. } | Shape::Marker { at, .. } => vec![*at],
+            Shape::Arrow { from: a, to: b } | Shape::Dim { a, b, .. } => {
+                f(*a);
+                f(*b);
+            }
+            Shape::Text { at, .. } | Shape::Marker { at, .. } => f(*at),
         }
+    }
+
+    /// The world points the item covers.
+    pub fn points(&self) -> Vec<Pt> {
+        let mut v = Vec::new();
+        self.each_point(|p| v.push(p));
+        v
     }
 }
 
@@ -396,12 +406,13 @@ impl Scene {
 
     /// Adds an item, growing the bounds; `focus` also grows the focus.
     pub fn push(&mut self, item: Item, focus: bool) {
-        for p in item.points() {
-            self.bounds.add(p);
+        let (bounds, f) = (&mut self.bounds, &mut self.focus);
+        item.each_point(|p| {
+            bounds.add(p);
             if focus {
-                self.focus.add(p);
+                f.add(p);
             }
-        }
+        });
         self.items.push(item);
     }
 

@@ -182,10 +182,19 @@ pub fn side(plan: &Plan) -> Scene {
             }
         }
     }
+    let passes: usize = plan.threads.iter().map(|t| t.passes.len()).sum();
+    scene.items.reserve(drawn + 2 * passes + 12 * plan.threads.len() + 2);
+    // The spindle axis goes first, behind the rest; its ends are set at the end.
+    scene.items.push(Item::new(line([0.0, 0.0], [0.0, 0.0]), Style::Axis));
     let mut back: Vec<(Item, bool)> = Vec::new();
-    let mut mid: Vec<(Item, bool)> = Vec::new();
     let mut front: Vec<(Item, bool)> = Vec::new();
     let has_threads = !plan.threads.is_empty();
+    for (ti, t) in plan.threads.iter().enumerate() {
+        thread_items(plan, ti, t, &mut back, &mut front);
+    }
+    for (item, focus) in back {
+        scene.push(item, focus);
+    }
     // Motions of no pass: the part outline and other tool paths.
     for (k, m) in plan.moves[..drawn].iter().enumerate() {
         if owner[k] {
@@ -198,7 +207,7 @@ pub fn side(plan: &Plan) -> Scene {
             MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),
             MoveKind::Runout => (line(world(m.from), world(m.to)), Style::Runout, true),
         };
-        mid.push((Item::new(shape, style).lines([m.line]), focus));
+        scene.push(Item::new(shape, style).lines([m.line]), focus);
     }
     if drawn < plan.moves.len() {
         let at = world(plan.moves[drawn - 1].to);
@@ -216,10 +225,7 @@ pub fn side(plan: &Plan) -> Scene {
             false,
         ));
     }
-    for (ti, t) in plan.threads.iter().enumerate() {
-        thread_items(plan, ti, t, &mut back, &mut front);
-    }
-    let mut found = vec![false; plan.threads.iter().map(|t| t.passes.len()).sum()];
+    let mut found = vec![false; passes];
     let base: Vec<usize> = plan
         .threads
         .iter()
@@ -234,22 +240,17 @@ pub fn side(plan: &Plan) -> Scene {
             continue;
         }
         found[base[p.thread] + p.pass] = true;
-        pass_items(plan, p, &mut mid);
+        pass_items(plan, p, &mut scene);
     }
     for (ti, t) in plan.threads.iter().enumerate() {
         for (pi, p) in t.passes.iter().enumerate() {
             if !found[base[ti] + pi] {
-                mid.push((
-                    Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut)
-                        .lines(p.lines.clone())
-                        .of(ti, Some(pi))
-                        .role(p.role),
-                    true,
-                ));
+                let item = Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut);
+                scene.push(item.lines(p.lines.clone()).of(ti, Some(pi)).role(p.role), true);
             }
         }
     }
-    for (item, focus) in back.into_iter().chain(mid).chain(front) {
+    for (item, focus) in front {
         scene.push(item, focus);
     }
     // The passes' rapids join the focus where they stay near the cuts.
@@ -259,16 +260,19 @@ pub fn side(plan: &Plan) -> Scene {
         let near = |p: &Pt| {
             p[0] >= core.x0 - grow && p[0] <= core.x1 + grow && p[1] >= core.y0 - grow && p[1] <= core.y1 + grow
         };
+        let focus = &mut scene.focus;
         for item in scene.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
-            for p in item.points().iter().filter(|p| near(p)) {
-                scene.focus.add(*p);
-            }
+            item.each_point(|p| {
+                if near(&p) {
+                    focus.add(p);
+                }
+            });
         }
     }
     // The spindle axis across everything, behind the rest.
     let b = scene.bounds.or_unit();
     let margin = 0.05 * b.width().max(1.0);
-    scene.items.insert(0, Item::new(line([b.x0 - margin, 0.0], [b.x1 + margin, 0.0]), Style::Axis));
+    scene.items[0].shape = line([b.x0 - margin, 0.0], [b.x1 + margin, 0.0]);
     scene.bounds.add([b.x0 - margin, 0.0]);
     scene.bounds.add([b.x1 + margin, 0.0]);
     scene.finish();
@@ -294,7 +298,7 @@ fn pass_points(p: &Pass) -> Vec<Pt> {
 }
 
 /// The items of one matched pass: its rapids, cut, run-out and screw-in.
-fn pass_items(plan: &Plan, p: &PassPath, out: &mut Vec<(Item, bool)>) {
+fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
     let pass = &plan.threads[p.thread].passes[p.pass];
     for k in p.lead_in.start..p.tail.end {
         let m = &plan.moves[k];
@@ -310,15 +314,15 @@ fn pass_items(plan: &Plan, p: &PassPath, out: &mut Vec<(Item, bool)>) {
             line(world(m.from), world(m.to))
         };
         let item = Item::new(shape, style).lines([m.line]).of(p.thread, Some(p.pass)).role(pass.role);
-        out.push((item, style != Style::Rapid));
+        out.push(item, style != Style::Rapid);
     }
     let mark = |at: Point| Item::new(Shape::Marker { at: world(at), glyph: Glyph::Bar }, Style::Runout);
     if pass.runout_to.is_some() {
-        out.push((mark(pass.to).lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true));
+        out.push(mark(pass.to).lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true);
     }
     if pass.screw_in_from.is_some() {
         let item = Item { style: Style::ScrewIn, ..mark(pass.from) };
-        out.push((item.lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true));
+        out.push(item.lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true);
     }
 }
 

@@ -209,6 +209,7 @@ fn cycle_plan() -> Plan {
         taper: 0.0,
         passes,
         depth_dir: -1.0,
+        first_move: 1,
     };
     Plan { dialect: Dialect::Gsk980tdc, units: Units::Mm, diagnostics: Vec::new(), moves, threads: vec![thread] }
 }

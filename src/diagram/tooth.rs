@@ -138,7 +138,10 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
     scene.push(own(dim(pt(0.0, bottom), pt(pitch, bottom), -16.0, "pitch", pitch), Style::Dimension), true);
     let angle = Label::new("tool_angle", format!("{}°", num(t.tool_angle)));
     scene.push(
-        own(Shape::Text { at: pt(-l, top), label: angle, anchor: Anchor::Start, dx: 0.0, dy: 8.0 * flip }, Style::Note),
+        own(
+            Shape::Text { at: pt(-l, bottom), label: angle, anchor: Anchor::Start, dx: 0.0, dy: -34.0 * flip },
+            Style::Note,
+        ),
         true,
     );
     if t.starts > 1 {

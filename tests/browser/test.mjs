@@ -184,27 +184,32 @@ try {
   await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 30_000 });
   const lines = await page.evaluate(() => window.__screwcut.updates.at(-1).lines);
   check('the 5,000-line program is loaded from a link', lines >= 5000, `${lines} lines`);
-  await page.locator('.cm-line', { hasText: 'G50 X100 Z100' }).click();
-  await page.keyboard.press('End');
-  await page.evaluate(() => {
-    window.__screwcut.frames.length = 0;
-    window.__screwcut.updates.length = 0;
-  });
-  for (const ch of ' (edit-to-frame)') {
-    await page.keyboard.type(ch);
-    await page.waitForTimeout(40);
-  }
-  await page.waitForTimeout(200);
-  const m = await page.evaluate(() => ({ frames: window.__screwcut.frames, updates: window.__screwcut.updates }));
-  check('every keystroke re-planned', m.updates.length >= 16 && m.frames.length >= 16, `${m.updates.length} updates, ${m.frames.length} frames`);
   const fmt = (v) => v.toFixed(1);
-  console.log(
-    `edit-to-frame, ${lines} lines, ${m.frames.length} keystrokes: median ${fmt(median(m.frames.map((f) => f.frame)))} ms to the next frame, ` +
-      `${fmt(median(m.frames.map((f) => f.drawn)))} ms to drawn (max ${fmt(Math.max(...m.frames.map((f) => f.drawn)))}); ` +
-      `plan+transfer ${fmt(median(m.updates.map((u) => u.plan)))} ms, lists+draw ${fmt(median(m.updates.map((u) => u.draw)))} ms`,
-  );
-  const part = (k) => fmt(median(m.updates.map((u) => u[k] || 0)));
-  console.log(`  parts: lint ${part('lint')} ms, lists ${part('lists')} ms, views ${part('views')} ms, highlight ${part('highlight')} ms`);
+  /** Types `keys` one by one at the end of the line with `lineText` (or before its ';') and reports the timings. */
+  const measure = async (what, lineText, keys, beforeSemicolon) => {
+    await page.locator('.cm-line', { hasText: lineText }).first().click();
+    await page.keyboard.press('End');
+    if (beforeSemicolon) await page.keyboard.press('ArrowLeft');
+    await page.evaluate(() => {
+      window.__screwcut.frames.length = 0;
+      window.__screwcut.updates.length = 0;
+    });
+    for (const ch of keys) {
+      await page.keyboard.type(ch);
+      await page.waitForTimeout(60);
+    }
+    await page.waitForTimeout(200);
+    const m = await page.evaluate(() => ({ frames: window.__screwcut.frames, updates: window.__screwcut.updates }));
+    check(`every keystroke re-planned (${what})`, m.updates.length >= keys.length && m.frames.length >= keys.length, `${m.updates.length} updates, ${m.frames.length} frames`);
+    const med = (a, k) => fmt(median(a.map((x) => x[k] || 0)));
+    console.log(
+      `edit-to-frame, ${lines} lines, ${what}, ${m.frames.length} keystrokes: median ${med(m.frames, 'frame')} ms input to next frame ` +
+        `(max ${fmt(Math.max(...m.frames.map((f) => f.frame)))}), ${med(m.frames, 'drawn')} ms input to lists updated; ` +
+        `plan+transfer ${med(m.updates, 'plan')} ms, editor diagnostics ${med(m.updates, 'lint')} ms, lists ${med(m.updates, 'lists')} ms, canvas ${med(m.frames, 'canvas')} ms`,
+    );
+  };
+  await measure('typing a comment after the ;', 'G50 X100 Z100', ' edit-to-frame', false);
+  await measure('typing digits into the first pass X', 'X47.1', '2345', true);
   await page.screenshot({ path: path.join(shots, '4-5000-lines.png') });
 
   // ---- transfer: typed arrays vs serde-wasm-bindgen objects vs JSON ----

@@ -35,6 +35,7 @@ let start = 1;
 let pendingInput = null;
 let planQueued = false;
 let hover = null;
+let diagnosticsKey = -1; // key of the diagnostics the editor and the list show
 
 function settingsText() {
   const s = state.settings[state.dialect] || {};
@@ -59,9 +60,10 @@ function replan() {
   const t0 = performance.now();
   let r;
   try {
-    r = core.update(text, state.dialect, settingsText(), thread, start);
+    r = core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey);
   } catch (e) {
     // A planner failure (which must not happen) keeps the page and the last drawing.
+    diagnosticsKey = -1;
     probe.errors.push(String(e && e.message ? e.message : e));
     showCrash();
     return;
@@ -76,7 +78,8 @@ function replan() {
     const input = pendingInput;
     pendingInput = null;
     requestAnimationFrame(() => {
-      probe.frames.push({ drawn: t2 - input, frame: performance.now() - input });
+      const canvas = views.side.lastDraw + views.tooth.lastDraw + views.starts.lastDraw;
+      probe.frames.push({ drawn: t2 - input, frame: performance.now() - input, canvas });
     });
   }
 }
@@ -92,9 +95,17 @@ function apply(r) {
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
-  editor.setDiagnostics(r.diagnostics);
+  const changed = r.diagnostics !== null;
+  if (!changed) {
+    // Unchanged by line and column: the editor has mapped its own through the edit.
+    r.diagnostics = lastDiagnostics;
+  } else {
+    lastDiagnostics = r.diagnostics;
+    diagnosticsKey = r.diagnosticsKey;
+    editor.setDiagnostics(r.diagnostics);
+  }
   const t1 = performance.now();
-  renderDiagnostics(r.diagnostics);
+  if (changed) renderDiagnostics(r.diagnostics);
   renderThreads(r);
   renderSettingErrors(r.settingErrors);
   const t2 = performance.now();
@@ -118,6 +129,7 @@ function apply(r) {
     banner(null);
   }
   const t3 = performance.now();
+  views.side.setThread(thread);
   refreshHighlight();
   probe.parts = { lint: t1 - t0, lists: t2 - t1, views: t3 - t2, highlight: performance.now() - t3 };
   if (!probe.ready) {
@@ -157,6 +169,7 @@ function selectThread(ti, st = 1) {
   result.passes = s.passes;
   result.tooth = s.tooth;
   result.starts = s.starts;
+  views.side.setThread(ti);
   renderThreads(result);
   if (!(result.alarms > 0 && lastGood)) {
     views.tooth.setScene(s.tooth, false);
@@ -209,18 +222,25 @@ function renderThreads(r) {
   }
 }
 
-let lastDiags = '';
+let lastDiags = [];
+let lastDiagnostics = [];
+/** Updates the list item by item: an edit usually changes a few entries of many. */
 function renderDiagnostics(list) {
-  const html = list
-    .map(
-      (d, i) =>
-        `<li data-i="${i}" class="${d.severity}"><span class="pos">${d.line}:${d.column}</span><span class="sev">${t(d.severity)}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`,
-    )
-    .join('');
-  if (html !== lastDiags) {
-    lastDiags = html;
-    $('diagnostics').innerHTML = html;
+  const ul = $('diagnostics');
+  const html = list.map(
+    (d, i) =>
+      `<li data-i="${i}" class="${d.severity}"><span class="pos">${d.line}:${d.column}</span><span class="sev">${t(d.severity)}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`,
+  );
+  if (ul.children.length !== lastDiags.length) lastDiags = [];
+  if (lastDiags.length === 0 || Math.abs(html.length - lastDiags.length) > 200) {
+    ul.innerHTML = html.join('');
+  } else {
+    const n = Math.min(html.length, lastDiags.length);
+    for (let i = 0; i < n; i++) if (html[i] !== lastDiags[i]) ul.children[i].outerHTML = html[i];
+    for (let i = lastDiags.length - 1; i >= html.length; i--) ul.children[i].remove();
+    if (html.length > n) ul.insertAdjacentHTML('beforeend', html.slice(n).join(''));
   }
+  lastDiags = html;
   $('no-diagnostics').hidden = list.length > 0;
 }
 
@@ -432,9 +452,11 @@ async function main() {
   buildSettings();
 
   const tr = (key, value) => label(key, value);
-  const mk = (id, name) => new SceneView($(id), { styleNames, tr, onHover, onPick, name });
+  const mk = (id, name) => new SceneView($(id), { styleNames, tr, onHover, onPick, name, stretch: name === 'side' });
   views = { side: mk('side', 'side'), tooth: mk('tooth', 'tooth'), starts: mk('starts', 'starts') };
+  probe.views = views;
   bindViewBar('side-panel', views.side, 'side');
+  document.querySelector('#side-panel [data-act="stretch"]').setAttribute('aria-pressed', 'true');
   bindViewBar('tooth-panel', views.tooth, 'tooth');
   bindViewBar('starts-panel', views.starts, 'starts');
 
@@ -489,7 +511,8 @@ function finishSetup() {
     buildSettings();
     persist();
     lastTable = '';
-    lastDiags = '';
+    lastDiags = [];
+    renderDiagnostics(lastDiagnostics);
     replan();
   });
   $('thread').addEventListener('change', (e) => selectThread(Number(e.target.value), 1));

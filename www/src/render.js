@@ -8,6 +8,8 @@
 export const STRIDE = 10;
 const SHAPE = { polyline: 0, polygon: 1, circle: 2, arrow: 3, dim: 4, text: 5, marker: 6 };
 const ANCHORS = ['start', 'middle', 'end'];
+/** Above this many threads with dimensions, only the chosen thread's are drawn. */
+export const MAX_ANNOTATED = 6;
 
 /** Pens by style name; `role` colours (finish, spring) apply to pass items. */
 export const PENS = {
@@ -54,7 +56,13 @@ export function prepare(scene, styleNames) {
   const n = scene.items.length / STRIDE;
   const styles = new Array(n);
   for (let i = 0; i < n; i++) styles[i] = styleNames[scene.items[i * STRIDE + 1]];
-  scene.prepared = { labels, styles, count: n };
+  // Threads that carry dimensions and texts: many of them are drawn for the chosen thread only.
+  const annotated = new Set();
+  for (let i = 0; i < n; i++) {
+    const o = i * STRIDE;
+    if ((scene.items[o] === SHAPE.dim || scene.items[o] === SHAPE.text) && scene.items[o + 4]) annotated.add(scene.items[o + 4]);
+  }
+  scene.prepared = { labels, styles, count: n, annotated: annotated.size };
   return scene;
 }
 
@@ -123,6 +131,7 @@ export function drawScene(painter, scene, xf, opts) {
   const X = (x) => xf.tx + xf.sx * x;
   const Y = (y) => xf.ty - xf.sy * y;
   const hi = opts.highlight;
+  const placed = [];
   const view = { w: opts.width, h: opts.height };
   const penOf = (i) => {
     const o = i * STRIDE;
@@ -165,7 +174,19 @@ export function drawScene(painter, scene, xf, opts) {
         break;
       case SHAPE.text: {
         const s = labelText(scene, items[o + 8], opts.tr);
-        if (s) painter.text(X(coords[c]) + coords[c + 2], Y(coords[c + 1]) - coords[c + 3], s, pen, ANCHORS[items[o + 9]] || 'start', 'middle');
+        if (!s) break;
+        const x = X(coords[c]) + coords[c + 2];
+        const y = Y(coords[c + 1]) - coords[c + 3];
+        const anchor = ANCHORS[items[o + 9]] || 'start';
+        if (!glow) {
+          // Skip a text that would overprint one already drawn.
+          const w = painter.measure(s);
+          const x0 = anchor === 'start' ? x : anchor === 'end' ? x - w : x - w / 2;
+          const box = [x0, y - 7, x0 + w, y + 7];
+          if (placed.some((b) => box[0] < b[2] && b[0] < box[2] && box[1] < b[3] && b[1] < box[3])) break;
+          placed.push(box);
+        }
+        painter.text(x, y, s, pen, anchor, 'middle');
         break;
       }
       case SHAPE.marker:
@@ -208,7 +229,13 @@ export function drawScene(painter, scene, xf, opts) {
     const o = b.first * STRIDE;
     painter.paths(b.paths, items[o] === SHAPE.polygon, penOf(b.first));
   }
-  for (const i of rest) drawItem(i, false);
+  // With many threads, dimensions and texts of the chosen thread only.
+  const only = scene.prepared.annotated > MAX_ANNOTATED ? (opts.thread ?? 0) + 1 : 0;
+  for (const i of rest) {
+    const o = i * STRIDE;
+    if (only && items[o + 4] && items[o + 4] !== only && (items[o] === SHAPE.dim || items[o] === SHAPE.text)) continue;
+    drawItem(i, false);
+  }
   if (hi && hi.size && !opts.stale) for (const i of hi) if (i < count) drawItem(i, true);
   painter.end();
 }
@@ -270,11 +297,12 @@ function dimension(p, ax, ay, bx, by, offset, text, pen, view) {
   const [cx, cy] = visibleMiddle(x0, y0, x1, y1, view);
   const tx = cx + nx * 7 * sgn;
   const ty = cy + ny * 7 * sgn;
-  let anchor = 'middle';
-  let baseline = 'middle';
-  if (Math.abs(nx) > 0.7) anchor = nx * sgn > 0 ? 'start' : 'end';
-  else baseline = ny * sgn < 0 ? 'bottom' : 'top';
-  p.text(tx, ty, text, { ...pen, halo: true }, anchor, baseline);
+  if (Math.abs(nx) > 0.7) {
+    // A vertical dimension: the text runs along its line, reading upward.
+    p.text(cx + nx * 4 * sgn, cy, text, { ...pen, halo: true }, 'middle', nx * sgn > 0 ? 'top' : 'bottom', -90);
+    return;
+  }
+  p.text(tx, ty, text, { ...pen, halo: true }, 'middle', ny * sgn < 0 ? 'bottom' : 'top');
 }
 
 function visibleMiddle(x0, y0, x1, y1, view) {
@@ -374,17 +402,25 @@ export function canvasPainter(ctx) {
         ctx.stroke();
       }
     },
-    text(x, y, s, pen, anchor, baseline) {
+    text(x, y, s, pen, anchor, baseline, angle = 0) {
+      ctx.save();
+      ctx.translate(x, y);
+      if (angle) ctx.rotate((angle * Math.PI) / 180);
       ctx.textAlign = anchor === 'middle' ? 'center' : anchor === 'end' ? 'right' : 'left';
       ctx.textBaseline = baseline;
       if (pen.halo) {
         ctx.lineWidth = 3;
         ctx.strokeStyle = 'rgba(255,255,255,0.85)';
         ctx.setLineDash([]);
-        ctx.strokeText(s, x, y);
+        ctx.strokeText(s, 0, 0);
       }
       ctx.fillStyle = pen.text || pen.stroke || '#111827';
-      ctx.fillText(s, x, y);
+      ctx.fillText(s, 0, 0);
+      ctx.restore();
+    },
+    measure(s) {
+      ctx.font = FONT;
+      return ctx.measureText(s).width;
     },
   };
 }
@@ -437,10 +473,14 @@ export function svgPainter(width, height) {
     circle(x, y, r, pen) {
       out.push(`<circle cx="${f(x)}" cy="${f(y)}" r="${f(Math.max(r, 0))}" ${style(pen, true)}/>`);
     },
-    text(x, y, s, pen, anchor, baseline) {
+    text(x, y, s, pen, anchor, baseline, angle = 0) {
       const dominant = baseline === 'middle' ? 'central' : baseline === 'top' ? 'hanging' : 'text-after-edge';
       const halo = pen.halo ? ' stroke="white" stroke-width="3" paint-order="stroke"' : '';
-      out.push(`<text x="${f(x)}" y="${f(y)}" text-anchor="${anchor}" dominant-baseline="${dominant}" fill="${pen.text || pen.stroke || '#111827'}"${halo}>${esc(s)}</text>`);
+      const rot = angle ? ` transform="rotate(${angle} ${f(x)} ${f(y)})"` : '';
+      out.push(`<text x="${f(x)}" y="${f(y)}" text-anchor="${anchor}" dominant-baseline="${dominant}"${rot} fill="${pen.text || pen.stroke || '#111827'}"${halo}>${esc(s)}</text>`);
+    },
+    measure(s) {
+      return s.length * 7;
     },
     svg() {
       return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="system-ui, sans-serif" font-size="12">\n<rect width="100%" height="100%" fill="white"/>\n${out.join('\n')}\n</svg>\n`;

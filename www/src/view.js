@@ -18,8 +18,9 @@ export class SceneView {
     this.stale = false;
     this.xf = null;
     this.auto = true; // refit on every new scene until the user pans or zooms
-    this.stretch = false;
+    this.stretch = !!opts.stretch;
     this.highlight = null;
+    this.thread = 0;
     this.hovered = -1;
     this.lastDraw = 0;
     const ro = new ResizeObserver(() => this.resize());
@@ -74,6 +75,14 @@ export class SceneView {
     return this.xf;
   }
 
+  /** The chosen thread (its dimensions are drawn when the scene has many threads). */
+  setThread(t) {
+    if (t !== this.thread) {
+      this.thread = t;
+      this.draw();
+    }
+  }
+
   /** Highlights items: a Set of item indices, or null. */
   setHighlight(set) {
     this.highlight = set;
@@ -112,6 +121,7 @@ export class SceneView {
       tr: this.opts.tr,
       styleNames: this.opts.styleNames,
       highlight: this.highlight,
+      thread: this.thread,
       stale: this.stale,
       width: this.cssW,
       height: this.cssH,
@@ -127,6 +137,7 @@ export class SceneView {
       tr: this.opts.tr,
       styleNames: this.opts.styleNames,
       highlight: null,
+      thread: this.thread,
       stale: false,
       width: this.cssW,
       height: this.cssH,

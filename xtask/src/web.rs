@@ -167,7 +167,7 @@ fn smoke_test(wasm: &Path) -> Result {
         "import fs from 'node:fs';\
          const m = await import({glue:?});\
          m.initSync({{ module: fs.readFileSync({wasm:?}) }});\
-         const r = m.update('G00 X58 Z70\\nX47.1\\nG32 Z13 F2\\nG00 X58\\nZ70\\n', 'gsk980tdc', '', 0, 1);\
+         const r = m.update('G00 X58 Z70\\nX47.1\\nG32 Z13 F2\\nG00 X58\\nZ70\\n', 'gsk980tdc', '', 0, 1, -1);\
          if (r.threads.length !== 1 || r.side.items.length === 0) throw new Error('the optimised wasm plans wrongly');",
         glue = format!("file://{}", path_str(&glue)?),
         wasm = path_str(wasm)?,
