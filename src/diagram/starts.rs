@@ -72,7 +72,7 @@ pub fn starts(plan: &Plan, ti: usize) -> Option<Scene> {
     }
     let caption = Label::new("axial_offsets", "");
     scene.push(
-        own(Shape::Text { at: [RULER_X, -0.95], label: caption, anchor: Anchor::Start, dx: 0.0, dy: 0.0 }, Style::Note),
+        own(Shape::Text { at: [RULER_X, -1.3], label: caption, anchor: Anchor::Start, dx: 0.0, dy: 0.0 }, Style::Note),
         true,
     );
     let lead_dim = Shape::Dim {

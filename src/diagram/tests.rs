@@ -392,3 +392,51 @@ fn arcs_are_tessellated_on_their_circle() {
     }
     assert_eq!(*pts.last().unwrap(), side::world(arc.to));
 }
+
+#[test]
+fn g78_alternating_example_draws_screw_in_run_out_and_true_areas() {
+    let text = include_str!("../../examples/g78-flank-alternating.nc");
+    let plan = plan_default(text, Dialect::Gsk980tdc);
+    let t = &plan.threads[0];
+    assert_eq!((t.passes.len(), t.infeed), (5, Infeed::Alternating));
+    let paths = pass_paths(&plan);
+    assert_eq!(paths.len(), 5);
+    // Pass 1: the rapid from A (35, 5), then screw-in, thread and run-out, then retract and return.
+    assert_eq!((paths[0].lead_in.clone(), paths[0].cut.clone(), paths[0].tail.clone()), (0..1, 1..4, 4..6));
+    for (k, p) in paths.iter().enumerate().skip(1) {
+        assert_eq!(p.lead_in.len(), 1, "pass {k}: one infeed rapid");
+        assert_eq!(p.cut.len(), 3, "pass {k}: screw-in, thread, run-out");
+    }
+    let scene = side(&plan);
+    let styles: Vec<Style> = scene.of_pass(0, 0).map(|i| i.style).collect();
+    assert_eq!(
+        styles,
+        vec![
+            Style::Rapid,
+            Style::ScrewIn,
+            Style::Cut,
+            Style::Runout,
+            Style::Rapid,
+            Style::Rapid,
+            Style::Runout,
+            Style::ScrewIn
+        ]
+    );
+    let screw = scene.of_pass(0, 0).find(|i| i.style == Style::ScrewIn).unwrap();
+    let pts = polyline(screw);
+    let want = [[4.42265, 15.0], [2.42265, 14.7]];
+    assert!(pts.iter().zip(&want).all(|(a, b)| (a[0] - b[0]).abs() < 1e-5 && (a[1] - b[1]).abs() < 1e-9), "{pts:?}");
+    // Tooth: each pass's area is what it removes beyond the earlier passes. Passes
+    // 1 and 2 sit on opposite flanks and do not overlap: each removes a whole V.
+    let tool = tooth::tool_of(t, t.pitch);
+    let passes: Vec<(usize, &Pass)> = t.passes.iter().enumerate().collect();
+    let (list, _) = cuts(tool, &passes, -4.0, 4.0);
+    let tan30 = 30f64.to_radians().tan();
+    assert!((list[0].area - tan30 * 0.09).abs() < 1e-5, "{}", list[0].area);
+    assert!((list[1].area - tan30 * 0.36).abs() < 1e-5, "{}", list[1].area);
+    let total: f64 = list.iter().map(|c| c.area).sum();
+    assert!((total - tan30 * 1.69).abs() < 1e-5, "all passes remove the full space: {total}");
+    let scene = tooth(&plan, 0, 1).unwrap();
+    let arrows = scene.items.iter().filter(|i| matches!(i.shape, Shape::Arrow { .. })).count();
+    assert_eq!(arrows, 2, "alternating: one arrow per flank");
+}
