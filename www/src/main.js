@@ -14,7 +14,7 @@ const num = (v) => (v === undefined || v === null ? '' : String(Math.round(v * 1
 const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 
 /** What the test and the curious can look at: timings and state. */
-const probe = { ready: false, updates: [], frames: [], errors: [], result: null };
+const probe = { ready: false, updates: [], frames: [], errors: [], result: null, editorAt: null };
 window.__screwcut = probe;
 
 const state = {
@@ -79,12 +79,14 @@ function replan() {
     pendingInput = null;
     requestAnimationFrame(() => {
       const canvas = views.side.lastDraw + views.tooth.lastDraw + views.starts.lastDraw;
-      probe.frames.push({ drawn: t2 - input, frame: performance.now() - input, canvas });
+      probe.frames.push({ drawn: t2 - input, frame: performance.now() - input, canvas, editor: probe.editorAt });
+      probe.editorAt = null;
     });
   }
 }
 
 function queuePlan() {
+  if (pendingInput !== null && probe.editorAt === null) probe.editorAt = performance.now() - pendingInput;
   if (planQueued) return;
   planQueued = true;
   queueMicrotask(replan);
@@ -432,7 +434,8 @@ async function main() {
   await init({ module_or_path: new URL('screwcut_bg.wasm', document.baseURI) });
   styleNames = core.style_names();
   probe.core = core;
-  const saved = decodeFragment(location.hash) || load();
+  const linked = decodeFragment(location.hash);
+  const saved = linked || load();
   if (saved) {
     if (typeof saved.dialect === 'string') state.dialect = saved.dialect;
     if (saved.settings && typeof saved.settings === 'object') state.settings = saved.settings;
@@ -442,6 +445,11 @@ async function main() {
     state.lang = 'zh';
   }
   if (!core.dialects().some((d) => d.name === state.dialect)) state.dialect = 'gsk980tdc';
+  if (linked) {
+    // The link's program becomes the kept one; a reload shows later edits, not the link again.
+    save(state);
+    history.replaceState(null, '', location.pathname + location.search);
+  }
   setLang(state.lang);
   $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
   $('dialect').innerHTML = core
@@ -543,6 +551,7 @@ function finishSetup() {
       if (s.settings) state.settings = s.settings;
       buildSettings();
       editor.setText(s.program);
+      history.replaceState(null, '', location.pathname + location.search);
     }
   });
 }
