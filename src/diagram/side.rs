@@ -380,7 +380,7 @@ fn thread_items(plan: &Plan, ti: usize, t: &Thread, back: &mut Vec<(Item, bool)>
             if t.internal { (r, c) } else { (c, r) }
         };
         // Diameters at the cut's end, beyond it.
-        for (r, key, off) in [(minor_r, "dia_minor", 22.0), (major_r, "dia_major", 44.0)] {
+        for (r, key, off) in [(minor_r, "dia_minor", 18.0), (major_r, "dia_major", 36.0)] {
             let shape = Shape::Dim {
                 a: [band.l1, 0.0],
                 b: [band.l1, r],

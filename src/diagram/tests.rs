@@ -277,6 +277,7 @@ fn tooth_areas_match_the_plan_and_follow_the_flank() {
     let tx = texts(&scene);
     assert!(tx.contains(&("start_of", "1/2".into())), "{tx:?}");
     assert!(tx.contains(&("pass_depth_finish", "4: 1.1".into())), "{tx:?}");
+    assert!(tx.contains(&("pass_depth", "1: 0.5 ↔-0.3464".into())), "the shift is written: {tx:?}");
     assert!(tx.contains(&("infeed_left", String::new())), "{tx:?}");
     let arrow = scene
         .items

@@ -121,7 +121,12 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
                 Role::Finish => "pass_depth_finish",
                 Role::Spring => "pass_depth_spring",
             };
-            let label = Label::new(key, format!("{}: {}", p.index, num(d)));
+            let value = if s.abs() > 1e-9 {
+                format!("{}: {} ↔{}{}", p.index, num(d), if s > 0.0 { "+" } else { "" }, num(s))
+            } else {
+                format!("{}: {}", p.index, num(d))
+            };
+            let label = Label::new(key, value);
             let text = Shape::Text { at: pt(l + tick, -d), label, anchor: Anchor::Start, dx: 4.0, dy: 0.0 };
             scene.push(of(Item::new(text, Style::DepthTick)), false);
         }
