@@ -441,3 +441,24 @@ fn g78_alternating_example_draws_screw_in_run_out_and_true_areas() {
     let arrows = scene.items.iter().filter(|i| matches!(i.shape, Shape::Arrow { .. })).count();
     assert_eq!(arrows, 2, "alternating: one arrow per flank");
 }
+
+#[test]
+fn face_thread_is_drawn_along_x() {
+    let text = "G00 X62 Z5\nZ-0.5\nG32 X20 F2\nG00 Z5\nX62\nZ-1\nG32 X20 F2\nG00 Z5\nX62\nM30\n";
+    let plan = plan_default(text, Dialect::Gsk980tdc);
+    assert_eq!(plan.threads[0].kind, ThreadKind::Face);
+    let scene = side(&plan);
+    let cuts: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Cut).collect();
+    assert_eq!(polyline(cuts[1]), &[[-1.0, 31.0], [-1.0, 10.0]]);
+    // The crest is a face at Z0.3 (assumed), the root at Z-1, both from radius 10 to 31.
+    let crest = scene.items.iter().find(|i| i.style == Style::Crest).unwrap();
+    assert!(
+        polyline(crest).iter().zip([[0.3, 10.0], [0.3, 31.0]]).all(|(p, q)| close(p[0], q[0]) && close(p[1], q[1]))
+    );
+    let root = scene.items.iter().find(|i| i.style == Style::Root).unwrap();
+    assert!(polyline(root).iter().all(|p| close(p[0], -1.0)));
+    let d = dims(&scene);
+    assert!(d.contains(&("height", "1.3".into())) && d.contains(&("lead", "2".into())), "{d:?}");
+    assert!(!d.iter().any(|(k, _)| k.starts_with("dia_")), "no diameters on a face thread: {d:?}");
+    assert!(tooth(&plan, 0, 1).is_some());
+}
