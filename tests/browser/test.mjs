@@ -116,7 +116,27 @@ try {
     const px = await inked(id);
     check(`${id} canvas is drawn (${px.n} inked pixels of ${px.w}×${px.h})`, px.n > 500 && px.w > 100 && px.h > 100);
   }
+  // Hovering the first cut in the side view marks its line and shows a tooltip.
+  const at = await page.evaluate(() => {
+    const v = window.__screwcut.views.side;
+    const s = v.scene;
+    const names = s.prepared.styles;
+    const i = names.indexOf('cut');
+    const c = s.items[i * 10 + 2];
+    const xf = v.transform();
+    const r = v.canvas.getBoundingClientRect();
+    const x = (s.coords[c] + s.coords[c + 2]) / 2;
+    const y = s.coords[c + 1];
+    return { x: r.left + xf.tx + xf.sx * x, y: r.top + xf.ty - xf.sy * y };
+  });
+  await page.mouse.move(at.x, at.y);
+  await page.waitForTimeout(100);
+  const hoverMarked = await page.locator('.cm-line.cm-marked').allTextContents();
+  check('hovering pass 1 in the side view marks its lines', hoverMarked.some((t) => t.includes('N40 G32')), JSON.stringify(hoverMarked));
+  const tipText = (await page.locator('#tip').isVisible()) ? await page.locator('#tip').textContent() : '';
+  check('and shows the pass in a tooltip', tipText.includes('X47.1') && tipText.includes('0.45'), tipText);
   await page.screenshot({ path: path.join(shots, '1-o1006.png') });
+  await page.mouse.move(5, 5);
 
   // ---- edit: type a sixth pass after N200 ----
   await page.locator('.cm-line', { hasText: 'N200 G32' }).click();

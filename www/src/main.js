@@ -270,6 +270,33 @@ function refreshHighlight() {
 function onHover(info) {
   hover = info;
   refreshHighlight();
+  tip(info);
+}
+
+/** A tooltip for what the pointer is over in a drawing. */
+function tip(info) {
+  const el = $('tip');
+  if (!info || info.x === undefined) {
+    el.hidden = true;
+    return;
+  }
+  let text = `${t('col_lines')} ${info.lines.join(', ')}`;
+  const p = info.pass >= 0 && info.thread === thread && result && result.passes ? result.passes[info.pass] : null;
+  if (p) {
+    text =
+      `${t('thread')} ${info.thread + 1} · ${t('col_pass')} ${p.index}` +
+      (p.start > 1 || (result.threads[thread] && result.threads[thread].starts > 1) ? ` · ${t('col_start')} ${p.start}` : '') +
+      ` · X${num(p.from[0])} Z${num(p.from[1])}→${num(p.to[1])} · ${t('col_depth')} ${num(p.depth)} · ${t(p.role)} · ${text}`;
+  }
+  el.textContent = text;
+  el.hidden = false;
+  moveTip(info.x, info.y);
+}
+
+function moveTip(x, y) {
+  const el = $('tip');
+  el.style.left = `${Math.min(x + 14, window.innerWidth - el.offsetWidth - 8)}px`;
+  el.style.top = `${y + 16}px`;
 }
 
 function onPick(info) {
@@ -460,7 +487,8 @@ async function main() {
   buildSettings();
 
   const tr = (key, value) => label(key, value);
-  const mk = (id, name) => new SceneView($(id), { styleNames, tr, onHover, onPick, name, stretch: name === 'side' });
+  const mk = (id, name) =>
+    new SceneView($(id), { styleNames, tr, onHover, onPick, onMove: moveTip, name, stretch: name === 'side' });
   views = { side: mk('side', 'side'), tooth: mk('tooth', 'tooth'), starts: mk('starts', 'starts') };
   probe.views = views;
   bindViewBar('side-panel', views.side, 'side');
@@ -532,6 +560,7 @@ function finishSetup() {
     const i = Number(tr.dataset.pass);
     const p = result.passes[i];
     if (p) onHover({ thread, pass: i, lines: p.lines });
+    $('tip').hidden = true;
   });
   tbody.addEventListener('mouseleave', () => onHover(null));
   tbody.addEventListener('click', (e) => {

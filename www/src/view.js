@@ -223,7 +223,9 @@ export class SceneView {
       if (i !== this.hovered) {
         this.hovered = i;
         c.style.cursor = i >= 0 ? 'pointer' : 'grab';
-        this.opts.onHover(i >= 0 ? itemInfo(this.scene, i) : null);
+        this.opts.onHover(i >= 0 ? { ...itemInfo(this.scene, i), x: e.clientX, y: e.clientY } : null);
+      } else if (i >= 0 && this.opts.onMove) {
+        this.opts.onMove(e.clientX, e.clientY);
       }
     });
     c.addEventListener('pointerup', (e) => {
