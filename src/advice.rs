@@ -151,10 +151,10 @@ fn finish_one(
     let pitch_mm = t.pitch * mm;
     let std_depth = s.get(P::DepthFactor) * pitch_mm; // diameter, mm
     match &outline {
-        None => diags.push(
+        None => diags.push_with(
             Code::CrestAssumed,
             span,
-            format!(
+            || format!(
                 "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; δ1/δ2 are not checked",
                 if t.internal { "minor" } else { "major" },
                 fmt(t.crest),
@@ -164,10 +164,10 @@ fn finish_one(
         Some(_) => {
             let programmed = 2.0 * max_depth * mm;
             if (programmed - std_depth).abs() > 0.02 * std_depth.max(0.05) {
-                diags.push(
+                diags.push_with(
                     Code::DepthVsStandard,
                     span,
-                    format!(
+                    || format!(
                         "total depth {} (diameter) against {}·P = {} for pitch {}: the thread is {}",
                         fmt(programmed / mm),
                         fmt(s.get(P::DepthFactor)),
@@ -184,9 +184,7 @@ fn finish_one(
             let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
             let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
             let matches = infeeds.len() == table.len() && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
-            diags.push(
-                Code::InfeedGuidance,
-                span,
+            diags.push_with(Code::InfeedGuidance, span, || {
                 format!(
                     "table 4-3 for pitch {}: {} passes, diameter infeeds {}; programmed: {} passes, {}{}",
                     fmt(pitch_mm),
@@ -195,24 +193,26 @@ fn finish_one(
                     infeeds.len(),
                     list(&infeeds),
                     if matches { " (as the table)" } else { "" }
-                ),
-            );
+                )
+            });
             let largest = table[0];
             // The first infeed is only known when the crest is (from the outline).
             let known = |p: &&crate::thread::Pass| p.index > 1 || outline.is_some();
             for p in t.passes.iter().filter(known) {
                 let inf = 2.0 * p.infeed * mm;
                 if inf > largest + 1e-3 {
-                    diags.push(
+                    diags.push_with(
                         Code::InfeedTooLarge,
                         spans(p.lines.iter().copied().find(|l| *l >= t.line).unwrap_or(t.line)),
-                        format!(
-                            "pass {} takes {} of diameter at once; table 4-3 starts pitch {} with {}",
-                            p.index,
-                            fmt(inf),
-                            fmt(pitch_mm),
-                            fmt(largest)
-                        ),
+                        || {
+                            format!(
+                                "pass {} takes {} of diameter at once; table 4-3 starts pitch {} with {}",
+                                p.index,
+                                fmt(inf),
+                                fmt(pitch_mm),
+                                fmt(largest)
+                            )
+                        },
                     );
                 }
             }
@@ -306,10 +306,10 @@ fn clearance(
     let toward_minus = b < a;
     let (d1, d2) = if toward_minus { (a - hi, lo - b) } else { (lo - a, b - hi) };
     if d1 * mm < 2.0 - 1e-9 {
-        diags.push(
+        diags.push_with(
             Code::Clearance,
             span,
-            if d1 < 0.0 {
+            || if d1 < 0.0 {
                 format!("the pass starts {} inside the work: the lead-in δ1 must keep the acceleration off the thread (textbook: 2–10 mm)", fmt(-d1))
             } else {
                 format!("lead-in δ1 = {} is shorter than the textbook's 2–10 mm (larger for larger leads): the first turns are cut while the axis accelerates", fmt(d1))
@@ -317,10 +317,8 @@ fn clearance(
         );
     }
     if d2 > 0.0 && d1 > 0.0 && d2 < d1 / 4.0 - 1e-9 {
-        diags.push(
-            Code::Clearance,
-            span,
-            format!("run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)", fmt(d2), fmt(d1 / 4.0)),
-        );
+        diags.push_with(Code::Clearance, span, || {
+            format!("run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)", fmt(d2), fmt(d1 / 4.0))
+        });
     }
 }

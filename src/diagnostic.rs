@@ -216,6 +216,15 @@ impl Diagnostics {
         }
     }
 
+    /// Records a diagnostic whose message is only formatted when it will be kept.
+    pub fn push_with(&mut self, code: Code, span: Span, message: impl FnOnce() -> String) {
+        if self.items.len() < self.limit {
+            self.items.push((code, message(), span));
+        } else {
+            self.dropped += 1;
+        }
+    }
+
     /// Whether an error-level diagnostic was recorded.
     pub fn has_error(&self) -> bool {
         self.items.iter().any(|(c, _, _)| c.severity() == Severity::Error)

@@ -50,16 +50,27 @@ impl Dialect {
 
     /// Whether `letter` (uppercase ASCII) is an address of this dialect.
     pub fn has_address(self, letter: u8) -> bool {
-        let set: &[u8] = match self {
-            // GSK980TDc programming addresses (no B, V, Y on a two-axis lathe).
-            Dialect::Gsk980tdc => b"ACDEFGHIJKLMNOPQRSTUWXZ",
-            // Fanuc 0i-TF, two-axis lathe, G-code system A.
-            Dialect::Fanuc0i => b"ABCDEFGHIJKLMNOPQRSTUWXZ",
-            // Renhe economy controller.
-            Dialect::Renhe => b"FGIKLMNOPQRSTUWXZ",
+        const GSK: u32 = letters(b"ACDEFGHIJKLMNOPQRSTUWXZ"); // no B, V, Y on a two-axis lathe
+        const FANUC: u32 = letters(b"ABCDEFGHIJKLMNOPQRSTUWXZ"); // 0i-TF, two axes, G-code system A
+        const RENHE: u32 = letters(b"FGIKLMNOPQRSTUWXZ");
+        let set = match self {
+            Dialect::Gsk980tdc => GSK,
+            Dialect::Fanuc0i => FANUC,
+            Dialect::Renhe => RENHE,
         };
-        set.contains(&letter)
+        letter.is_ascii_uppercase() && set & (1 << (letter - b'A')) != 0
     }
+}
+
+/// A set of upper-case letters as a bit mask (bit 0 = A).
+pub const fn letters(s: &[u8]) -> u32 {
+    let mut m = 0;
+    let mut i = 0;
+    while i < s.len() {
+        m |= 1 << (s[i] - b'A');
+        i += 1;
+    }
+    m
 }
 
 impl std::fmt::Display for Dialect {

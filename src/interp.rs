@@ -154,11 +154,17 @@ const ALWAYS: &[u8] = b"GMSTF";
 impl<'a> Interp<'a> {
     /// A fresh interpreter.
     pub fn new(s: &'a Settings) -> Interp<'a> {
+        Self::with_capacity(s, 0)
+    }
+
+    /// A fresh interpreter expecting a program of `bytes` bytes.
+    pub fn with_capacity(s: &'a Settings, bytes: usize) -> Interp<'a> {
         Interp {
             s,
             dialect: s.dialect(),
             diags: Diagnostics::with_limit(s.int(P::LimitDiagnostics).max(1) as usize),
-            moves: Vec::new(),
+            // About one motion per 8 bytes of a typical program; capped by the move limit.
+            moves: Vec::with_capacity((bytes / 8).min(s.int(P::LimitMoves).max(0) as usize).min(1 << 24)),
             threads: Vec::new(),
             pos: Position::default(),
             motion: Motion::None,
@@ -260,9 +266,7 @@ impl<'a> Interp<'a> {
             let inc = self.s.length_increment(self.inch);
             let v = w.value() * inc;
             let unit = if self.inch { "in" } else { "mm" };
-            self.diag(
-                Code::NoDecimalPoint,
-                w.span,
+            self.diags.push_with(Code::NoDecimalPoint, w.span, || {
                 format!(
                     "{} has no decimal point: with parameter 3401#0 (DPI) = 0 it means {} {unit}, not {} {unit}; write {}{}. if you meant {}",
                     w.display(),
@@ -271,8 +275,8 @@ impl<'a> Interp<'a> {
                     w.letter(),
                     fmt(w.value()),
                     fmt(w.value())
-                ),
-            );
+                )
+            });
             v
         } else {
             w.value()
@@ -359,9 +363,10 @@ impl<'a> Interp<'a> {
     /// Checks that `b` has only words from `allowed` (plus G/M/S/T/F);
     /// reports each other word and returns false if there was one.
     pub fn check_words(&mut self, b: &Block, allowed: &[u8], what: &str) -> bool {
+        let mask = crate::dialect::letters(ALWAYS) | crate::dialect::letters(allowed);
         let mut ok = true;
         for w in &b.words {
-            if !ALWAYS.contains(&w.letter) && !allowed.contains(&w.letter) {
+            if mask & (1 << (w.letter - b'A')) == 0 {
                 self.diag(Code::UnexpectedWord, w.span, format!("{what} does not take {}", w.display()));
                 ok = false;
             }
@@ -393,7 +398,9 @@ impl<'a> Interp<'a> {
             return;
         }
         // ---- G codes ----
-        let mut seen: Vec<(Group, G, &Word)> = Vec::with_capacity(3);
+        // At most one code per modal group: a small array, no allocation per block.
+        let mut seen_buf: [Option<(Group, G, &Word)>; 16] = [None; 16];
+        let mut n_seen = 0;
         for w in b.all(b'G') {
             let v10 = w.value() * 10.0;
             let code = if v10 >= 0.0 && (v10 - v10.round()).abs() < 1e-9 {
@@ -410,7 +417,9 @@ impl<'a> Interp<'a> {
                 self.end_thread_chain();
                 return;
             };
-            if let Some((_, _, other)) = seen.iter().find(|(gr, _, _)| *gr == group && group != Group::Setup) {
+            if let Some((_, _, other)) =
+                seen_buf[..n_seen].iter().flatten().find(|(gr, _, _)| *gr == group && group != Group::Setup)
+            {
                 self.diag(
                     Code::ConflictingGCodes,
                     w.span,
@@ -419,8 +428,12 @@ impl<'a> Interp<'a> {
                 self.end_thread_chain();
                 return;
             }
-            seen.push((group, g, w));
+            if n_seen < seen_buf.len() {
+                seen_buf[n_seen] = Some((group, g, w));
+                n_seen += 1;
+            }
         }
+        let seen = &seen_buf[..n_seen];
         if self.axis_conflict(b) {
             self.end_thread_chain();
             return;
@@ -428,7 +441,7 @@ impl<'a> Interp<'a> {
         // ---- modal settings that take effect before motion ----
         let mut motion_g = None;
         let mut one_shot = None;
-        for &(group, g, w) in &seen {
+        for &(group, g, w) in seen.iter().flatten() {
             match g {
                 G::Inch | G::Metric => {
                     let inch = g == G::Inch;

@@ -37,6 +37,60 @@ struct Ch {
 
 const OTHER: u8 = 0x80;
 
+/// The characters of one line as the lexer sees them: a folded byte, its
+/// original offset and whether it was folded; index `end()` is a NUL sentinel.
+trait Src {
+    fn b(&self, i: usize) -> u8;
+    fn at(&self, i: usize) -> usize;
+    fn folded(&self, i: usize) -> bool;
+    fn end(&self) -> usize;
+}
+
+/// An ASCII line: bytes are characters, no copy needed.
+struct Ascii<'a> {
+    bytes: &'a [u8],
+    base: usize,
+}
+
+impl Src for Ascii<'_> {
+    #[inline]
+    fn b(&self, i: usize) -> u8 {
+        *self.bytes.get(i).unwrap_or(&0)
+    }
+    #[inline]
+    fn at(&self, i: usize) -> usize {
+        self.base + i.min(self.bytes.len())
+    }
+    #[inline]
+    fn folded(&self, _: usize) -> bool {
+        false
+    }
+    #[inline]
+    fn end(&self) -> usize {
+        self.bytes.len()
+    }
+}
+
+/// A line with non-ASCII characters, decoded and folded (with a sentinel).
+impl Src for &[Ch] {
+    #[inline]
+    fn b(&self, i: usize) -> u8 {
+        self[i].b
+    }
+    #[inline]
+    fn at(&self, i: usize) -> usize {
+        self[i].at as usize
+    }
+    #[inline]
+    fn folded(&self, i: usize) -> bool {
+        self[i].folded
+    }
+    #[inline]
+    fn end(&self) -> usize {
+        self.len() - 1
+    }
+}
+
 /// Folds a non-ASCII character to its ASCII twin when it has one.
 fn fold(c: char) -> Option<u8> {
     let u = c as u32;
@@ -57,18 +111,24 @@ pub struct Lexer<'a> {
     dialect: Dialect,
     limits: LexLimits,
     chars: Vec<Ch>,
+    starts: Vec<u32>,
 }
 
 impl<'a> Lexer<'a> {
     /// A lexer over `text` for `dialect`.
     pub fn new(text: &'a str, dialect: Dialect, limits: LexLimits) -> Lexer<'a> {
         let pos = if text.starts_with('\u{FEFF}') { 3 } else { 0 };
-        Lexer { text, pos, line: 0, dialect, limits, chars: Vec::with_capacity(128) }
+        Lexer { text, pos, line: 0, dialect, limits, chars: Vec::with_capacity(128), starts: Vec::new() }
     }
 
     /// Byte offset of the next unread line.
     pub fn offset(&self) -> usize {
         self.pos
+    }
+
+    /// Byte offsets of the starts of the lines read so far (for a [`crate::span::LineIndex`]).
+    pub fn take_line_starts(&mut self) -> Vec<u32> {
+        std::mem::take(&mut self.starts)
     }
 
     /// Resumes lexing at byte `offset`, which must be a line start, as 1-based `line`.
@@ -86,7 +146,10 @@ impl<'a> Lexer<'a> {
         }
         let start = self.pos;
         let bytes = text.as_bytes();
-        let rel = bytes[start..].iter().position(|&b| b == b'\n' || b == b'\r');
+        let rel = memchr::memchr2(b'\n', b'\r', &bytes[start..]);
+        if self.starts.len() < u32::MAX as usize {
+            self.starts.push(start as u32);
+        }
         let end = rel.map_or(bytes.len(), |r| start + r);
         self.pos = match rel {
             None => bytes.len() + 1,
@@ -100,66 +163,54 @@ impl<'a> Lexer<'a> {
     }
 
     fn lex_line(&mut self, line: &str, base: usize, block: &mut Block, diags: &mut Diagnostics) {
-        // Decode once into folded characters.
-        self.chars.clear();
-        let mut nchars = 0usize;
-        if line.is_ascii() {
-            nchars = line.len();
-            if nchars <= self.limits.block_chars {
-                self.chars.extend(line.bytes().enumerate().map(|(i, b)| Ch {
-                    b,
-                    folded: false,
-                    at: (base + i) as u32,
-                }));
-            }
-        } else {
-            for (i, c) in line.char_indices() {
-                nchars += 1;
-                if nchars > self.limits.block_chars {
-                    break;
-                }
-                let (b, folded) = if c.is_ascii() {
-                    (c as u8, false)
-                } else {
-                    match fold(c) {
-                        Some(b) => (b, true),
-                        None => (OTHER, false),
-                    }
-                };
-                self.chars.push(Ch { b, folded, at: (base + i) as u32 });
-            }
-        }
-        let end = (base + line.len()) as u32;
-        if nchars > self.limits.block_chars {
+        let too_long = |n: usize, diags: &mut Diagnostics, block: &mut Block, limit: usize| {
             diags.push(
                 Code::BlockTooLong,
                 Span::new(base, base + line.len()),
-                format!(
-                    "block of {nchars} characters is longer than the limit of {} (setting limits.block_chars); it is skipped",
-                    self.limits.block_chars
-                ),
+                format!("block of {n} characters is longer than the limit of {limit} (setting limits.block_chars); it is skipped"),
             );
             block.has_error = true;
+        };
+        if line.is_ascii() {
+            if line.len() > self.limits.block_chars {
+                too_long(line.len(), diags, block, self.limits.block_chars);
+                return;
+            }
+            let src = Ascii { bytes: line.as_bytes(), base };
+            LineLexer::new(src, self.text, self.dialect, self.limits).run(block, diags);
             return;
         }
-        self.chars.push(Ch { b: 0, folded: false, at: end });
-        let chars = std::mem::take(&mut self.chars);
-        LineLexer {
-            chars: &chars,
-            i: 0,
-            text: self.text,
-            dialect: self.dialect,
-            limits: self.limits,
-            first_fold: None,
-            last_fold: None,
+        // Decode once into folded characters.
+        self.chars.clear();
+        let mut nchars = 0usize;
+        for (i, c) in line.char_indices() {
+            nchars += 1;
+            if nchars > self.limits.block_chars {
+                continue; // keep counting for the message
+            }
+            let (b, folded) = if c.is_ascii() {
+                (c as u8, false)
+            } else {
+                match fold(c) {
+                    Some(b) => (b, true),
+                    None => (OTHER, false),
+                }
+            };
+            self.chars.push(Ch { b, folded, at: (base + i) as u32 });
         }
-        .run(block, diags);
+        if nchars > self.limits.block_chars {
+            too_long(nchars, diags, block, self.limits.block_chars);
+            return;
+        }
+        self.chars.push(Ch { b: 0, folded: false, at: (base + line.len()) as u32 });
+        let chars = std::mem::take(&mut self.chars);
+        LineLexer::new(&chars[..], self.text, self.dialect, self.limits).run(block, diags);
         self.chars = chars;
     }
 }
 
-struct LineLexer<'c> {
-    chars: &'c [Ch],
+struct LineLexer<'c, S: Src> {
+    src: S,
     i: usize,
     text: &'c str,
     dialect: Dialect,
@@ -168,33 +219,40 @@ struct LineLexer<'c> {
     last_fold: Option<usize>,
 }
 
-impl LineLexer<'_> {
-    fn peek(&self) -> u8 {
-        self.chars[self.i].b
+impl<'c, S: Src> LineLexer<'c, S> {
+    fn new(src: S, text: &'c str, dialect: Dialect, limits: LexLimits) -> Self {
+        LineLexer { src, i: 0, text, dialect, limits, first_fold: None, last_fold: None }
     }
 
+    #[inline]
+    fn peek(&self) -> u8 {
+        self.src.b(self.i)
+    }
+
+    #[inline]
     fn at(&self, i: usize) -> usize {
-        self.chars[i].at as usize
+        self.src.at(i.min(self.src.end()))
     }
 
     /// Byte offset just after character `i`.
     fn after(&self, i: usize) -> usize {
-        self.chars[(i + 1).min(self.chars.len() - 1)].at as usize
+        self.at(i + 1)
     }
 
     fn span(&self, from: usize, to_excl: usize) -> Span {
-        Span::new(self.at(from), self.at(to_excl.min(self.chars.len() - 1)))
+        Span::new(self.at(from), self.at(to_excl))
     }
 
     /// Consumes one code character, noting full-width folds.
+    #[inline]
     fn bump(&mut self) -> u8 {
-        let c = self.chars[self.i];
-        if c.folded {
-            self.first_fold.get_or_insert(self.i);
-            self.last_fold = Some(self.i);
+        let i = self.i;
+        if self.src.folded(i) {
+            self.first_fold.get_or_insert(i);
+            self.last_fold = Some(i);
         }
         self.i += 1;
-        c.b
+        self.src.b(i)
     }
 
     fn run(mut self, block: &mut Block, diags: &mut Diagnostics) {
@@ -305,18 +363,15 @@ impl LineLexer<'_> {
         }
     }
 
-    fn slice(&self, from: usize, to_excl: usize) -> &str {
-        let a = self.at(from);
-        let b = self.at(to_excl.min(self.chars.len() - 1));
-        &self.text[a..b]
+    fn slice(&self, from: usize, to_excl: usize) -> &'c str {
+        &self.text[self.at(from)..self.at(to_excl)]
     }
 
     fn comment(&mut self, diags: &mut Diagnostics) {
         let open = self.i;
         self.bump();
         loop {
-            let c = self.chars[self.i];
-            match c.b {
+            match self.peek() {
                 0 => {
                     diags.push(
                         Code::UnclosedComment,
@@ -345,15 +400,15 @@ impl LineLexer<'_> {
     /// After `;` the rest of the line is a comment; warn when it looks like code.
     fn after_semicolon(&mut self, diags: &mut Diagnostics) {
         let mut j = self.i;
-        while matches!(self.chars[j].b, b' ' | b'\t') {
+        while matches!(self.src.b(j), b' ' | b'\t') {
             j += 1;
         }
-        let c0 = self.chars[j].b.to_ascii_uppercase();
-        let c1 = self.chars[j + (c0 != 0) as usize].b;
+        let c0 = self.src.b(j).to_ascii_uppercase();
+        let c1 = self.src.b(j + (c0 != 0) as usize);
         let looks_like_code = matches!(c0, b'G' | b'M' | b'X' | b'Z' | b'U' | b'W' | b'N' | b'T' | b'S' | b'F')
             && (c1.is_ascii_digit() || c1 == b'-' || c1 == b'.');
         if looks_like_code {
-            let end = self.chars.len() - 1;
+            let end = self.src.end();
             diags.push(
                 Code::CodeAfterSemicolon,
                 self.span(j, end),
@@ -376,7 +431,7 @@ impl LineLexer<'_> {
             self.bump();
         }
         let digits = self.slice(ds, self.i).chars().filter(|c| !c.is_whitespace()).count();
-        let text: String = self.chars[ds..self.i].iter().map(|c| c.b as char).collect();
+        let text: String = (ds..self.i).map(|j| self.src.b(j) as char).collect();
         if digits == 0 || digits > 5 || self.peek() == b'.' {
             while matches!(self.peek(), b'0'..=b'9' | b'.') {
                 self.bump();
@@ -423,8 +478,18 @@ impl LineLexer<'_> {
             block.has_error = true;
             return;
         }
-        let raw: Vec<u8> = self.chars[ns..ne].iter().map(|c| c.b).collect();
-        let num = match parse_number(&raw, self.limits.digits) {
+        // Numbers are short: copy the folded bytes onto the stack.
+        let mut buf = [0u8; 40];
+        let n = (ne - ns).min(buf.len());
+        for (k, j) in (ns..ns + n).enumerate() {
+            buf[k] = self.src.b(j);
+        }
+        let parsed = if ne - ns > buf.len() {
+            Err(NumError::TooManyDigits(ne - ns))
+        } else {
+            parse_number(&buf[..n], self.limits.digits)
+        };
+        let num = match parsed {
             Ok(n) => n,
             Err(NumError::Malformed) => {
                 diags.push(
@@ -493,7 +558,8 @@ const POW10: [f64; 23] = [
 
 /// Parses `[+-]digits[.digits]` exactly: the mantissa is an integer and the
 /// result one correctly rounded division, so `27.4286` reads as the same
-/// `f64` Rust's parser gives.
+/// `f64` Rust's parser gives. Significant digits exclude leading zeros and
+/// trailing zeros of the fraction.
 fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
     let (neg, body) = match raw.first() {
         Some(b'-') => (true, &raw[1..]),
@@ -501,48 +567,49 @@ fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
         _ => (false, raw),
     };
     let mut mantissa: u64 = 0;
-    let mut sig = 0usize;
+    let mut int_digits = 0usize;
     let mut frac = 0usize;
     let mut point = false;
-    let mut any_digit = false;
-    let mut pending_zeros = 0usize; // trailing fraction zeros not yet counted
-    let mut int_digits = 0usize;
+    let mut overflow = false;
     for &b in body {
-        match b {
-            b'0'..=b'9' => {
-                any_digit = true;
-                let d = (b - b'0') as u64;
-                if point {
-                    frac += 1;
-                } else {
-                    int_digits += 1;
-                }
-                if mantissa == 0 && d == 0 && !point {
-                    continue; // leading zero
-                }
-                if point && d == 0 {
-                    pending_zeros += 1;
-                } else {
-                    sig += 1 + pending_zeros;
-                    pending_zeros = 0;
-                }
-                if mantissa < 100_000_000_000_000_000 {
-                    mantissa = mantissa * 10 + d;
-                } else {
-                    return Err(NumError::TooManyDigits(body.iter().filter(|c| c.is_ascii_digit()).count()));
-                }
+        let d = b.wrapping_sub(b'0');
+        if d < 10 {
+            if mantissa < 100_000_000_000_000_000 {
+                mantissa = mantissa * 10 + d as u64;
+            } else {
+                overflow = true;
             }
-            b'.' if !point => point = true,
-            _ => return Err(NumError::Malformed),
+            if point {
+                frac += 1;
+            } else {
+                int_digits += 1;
+            }
+        } else if b == b'.' && !point {
+            point = true;
+        } else {
+            return Err(NumError::Malformed);
         }
     }
-    if !any_digit {
+    if int_digits + frac == 0 {
         return Err(NumError::Malformed);
     }
-    if sig > max_digits {
-        return Err(NumError::TooManyDigits(sig));
+    if overflow {
+        return Err(NumError::TooManyDigits(int_digits + frac));
     }
-    let mut value = if frac < POW10.len() { mantissa as f64 / POW10[frac] } else { 0.0 };
+    if int_digits + frac > max_digits {
+        // Significant digits: drop trailing zeros of the fraction, then count.
+        let (mut m, mut f) = (mantissa, frac);
+        while f > 0 && m != 0 && m % 10 == 0 {
+            m /= 10;
+            f -= 1;
+        }
+        let sig = if m == 0 { 0 } else { m.ilog10() as usize + 1 };
+        if sig > max_digits {
+            return Err(NumError::TooManyDigits(sig));
+        }
+    }
+    let mut value =
+        if frac < POW10.len() { mantissa as f64 / POW10[frac] } else { mantissa as f64 / 10f64.powi(frac as i32) };
     if neg {
         value = -value;
     }

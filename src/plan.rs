@@ -57,7 +57,8 @@ impl Plan {
 
 /// Plans `text` with `settings` (which also carry the dialect).
 pub fn plan(text: &str, settings: &Settings) -> Plan {
-    let mut it = Interp::new(settings);
+    let mut it = Interp::with_capacity(settings, text.len());
+    let mut starts = Vec::new();
     let limit = settings.get(P::LimitProgramBytes) as usize;
     if text.len() > limit {
         it.diag(
@@ -82,8 +83,9 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
             }
         }
         it.finish();
+        starts = lexer.take_line_starts();
     }
-    let index = LineIndex::new(text);
+    let index = LineIndex::from_starts(text, starts);
     let Interp { mut diags, moves, mut threads, inch, .. } = it;
     let spans = |line: u32| {
         let start = index.line_start(line);

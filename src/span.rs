@@ -60,6 +60,21 @@ impl LineIndex {
         LineIndex { starts }
     }
 
+    /// An index from line starts already known (ascending, starting with 0);
+    /// lines after the last one given are found by scanning `text`.
+    pub fn from_starts(text: &str, mut starts: Vec<u32>) -> LineIndex {
+        if starts.first() != Some(&0) {
+            starts.insert(0, 0);
+        }
+        let last = *starts.last().unwrap_or(&0) as usize;
+        if last < text.len() {
+            let tail = LineIndex::new(&text[last..]);
+            starts.extend(tail.starts.iter().skip(1).map(|s| s + last as u32));
+        }
+        starts.dedup();
+        LineIndex { starts }
+    }
+
     /// Number of lines.
     pub fn lines(&self) -> usize {
         self.starts.len()
@@ -108,5 +123,9 @@ mod tests {
         assert_eq!(idx.locate(text, g), LineCol { line: 2, column: 2 });
         let m = text.find("M30").unwrap();
         assert_eq!(idx.locate(text, m), LineCol { line: 3, column: 1 });
+        // The same from the first two line starts, the rest scanned.
+        let partial = LineIndex::from_starts(text, vec![0, 8]);
+        assert_eq!(partial.locate(text, m), LineCol { line: 3, column: 1 });
+        assert_eq!(partial.lines(), 4);
     }
 }
