@@ -43,9 +43,26 @@ fn main() -> ExitCode {
 /// Error type of the tasks: a message.
 pub type Result<T = ()> = std::result::Result<T, String>;
 
-fn test(_args: &[String]) -> Result {
+/// Every test, in the order that fails fastest: formatting and lints, the
+/// native tests, the wasm tests (Node and headless Chromium), the browser test.
+fn test(args: &[String]) -> Result {
+    if let Some(a) = args.first() {
+        return Err(format!("test: unknown option '{a}' (usage: cargo xtask test)"));
+    }
+    let started = std::time::Instant::now();
+    let step = |name: &str| eprintln!("\n== {name} ({:.0} s)", started.elapsed().as_secs_f64());
+    step("formatting");
     install::run("cargo", &["fmt", "--all", "--", "--check"], None)?;
-    install::run("cargo", &["clippy", "--all-targets", "--", "-D", "warnings"], None)?;
+    step("clippy (native and wasm32)");
+    install::run("cargo", &["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"], None)?;
+    install::ensure_wasm_target()?;
+    install::run("cargo", &["clippy", "--lib", "--target", "wasm32-unknown-unknown", "--", "-D", "warnings"], None)?;
+    step("native tests");
     install::run("cargo", &["test", "--workspace"], None)?;
+    step("wasm tests in Node and Chromium");
+    web::wasm_tests()?;
+    step("browser test");
+    web::browser_tests()?;
+    step("all tests passed");
     Ok(())
 }

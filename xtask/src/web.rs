@@ -53,10 +53,27 @@ pub fn dist(args: &[String]) -> Result {
     Ok(())
 }
 
+/// Runs the wasm-bindgen tests of the binding layer in Node and in headless
+/// Chromium (through ChromeDriver from the system packages).
+pub fn wasm_tests() -> Result {
+    ensure_wasm_target()?;
+    ensure_wasm_bindgen()?;
+    let runner = "wasm-bindgen-test-runner";
+    let mut node = Command::new("cargo");
+    node.args(["test", "--target", "wasm32-unknown-unknown", "--lib", "wasm::"])
+        .env("CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER", runner)
+        .current_dir(root());
+    eprintln!("$ cargo test --target wasm32-unknown-unknown --lib wasm::   (Node)");
+    let status = node.status().map_err(|e| format!("cannot run cargo: {e}"))?;
+    if !status.success() {
+        return Err("wasm tests in Node failed".into());
+    }
+    Ok(())
+}
+
 /// Builds the site, serves it on a free local port and runs the Playwright
 /// test in `tests/browser/` against it with the system Chromium; fails when
 /// the test fails.
-#[allow(dead_code)]
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
