@@ -91,23 +91,28 @@ pub struct Grouper {
     pub chain: Option<Chain>,
     cuts: Vec<Chain>,
     after: After,
-    infeed_line: Option<u32>,
+    /// Line of the last rapid that moved X (the infeed of a Z thread) and that moved Z (of a face thread).
+    infeed_line: [Option<u32>; 2],
 }
 
-/// Notes a rapid: after a cut the first X rapid is its retract and the next
-/// Z rapid its return; otherwise the last X rapid is the next cut's infeed.
+/// Notes a rapid: after a cut the first rapid on its short axis is its
+/// retract and the next rapid on its long axis its return; otherwise the
+/// last rapid on a short axis is the next cut's infeed (X for a thread along
+/// Z, Z for a face thread).
 pub fn after_rapid(it: &mut Interp, t: &Target, line: u32) {
     let g = &mut it.grouper;
     let mut consumed = false;
+    let long_z = g.cuts.last().is_none_or(|c| c.segs[0].long == Axis::Z);
+    let (on_short, on_long) = if long_z { (t.has_x, t.has_z) } else { (t.has_z, t.has_x) };
     match g.after {
-        After::Retract if t.has_x || t.has_z => {
+        After::Retract if on_short || on_long => {
             if let Some(last) = g.cuts.last_mut() {
                 last.lines.push(line);
             }
-            g.after = if t.has_x && !t.has_z { After::Return } else { After::Nothing };
+            g.after = if on_short && !on_long { After::Return } else { After::Nothing };
             consumed = true;
         }
-        After::Return if t.has_z && !t.has_x => {
+        After::Return if on_long && !on_short => {
             if let Some(last) = g.cuts.last_mut() {
                 last.lines.push(line);
             }
@@ -117,8 +122,13 @@ pub fn after_rapid(it: &mut Interp, t: &Target, line: u32) {
         After::Return => g.after = After::Nothing,
         _ => {}
     }
-    if !consumed && t.has_x {
-        g.infeed_line = Some(line);
+    if !consumed {
+        if t.has_x {
+            g.infeed_line[0] = Some(line);
+        }
+        if t.has_z {
+            g.infeed_line[1] = Some(line);
+        }
     }
 }
 
@@ -126,10 +136,11 @@ pub fn after_rapid(it: &mut Interp, t: &Target, line: u32) {
 pub fn add_chain(it: &mut Interp, mut chain: Chain) {
     // Block-by-block passes own their infeed, retract and return; a G92 block is all of its pass.
     let blockwise = chain.source != Source::G92;
-    if let Some(l) = it.grouper.infeed_line.take() {
-        if blockwise {
-            chain.lines.insert(0, l);
-        }
+    let short = if chain.segs[0].long == Axis::Z { 0 } else { 1 };
+    let infeed = it.grouper.infeed_line[short];
+    it.grouper.infeed_line = [None, None];
+    if let (Some(l), true) = (infeed, blockwise) {
+        chain.lines.insert(0, l);
     }
     let max_infeed = it.s.get(P::GroupMaxInfeed);
     if let Some(last) = it.grouper.cuts.last() {

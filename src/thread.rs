@@ -7,10 +7,11 @@ use crate::motion::Point;
 use crate::num::{ser_round, ser_round_opt};
 
 /// The shape of a thread.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ThreadKind {
     /// Cylindrical: only Z moves.
+    #[default]
     Straight,
     /// Conical: both axes move.
     Taper,
@@ -19,20 +20,22 @@ pub enum ThreadKind {
 }
 
 /// A machine axis.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Axis {
     /// Cross slide.
     X,
     /// Spindle axis.
+    #[default]
     Z,
 }
 
 /// Which command cut a thread.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Source {
     /// GSK/Fanuc G32 blocks.
+    #[default]
     G32,
     /// Renhe G32 (inch) / G33 (metric) blocks.
     Renhe,
@@ -45,7 +48,7 @@ pub enum Source {
 }
 
 /// How the tool feeds into the thread from pass to pass.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Infeed {
     /// Straight in along the thread middle (both flanks cut).
@@ -57,14 +60,16 @@ pub enum Infeed {
     /// Alternating left and right.
     Alternating,
     /// As programmed block by block (G32/G33): whatever the blocks do.
+    #[default]
     Programmed,
 }
 
 /// What a pass does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Role {
     /// A roughing pass.
+    #[default]
     Rough,
     /// The finishing pass that removes the allowance d.
     Finish,
@@ -73,7 +78,7 @@ pub enum Role {
 }
 
 /// Where a thread's crest (the reference its depths are measured from) came from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum CrestSource {
     /// The cycle's own geometry (end point and thread height k).
@@ -81,11 +86,12 @@ pub enum CrestSource {
     /// The diameter the program turned before threading.
     Outline,
     /// Assumed from the deepest pass and the 1.3·P rule.
+    #[default]
     Assumed,
 }
 
 /// One spindle-synchronised pass of a thread.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Pass {
     /// 1-based start (helix) number.
     pub start: u32,
@@ -126,7 +132,7 @@ pub struct Pass {
 }
 
 /// A thread: every pass that cuts the same helix (or helices, when multi-start).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Thread {
     /// First source line of the thread.
     pub line: u32,

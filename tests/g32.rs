@@ -261,3 +261,19 @@ fn fanuc_g32_words() {
     let d = at(&plan, Code::MissingLead, 3, 1);
     assert!(d.message.contains("F0.2"), "{}", d.message);
 }
+
+/// A face thread cut block by block: the infeed and retract are Z moves, the
+/// return an X move; each pass lists those lines, and the depth grows in −Z.
+#[test]
+fn face_thread_passes_group() {
+    let plan = gsk("G00 X20 Z2\nZ0.5\nG32 X60 F3\nG00 Z5\nX20\nZ0\nG32 X60\nG00 Z5\nX20\n");
+    no_alarm(&plan);
+    assert_eq!(plan.threads.len(), 1);
+    let t = &plan.threads[0];
+    assert_eq!((t.kind, t.long_axis), (ThreadKind::Face, Axis::X));
+    assert_eq!(t.passes[0].lines, vec![2, 3, 4, 5]);
+    assert_eq!(t.passes[1].lines, vec![6, 7, 8, 9]);
+    eq(t.passes[1].infeed, 0.5);
+    // Crest assumed 1.3 × 3 / 2 = 1.95 above the deepest pass (Z0): Z1.95.
+    eq(t.crest, 1.95);
+}
