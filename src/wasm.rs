@@ -409,53 +409,7 @@ pub fn threads_as(format: &str) -> Result<JsValue, JsValue> {
     out
 }
 
+/// The binding's tests (wasm-bindgen-test), run in Node and in headless
+/// Chromium by `cargo xtask test`.
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use wasm_bindgen_test::wasm_bindgen_test;
-
-    const O1006: &str = include_str!("../examples/o1006.nc");
-
-    fn get(v: &JsValue, key: &str) -> JsValue {
-        Reflect::get(v, &JsValue::from_str(key)).unwrap()
-    }
-
-    #[wasm_bindgen_test]
-    fn update_returns_plan_and_packed_scenes() {
-        let r = update(O1006, "gsk980tdc", "", 0, 1, -1.0).unwrap();
-        assert_eq!(get(&r, "good").as_bool(), Some(true));
-        assert_eq!(get(&r, "alarms").as_f64(), Some(0.0));
-        assert_eq!(Array::from(&get(&r, "threads")).length(), 1);
-        assert_eq!(Array::from(&get(&r, "passes")).length(), 5);
-        let side = get(&r, "side");
-        let items = Uint32Array::from(get(&side, "items"));
-        let coords = Float64Array::from(get(&side, "coords"));
-        assert_eq!(items.length() as usize % diagram::packed::STRIDE, 0);
-        assert!(items.length() > 0 && coords.length() > 0);
-        assert!(get(&r, "tooth").is_object() && get(&r, "starts").is_object());
-        // The first diagnostic is on line 5; its UTF-16 start is before its byte start (Chinese comments above).
-        let d = Array::from(&get(&r, "diagnostics")).get(0);
-        assert_eq!(get(&d, "line").as_f64(), Some(5.0));
-        assert_eq!(get(&d, "from").as_f64(), Some(69.0));
-        // Known diagnostics are not sent again.
-        let key = get(&r, "diagnosticsKey").as_f64().unwrap();
-        let again = update(O1006, "gsk980tdc", "", 0, 1, key).unwrap();
-        assert!(get(&again, "diagnostics").is_null());
-    }
-
-    #[wasm_bindgen_test]
-    fn bad_input_comes_back_as_values() {
-        assert!(update("G32 Z1", "no-such-controller", "", 0, 1, -1.0).is_err());
-        let r = update("G32 Z1\n", "fanuc0i", "No.058=55\n5143=200\nx_mode=radius", 7, 9, -1.0).unwrap();
-        let errors = Array::from(&get(&r, "settingErrors"));
-        assert_eq!(errors.length(), 2, "a GSK parameter on Fanuc, and a value out of range");
-        assert_eq!(get(&r, "good").as_bool(), Some(false));
-        assert!(get(&r, "tooth").is_null());
-        let s = thread_scenes(3, 1).unwrap();
-        assert!(get(&s, "thread").is_null());
-        assert!(side_scene_as("bogus").is_err());
-        assert!(settings_table("bogus").is_err());
-        let table = Array::from(&settings_table("renhe").unwrap());
-        assert!(table.length() > 5);
-    }
-}
+mod tests;
