@@ -31,7 +31,11 @@ fn main() {
     // Child mode: plan one size and report peak memory of this process.
     if let Some(i) = args.iter().position(|a| a == "--child") {
         let mb: usize = args[i + 1].parse().expect("size");
-        let text = programs::program(mb << 20, 7);
+        let text = if args.get(i + 2).map(String::as_str) == Some("thread-dense") {
+            programs::thread_dense(mb << 20, 7)
+        } else {
+            programs::program(mb << 20, 7)
+        };
         let base = peak_rss_kib().unwrap_or(0);
         let plan = screwcut::plan(&text, &Settings::new(Dialect::Gsk980tdc));
         let peak = peak_rss_kib().unwrap_or(0);
@@ -42,9 +46,9 @@ fn main() {
     let _ = std::fs::create_dir_all(&out_dir);
     let settings = Settings::new(Dialect::Gsk980tdc);
     println!("screwcut native throughput (lex + interpret + plan), release build");
-    for mb in [1usize, 20] {
-        let text = programs::program(mb << 20, 7);
-        let _ = std::fs::write(out_dir.join(format!("mixed-{mb}mb.nc")), &text);
+    for (name, mb) in [("mixed", 1usize), ("mixed", 20), ("thread-dense", 1)] {
+        let text = if name == "mixed" { programs::program(mb << 20, 7) } else { programs::thread_dense(mb << 20, 7) };
+        let _ = std::fs::write(out_dir.join(format!("{name}-{mb}mb.nc")), &text);
         let runs = if mb == 1 { 20 } else { 3 };
         let mut best = f64::INFINITY;
         let mut summary = (0, 0, 0);
@@ -56,7 +60,7 @@ fn main() {
         }
         let rate = text.len() as f64 / best / 1e6;
         let mem = std::process::Command::new(&args[0])
-            .args(["--child", &mb.to_string()])
+            .args(["--child", &mb.to_string(), name])
             .output()
             .ok()
             .and_then(|o| String::from_utf8(o.stdout).ok())
@@ -65,7 +69,7 @@ fn main() {
                 (v.len() == 3).then(|| (v[0], v[1]))
             });
         println!(
-            "  {:>2} MB ({} bytes, {} lines): best of {runs} {:.1} ms = {:.1} MB/s; {} moves, {} threads, {} diagnostics",
+            "  {name:>12} {:>2} MB ({} bytes, {} lines): best of {runs} {:.1} ms = {:.1} MB/s; {} moves, {} threads, {} diagnostics",
             mb,
             text.len(),
             text.lines().count(),
@@ -77,7 +81,7 @@ fn main() {
         );
         if let Some((base, peak)) = mem {
             println!(
-                "        peak memory {:.1} MiB (text and generator {:.1} MiB before planning): {:.1}× the program size",
+                "                     peak memory {:.1} MiB (text and generator {:.1} MiB before planning): {:.1}× the program size",
                 peak as f64 / 1024.0,
                 base as f64 / 1024.0,
                 (peak as f64 * 1024.0) / text.len() as f64

@@ -454,9 +454,21 @@ impl<'c, S: Src> LineLexer<'c, S> {
         while matches!(self.peek(), b' ' | b'\t') {
             self.bump();
         }
+        // Read the number while scanning it; a run that goes on with more
+        // signs, points or digits after a complete number is malformed.
         let ns = self.i;
-        while matches!(self.peek(), b'0'..=b'9' | b'.' | b'+' | b'-') {
+        let mut acc = NumAcc::default();
+        if matches!(self.peek(), b'-' | b'+') {
+            acc.neg = self.bump() == b'-';
+        }
+        while acc.push(self.peek()) {
             self.bump();
+        }
+        if matches!(self.peek(), b'0'..=b'9' | b'.' | b'+' | b'-') {
+            acc.malformed = true;
+            while matches!(self.peek(), b'0'..=b'9' | b'.' | b'+' | b'-') {
+                self.bump();
+            }
         }
         let ne = self.i;
         let span = self.span(start, ne);
@@ -478,18 +490,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
             block.has_error = true;
             return;
         }
-        // Numbers are short: copy the folded bytes onto the stack.
-        let mut buf = [0u8; 40];
-        let n = (ne - ns).min(buf.len());
-        for (k, j) in (ns..ns + n).enumerate() {
-            buf[k] = self.src.b(j);
-        }
-        let parsed = if ne - ns > buf.len() {
-            Err(NumError::TooManyDigits(ne - ns))
-        } else {
-            parse_number(&buf[..n], self.limits.digits)
-        };
-        let num = match parsed {
+        let num = match acc.finish(self.limits.digits) {
             Ok(n) => n,
             Err(NumError::Malformed) => {
                 diags.push(
@@ -556,67 +557,102 @@ const POW10: [f64; 23] = [
     1e21, 1e22,
 ];
 
-/// Parses `[+-]digits[.digits]` exactly: the mantissa is an integer and the
-/// result one correctly rounded division, so `27.4286` reads as the same
-/// `f64` Rust's parser gives. Significant digits exclude leading zeros and
-/// trailing zeros of the fraction.
-fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
-    let (neg, body) = match raw.first() {
-        Some(b'-') => (true, &raw[1..]),
-        Some(b'+') => (false, &raw[1..]),
-        _ => (false, raw),
-    };
-    let mut mantissa: u64 = 0;
-    let mut int_digits = 0usize;
-    let mut frac = 0usize;
-    let mut point = false;
-    let mut overflow = false;
-    for &b in body {
-        let d = b.wrapping_sub(b'0');
+/// A number being read digit by digit: the mantissa is an integer and the
+/// value one correctly rounded division, so `27.4286` reads as the same
+/// `f64` Rust's parser gives.
+#[derive(Default)]
+struct NumAcc {
+    neg: bool,
+    mantissa: u64,
+    int_digits: usize,
+    frac: usize,
+    point: bool,
+    overflow: bool,
+    malformed: bool,
+}
+
+impl NumAcc {
+    /// Takes one more character if it continues the number.
+    #[inline]
+    fn push(&mut self, c: u8) -> bool {
+        let d = c.wrapping_sub(b'0');
         if d < 10 {
-            if mantissa < 100_000_000_000_000_000 {
-                mantissa = mantissa * 10 + d as u64;
+            if self.mantissa < 100_000_000_000_000_000 {
+                self.mantissa = self.mantissa * 10 + d as u64;
             } else {
-                overflow = true;
+                self.overflow = true;
             }
-            if point {
-                frac += 1;
+            if self.point {
+                self.frac += 1;
             } else {
-                int_digits += 1;
+                self.int_digits += 1;
             }
-        } else if b == b'.' && !point {
-            point = true;
+            true
+        } else if c == b'.' && !self.point {
+            self.point = true;
+            true
         } else {
+            false
+        }
+    }
+
+    /// The number, or why it is not one. Significant digits exclude leading
+    /// zeros and trailing zeros of the fraction.
+    fn finish(self, max_digits: usize) -> Result<Number, NumError> {
+        let digits = self.int_digits + self.frac;
+        if self.malformed || digits == 0 {
             return Err(NumError::Malformed);
         }
-    }
-    if int_digits + frac == 0 {
-        return Err(NumError::Malformed);
-    }
-    if overflow {
-        return Err(NumError::TooManyDigits(int_digits + frac));
-    }
-    if int_digits + frac > max_digits {
-        // Significant digits: drop trailing zeros of the fraction, then count.
-        let (mut m, mut f) = (mantissa, frac);
-        while f > 0 && m != 0 && m % 10 == 0 {
-            m /= 10;
-            f -= 1;
+        if self.overflow {
+            return Err(NumError::TooManyDigits(digits));
         }
-        let sig = if m == 0 { 0 } else { m.ilog10() as usize + 1 };
-        if sig > max_digits {
-            return Err(NumError::TooManyDigits(sig));
+        if digits > max_digits {
+            let (mut m, mut f) = (self.mantissa, self.frac);
+            while f > 0 && m != 0 && m % 10 == 0 {
+                m /= 10;
+                f -= 1;
+            }
+            let sig = if m == 0 { 0 } else { m.ilog10() as usize + 1 };
+            if sig > max_digits {
+                return Err(NumError::TooManyDigits(sig));
+            }
+        }
+        let frac = self.frac;
+        let mut value = if frac < POW10.len() {
+            self.mantissa as f64 / POW10[frac]
+        } else {
+            self.mantissa as f64 / 10f64.powi(frac as i32)
+        };
+        if self.neg {
+            value = -value;
+        }
+        if value == 0.0 {
+            value = 0.0; // no negative zero
+        }
+        Ok(Number {
+            value,
+            has_point: self.point,
+            int_digits: self.int_digits.min(255) as u8,
+            frac_digits: frac.min(255) as u8,
+        })
+    }
+}
+
+/// Parses `[+-]digits[.digits]` (the lexer reads numbers the same way, in its stream).
+#[cfg(test)]
+fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
+    let mut acc = NumAcc::default();
+    let mut body = raw;
+    if let Some(&c @ (b'-' | b'+')) = raw.first() {
+        acc.neg = c == b'-';
+        body = &raw[1..];
+    }
+    for &c in body {
+        if !acc.push(c) {
+            acc.malformed = true;
         }
     }
-    let mut value =
-        if frac < POW10.len() { mantissa as f64 / POW10[frac] } else { mantissa as f64 / 10f64.powi(frac as i32) };
-    if neg {
-        value = -value;
-    }
-    if value == 0.0 {
-        value = 0.0; // no negative zero
-    }
-    Ok(Number { value, has_point: point, int_digits: int_digits.min(255) as u8, frac_digits: frac.min(255) as u8 })
+    acc.finish(max_digits)
 }
 
 #[cfg(test)]
