@@ -152,6 +152,8 @@ codes! {
     CrestAssumed = "crest-assumed", Info;
     /// Total programmed depth differs from the 1.3·P rule.
     DepthVsStandard = "depth-vs-standard", Warning;
+    /// More diagnostics than `limits.diagnostics`: the rest are counted, not listed.
+    MoreDiagnostics = "more-diagnostics", Info;
     /// Programmed infeeds compared with table 4-3.
     InfeedGuidance = "infeed-guidance", Info;
     /// A pass infeed larger than table 4-3's largest for the pitch.
@@ -194,17 +196,18 @@ pub struct Diagnostic {
 }
 
 /// Collects diagnostics while a program is read.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
     items: Vec<(Code, String, Span)>,
     limit: usize,
     dropped: usize,
+    first_dropped: Option<Span>,
 }
 
 impl Diagnostics {
     /// A collector that keeps at most `limit` diagnostics (the rest are counted).
     pub fn with_limit(limit: usize) -> Diagnostics {
-        Diagnostics { items: Vec::new(), limit, dropped: 0 }
+        Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None }
     }
 
     /// Records a diagnostic.
@@ -212,7 +215,14 @@ impl Diagnostics {
         if self.items.len() < self.limit {
             self.items.push((code, message.into(), span));
         } else {
-            self.dropped += 1;
+            self.drop_one(span);
+        }
+    }
+
+    fn drop_one(&mut self, span: Span) {
+        self.dropped += 1;
+        if self.first_dropped.is_none_or(|f| span.start < f.start) {
+            self.first_dropped = Some(span);
         }
     }
 
@@ -221,7 +231,7 @@ impl Diagnostics {
         if self.items.len() < self.limit {
             self.items.push((code, message(), span));
         } else {
-            self.dropped += 1;
+            self.drop_one(span);
         }
     }
 
@@ -245,10 +255,49 @@ impl Diagnostics {
         self.dropped
     }
 
-    /// Resolves spans to line/column positions, sorted by position.
+    /// Cuts the list back to `len` kept and `dropped` dropped diagnostics.
+    pub fn truncate(&mut self, len: usize, dropped: usize, first_dropped: Option<Span>) {
+        self.items.truncate(len);
+        self.dropped = dropped;
+        self.first_dropped = first_dropped;
+    }
+
+    /// Where the first dropped diagnostic was.
+    pub fn first_dropped(&self) -> Option<Span> {
+        self.first_dropped
+    }
+
+    /// Moves every diagnostic of `other` in, keeping this collector's limit.
+    pub fn absorb(&mut self, other: Diagnostics) {
+        self.dropped += other.dropped;
+        if let Some(f) = other.first_dropped {
+            if self.first_dropped.is_none_or(|s| f.start < s.start) {
+                self.first_dropped = Some(f);
+            }
+        }
+        for (code, message, span) in other.items {
+            self.push(code, span, message);
+        }
+    }
+
+    /// The limit this collector keeps to.
+    pub fn limit(&self) -> usize {
+        self.limit
+    }
+
+    /// Resolves spans to line/column positions, sorted by position; when
+    /// some were dropped, a last `more-diagnostics` note says how many, at
+    /// the first one dropped.
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
-        let mut out: Vec<Diagnostic> = self
-            .items
+        let mut items = self.items;
+        if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
+            items.push((
+                Code::MoreDiagnostics,
+                format!("{} more diagnostics from here on are not shown (setting limits.diagnostics)", self.dropped),
+                span,
+            ));
+        }
+        let mut out: Vec<Diagnostic> = items
             .into_iter()
             .map(|(code, message, span)| {
                 let LineCol { line, column } = index.locate(text, span.start as usize);

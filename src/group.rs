@@ -85,7 +85,7 @@ enum After {
 }
 
 /// Grouping state kept by the interpreter.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Grouper {
     /// The continuous cut in progress.
     pub chain: Option<Chain>,

@@ -99,9 +99,9 @@ pub struct Target {
 }
 
 /// The interpreter's state while a program is read.
-pub struct Interp<'a> {
+pub struct Interp {
     /// Settings in force.
-    pub s: &'a Settings,
+    pub s: Settings,
     /// Dialect in force.
     pub dialect: Dialect,
     /// Diagnostics so far.
@@ -143,6 +143,31 @@ pub struct Interp<'a> {
     move_limit: usize,
 }
 
+/// The interpreter's state at a block boundary, without its outputs (only
+/// their lengths): enough to resume reading from that block.
+#[derive(Clone, Debug)]
+pub struct Snapshot {
+    pos: Position,
+    motion: Motion,
+    inch: bool,
+    feed: Option<f64>,
+    feed_line: u32,
+    lead: Option<f64>,
+    jk: (Option<f64>, Option<f64>),
+    spindle: Option<f64>,
+    css: bool,
+    grouper: Grouper,
+    cycle: CycleState,
+    renhe: RenheState,
+    last_x: (f64, u32),
+    ended: bool,
+    motion_seen: bool,
+    reported: u32,
+    moves: usize,
+    threads: usize,
+    diags: (usize, usize, Option<Span>),
+}
+
 const REPORTED_START: u32 = 1;
 const REPORTED_AFTER_END: u32 = 2;
 const REPORTED_MOVE_LIMIT: u32 = 4;
@@ -151,16 +176,16 @@ const REPORTED_COMP: u32 = 8;
 /// Letters every block may carry besides its command's own words.
 const ALWAYS: &[u8] = b"GMSTF";
 
-impl<'a> Interp<'a> {
+impl Interp {
     /// A fresh interpreter.
-    pub fn new(s: &'a Settings) -> Interp<'a> {
+    pub fn new(s: &Settings) -> Interp {
         Self::with_capacity(s, 0)
     }
 
     /// A fresh interpreter expecting a program of `bytes` bytes.
-    pub fn with_capacity(s: &'a Settings, bytes: usize) -> Interp<'a> {
+    pub fn with_capacity(s: &Settings, bytes: usize) -> Interp {
         Interp {
-            s,
+            s: s.clone(),
             dialect: s.dialect(),
             diags: Diagnostics::with_limit(s.int(P::LimitDiagnostics).max(1) as usize),
             // About one motion per 8 bytes of a typical program; capped by the move limit.
@@ -184,6 +209,55 @@ impl<'a> Interp<'a> {
             reported: 0,
             move_limit: s.int(P::LimitMoves).max(1) as usize,
         }
+    }
+
+    /// The state now, to resume from later.
+    pub fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            pos: self.pos,
+            motion: self.motion,
+            inch: self.inch,
+            feed: self.feed,
+            feed_line: self.feed_line,
+            lead: self.lead,
+            jk: self.jk,
+            spindle: self.spindle,
+            css: self.css,
+            grouper: self.grouper.clone(),
+            cycle: self.cycle.clone(),
+            renhe: self.renhe,
+            last_x: self.last_x,
+            ended: self.ended,
+            motion_seen: self.motion_seen,
+            reported: self.reported,
+            moves: self.moves.len(),
+            threads: self.threads.len(),
+            diags: (self.diags.len(), self.diags.dropped(), self.diags.first_dropped()),
+        }
+    }
+
+    /// Goes back to a snapshot taken earlier in the same run: the state is
+    /// restored and the outputs cut back to what they were.
+    pub fn restore(&mut self, snap: &Snapshot) {
+        self.pos = snap.pos;
+        self.motion = snap.motion;
+        self.inch = snap.inch;
+        self.feed = snap.feed;
+        self.feed_line = snap.feed_line;
+        self.lead = snap.lead;
+        self.jk = snap.jk;
+        self.spindle = snap.spindle;
+        self.css = snap.css;
+        self.grouper = snap.grouper.clone();
+        self.cycle = snap.cycle.clone();
+        self.renhe = snap.renhe;
+        self.last_x = snap.last_x;
+        self.ended = snap.ended;
+        self.motion_seen = snap.motion_seen;
+        self.reported = snap.reported;
+        self.moves.truncate(snap.moves);
+        self.threads.truncate(snap.threads);
+        self.diags.truncate(snap.diags.0, snap.diags.1, snap.diags.2);
     }
 
     /// Records a diagnostic.

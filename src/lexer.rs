@@ -121,6 +121,11 @@ impl<'a> Lexer<'a> {
         Lexer { text, pos, line: 0, dialect, limits, chars: Vec::with_capacity(128), starts: Vec::new() }
     }
 
+    /// Lines read so far.
+    pub fn line(&self) -> u32 {
+        self.line
+    }
+
     /// Byte offset of the next unread line.
     pub fn offset(&self) -> usize {
         self.pos

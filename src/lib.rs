@@ -27,6 +27,7 @@ pub mod lexer;
 pub mod motion;
 pub mod num;
 pub mod plan;
+pub mod planner;
 pub mod renhe;
 pub mod settings;
 pub mod span;

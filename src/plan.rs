@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::block::Block;
-use crate::diagnostic::{Code, Diagnostic, Severity};
+use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
 use crate::dialect::Dialect;
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
@@ -58,7 +58,20 @@ impl Plan {
 /// Plans `text` with `settings` (which also carry the dialect).
 pub fn plan(text: &str, settings: &Settings) -> Plan {
     let mut it = Interp::with_capacity(settings, text.len());
-    let mut starts = Vec::new();
+    let starts = match lexer_for(text, settings, &mut it) {
+        Some(mut lexer) => {
+            run(&mut it, &mut lexer, usize::MAX, |_, _, _| {});
+            lexer.take_line_starts()
+        }
+        None => Vec::new(),
+    };
+    let Interp { diags, moves, threads, inch, .. } = it;
+    finish(text, settings, diags, moves, threads, inch, starts)
+}
+
+/// A lexer over `text`, or `None` (with an alarm in `it`) when the program is
+/// larger than `limits.program_bytes`.
+pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, it: &mut Interp) -> Option<Lexer<'t>> {
     let limit = settings.get(P::LimitProgramBytes) as usize;
     if text.len() > limit {
         it.diag(
@@ -69,40 +82,59 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
                 text.len()
             ),
         );
-    } else {
-        let limits = LexLimits {
-            block_chars: settings.int(P::LimitBlockChars).max(1) as usize,
-            digits: settings.int(P::LimitDigits).clamp(1, 17) as usize,
-        };
-        let mut lexer = Lexer::new(text, settings.dialect(), limits);
-        let mut block = Block::default();
-        while lexer.next_block(&mut block, &mut it.diags) {
-            it.block(&block);
-            if it.stopped() {
-                break;
-            }
-        }
-        it.finish();
-        starts = lexer.take_line_starts();
+        return None;
     }
+    let limits = LexLimits {
+        block_chars: settings.int(P::LimitBlockChars).max(1) as usize,
+        digits: settings.int(P::LimitDigits).clamp(1, 17) as usize,
+    };
+    Some(Lexer::new(text, settings.dialect(), limits))
+}
+
+/// Reads blocks from `lexer` to the end of the program with `it`, calling
+/// `checkpoint(offset, line, it)` before every `every`-th block (the byte
+/// offset and 1-based line of the block about to be read), then closes
+/// what is still open.
+pub(crate) fn run(it: &mut Interp, lexer: &mut Lexer, every: usize, mut checkpoint: impl FnMut(usize, u32, &Interp)) {
+    let mut block = Block::default();
+    let mut count = 0usize;
+    loop {
+        if count > 0 && count % every == 0 {
+            checkpoint(lexer.offset(), lexer.line() + 1, it);
+        }
+        if !lexer.next_block(&mut block, &mut it.diags) {
+            break;
+        }
+        it.block(&block);
+        count += 1;
+        if it.stopped() {
+            break;
+        }
+    }
+    it.finish();
+}
+
+/// Turns the interpreter's outputs into a plan: depths and advice of the
+/// block-by-block threads, diagnostics positioned and sorted.
+pub(crate) fn finish(
+    text: &str,
+    settings: &Settings,
+    mut diags: Diagnostics,
+    moves: Vec<Move>,
+    mut threads: Vec<Thread>,
+    inch: bool,
+    starts: Vec<u32>,
+) -> Plan {
     let index = LineIndex::from_starts(text, starts);
-    let Interp { mut diags, moves, mut threads, inch, .. } = it;
     let spans = |line: u32| {
         let start = index.line_start(line);
         let end = text[start..].find(['\n', '\r']).map_or(text.len(), |e| start + e);
         Span::new(start, end)
     };
-    crate::advice::finish_manual(&mut threads, &moves, settings, inch, &mut diags, &spans);
-    let dropped = diags.dropped();
-    let mut diagnostics = diags.finish(text, &index);
-    if dropped > 0 {
-        if let Some(last) = diagnostics.last().cloned() {
-            diagnostics.push(Diagnostic {
-                message: format!("{dropped} more diagnostics not shown (setting limits.diagnostics)"),
-                ..last
-            });
-        }
-    }
+    let mut advice = Diagnostics::with_limit(diags.limit());
+    crate::advice::finish_manual(&mut threads, &moves, settings, inch, &mut advice, &spans);
+    diags.absorb(advice);
+    let diagnostics = diags.finish(text, &index);
     Plan { dialect: settings.dialect(), units: if inch { Units::Inch } else { Units::Mm }, diagnostics, moves, threads }
 }
 

@@ -73,6 +73,15 @@ const CASES: &[Case] = &[
         1,
         "not cut to full depth",
     ),
+    (
+        Code::MoreDiagnostics,
+        G,
+        &["limits.diagnostics=1"],
+        "G00 X1 Y2\nG00 X1 Y2\n",
+        2,
+        8,
+        "1 more diagnostics from here",
+    ),
     (Code::InfeedGuidance, G, &[], include_str!("../examples/o1006.nc"), 5, 1, "table 4-3 for pitch 2"),
     (
         Code::InfeedTooLarge,

@@ -130,6 +130,36 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Re-planning after edits (replacing, inserting or deleting blocks
+    /// anywhere) gives exactly the plan of a full re-plan.
+    #[test]
+    fn incremental_matches_full(
+        base in prop::collection::vec(block(), 250..700),
+        edits in prop::collection::vec((0.0f64..1.0, 0u8..3, block()), 1..6),
+        d in 0u8..3,
+    ) {
+        let s = Settings::new(dialect(d));
+        let mut planner = screwcut::planner::Planner::new(s.clone());
+        let mut lines = base;
+        planner.plan(&lines.join("\n"));
+        for (at, kind, new) in edits {
+            let i = ((lines.len() as f64) * at) as usize;
+            match kind {
+                0 if i < lines.len() => lines[i] = new,
+                1 => lines.insert(i.min(lines.len()), new),
+                _ if i < lines.len() => { lines.remove(i); }
+                _ => lines.push(new),
+            }
+            let text = lines.join("\n");
+            let inc = planner.plan(&text).clone();
+            prop_assert_eq!(inc, screwcut::plan(&text, &s));
+        }
+    }
+}
+
 /// The same program planned twice gives the same plan (no hidden state).
 #[test]
 fn deterministic() {
