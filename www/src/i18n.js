@@ -75,6 +75,11 @@ const EN = {
   starts_capped: '{} starts: the first 360 are drawn',
   moves_capped: 'drawing stops after {} moves',
   square_tool: '0° tool: width {} assumed',
+  // Embedded previews.
+  embed_summary: '{threads} threads · {passes} passes · {alarms} alarms · {warnings} warnings',
+  open_in_editor: 'Open in editor',
+  loading: 'Loading…',
+  more: '… {n} more',
 };
 
 const ZH = {
@@ -150,6 +155,10 @@ const ZH = {
   starts_capped: '{} 头：只画前 360 头',
   moves_capped: '只画前 {} 段运动',
   square_tool: '0° 刀：假定刀宽 {}',
+  embed_summary: '{threads} 条螺纹 · {passes} 次走刀 · {alarms} 报警 · {warnings} 警告',
+  open_in_editor: '在编辑器中打开',
+  loading: '加载中…',
+  more: '… 另有 {n} 条',
 };
 
 const TABLES = { en: EN, zh: ZH };
@@ -169,14 +178,24 @@ export function getLang() {
 
 /** Page text by key, with `{name}` fields filled from `vars`. */
 export function t(key, vars) {
-  let s = TABLES[lang][key] ?? EN[key] ?? key;
-  if (vars) s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
-  return s;
+  return textIn(lang, key, vars);
 }
 
 /** A scene label: the key's pattern with the value in place of `{}`. */
 export function label(key, value) {
-  const pattern = TABLES[lang][key] ?? EN[key];
+  return labelIn(lang, key, value);
+}
+
+/** Page text by key in language `l` (en, zh), whatever the page's language is. */
+export function textIn(l, key, vars) {
+  let s = (TABLES[l] || EN)[key] ?? EN[key] ?? key;
+  if (vars) s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
+  return s;
+}
+
+/** A scene label in language `l`. */
+export function labelIn(l, key, value) {
+  const pattern = (TABLES[l] || EN)[key] ?? EN[key];
   if (pattern === undefined) return value ? `${key} ${value}` : key;
   return pattern.includes('{}') ? pattern.replace('{}', value) : pattern;
 }

@@ -8,10 +8,9 @@ import { createEditor } from './editor.js';
 import { SceneView } from './view.js';
 import { t, label, setLang, getLang } from './i18n.js';
 import { load, save, encodeFragment, decodeFragment } from './share.js';
+import { num, esc, passTableHead, passTableRows } from './table.js';
 
 const $ = (id) => document.getElementById(id);
-const num = (v) => (v === undefined || v === null ? '' : String(Math.round(v * 1e4) / 1e4));
-const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 
 /** What the test and the curious can look at: timings and state. */
 const probe = { ready: false, updates: [], frames: [], errors: [], result: null, editorAt: null };
@@ -209,13 +208,8 @@ function renderThreads(r) {
     s.value = String(Math.min(start, th.starts));
   }
   $('no-threads').hidden = r.threads.length > 0;
-  const head = `<tr><th>${t('col_pass')}</th><th>${t('col_start')}</th><th>${t('col_x')}</th><th>${t('col_z')}</th><th>${t('col_z_end')}</th><th>${t('col_depth')}</th><th>${t('col_infeed')}</th><th>${t('col_area')}</th><th class="role">${t('col_role')}</th><th class="role">${t('col_lines')}</th></tr>`;
-  const rows = (r.passes || [])
-    .map(
-      (p, i) =>
-        `<tr data-pass="${i}" class="${p.role}"><td>${p.index}</td><td>${p.start}</td><td>${num(p.from[0])}</td><td>${num(p.from[1])}</td><td>${num(p.to[1])}</td><td>${num(p.depth)}</td><td>${num(p.infeed)}</td><td>${num(p.area)}</td><td class="role">${t(p.role)}</td><td class="lines">${p.lines.join(',')}</td></tr>`,
-    )
-    .join('');
+  const head = passTableHead(t);
+  const rows = passTableRows(r.passes, t);
   const html = head + '|' + rows;
   if (html !== lastTable) {
     lastTable = html;
@@ -461,6 +455,8 @@ async function main() {
   await init({ module_or_path: new URL('screwcut_bg.wasm', document.baseURI) });
   styleNames = core.style_names();
   probe.core = core;
+  probe.text = () => (editor ? editor.text() : null);
+  probe.dialect = () => state.dialect;
   const linked = decodeFragment(location.hash);
   const saved = linked || load();
   if (saved) {

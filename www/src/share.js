@@ -1,7 +1,9 @@
 // Keeping the program: localStorage across reloads, and a link whose
-// fragment carries {dialect, settings, program} as base64url of deflated JSON.
+// fragment carries {dialect, settings, program} as base64url of deflated JSON
+// (`#z=`) or of plain JSON (`#j=`, what embedded previews write: fragment.js).
 
 import { deflateSync, inflateSync, strToU8, strFromU8 } from 'fflate';
+import { toBase64Url, fromBase64Url } from './fragment.js';
 
 const KEY = 'screwcut.state.v1';
 
@@ -20,19 +22,6 @@ export function save(state) {
   } catch {
     // Private mode or full storage: nothing to keep.
   }
-}
-
-function toBase64Url(bytes) {
-  let s = '';
-  for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
-  return btoa(s).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-}
-
-function fromBase64Url(text) {
-  const b = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
-  const out = new Uint8Array(b.length);
-  for (let i = 0; i < b.length; i++) out[i] = b.charCodeAt(i);
-  return out;
 }
 
 /** The fragment for a shared link: `#z=` + base64url(deflate(JSON)). */

@@ -1,6 +1,7 @@
 // A canvas view of one scene: HiDPI-crisp drawing, pan (drag), zoom (wheel,
 // around the pointer), fit (double-click or the Fit button), an optional
 // radial stretch, hover hit-testing and SVG/PNG export of what it shows.
+// Used by the app and by the embeddable <screwcut-preview> element.
 
 import { drawScene, canvasPainter, svgPainter, fitTransform, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
 
@@ -9,7 +10,10 @@ const PAD = 56;
 export class SceneView {
   /**
    * @param {HTMLCanvasElement} canvas
-   * @param {{styleNames: string[], tr: Function, onHover: Function, onPick: Function, name: string}} opts
+   * @param {{styleNames: string[], tr: Function, onHover?: Function, onPick?: Function, onMove?: Function,
+   *   name: string, stretch?: boolean, wheel?: 'always' | 'ctrl'}} opts
+   *   `wheel: 'ctrl'` zooms only with Ctrl (or ⌘) held, so that a page with
+   *   embedded views still scrolls under the wheel.
    */
   constructor(canvas, opts) {
     this.canvas = canvas;
@@ -23,10 +27,16 @@ export class SceneView {
     this.thread = 0;
     this.hovered = -1;
     this.lastDraw = 0;
-    const ro = new ResizeObserver(() => this.resize());
-    ro.observe(canvas);
+    this.ro = new ResizeObserver(() => this.resize());
+    this.ro.observe(canvas);
     this.resize();
     this.bindPointer();
+  }
+
+  /** Stops watching the canvas size (the view is no longer shown). */
+  destroy() {
+    this.ro.disconnect();
+    this.scene = null;
   }
 
   resize() {
@@ -223,7 +233,7 @@ export class SceneView {
       if (i !== this.hovered) {
         this.hovered = i;
         c.style.cursor = i >= 0 ? 'pointer' : 'grab';
-        this.opts.onHover(i >= 0 ? { ...itemInfo(this.scene, i), x: e.clientX, y: e.clientY } : null);
+        this.opts.onHover?.(i >= 0 ? { ...itemInfo(this.scene, i), x: e.clientX, y: e.clientY } : null);
       } else if (i >= 0 && this.opts.onMove) {
         this.opts.onMove(e.clientX, e.clientY);
       }
@@ -232,20 +242,21 @@ export class SceneView {
       const r = c.getBoundingClientRect();
       if (drag && !drag.moved) {
         const i = this.pick(e.clientX - r.left, e.clientY - r.top);
-        if (i >= 0) this.opts.onPick(itemInfo(this.scene, i));
+        if (i >= 0) this.opts.onPick?.(itemInfo(this.scene, i));
       }
       drag = null;
     });
     c.addEventListener('pointerleave', () => {
       if (this.hovered >= 0) {
         this.hovered = -1;
-        this.opts.onHover(null);
+        this.opts.onHover?.(null);
       }
     });
     c.addEventListener('dblclick', () => this.fit());
     c.addEventListener(
       'wheel',
       (e) => {
+        if (this.opts.wheel === 'ctrl' && !(e.ctrlKey || e.metaKey)) return;
         e.preventDefault();
         const xf = this.transform();
         if (!xf) return;

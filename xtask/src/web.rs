@@ -1,14 +1,18 @@
 //! Building, bundling and serving the web app.
 //!
-//! The site is: `index.html` and the other files of `www/static/`, `app.js`
-//! (the front end bundled by esbuild, with the wasm-bindgen glue),
-//! `screwcut_bg.wasm` (the core, optimised by wasm-opt when it is on PATH)
-//! and `examples/` (every file listed in `examples/index.json`).
+//! The site is: `index.html`, `docs.html` and the other files of
+//! `www/static/`, `app.js` (the app bundled by esbuild, with the
+//! wasm-bindgen glue), `screwcut-preview.js` (the embeddable
+//! `<screwcut-preview>` element, bundled the same way without the editor),
+//! `screwcut_bg.wasm` (the core, optimised by wasm-opt when it is on PATH;
+//! shared by both bundles) and `examples/` (every file listed in
+//! `examples/index.json`). `cargo xtask dist` adds `element/`, the element
+//! as a folder a documentation site can vendor.
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Stdio};
 
 use crate::Result;
 use crate::install::{ensure_chromium, ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, have, root, run};
@@ -49,31 +53,137 @@ pub fn dist(args: &[String]) -> Result {
     }
     let out = root().join("dist");
     build_site(true, &out)?;
-    eprintln!("wrote the site to {}", out.display());
+    let element = out.join("element");
+    write_element_package(&out, &element)?;
+    eprintln!("wrote the site to {} and the embeddable element to {}", out.display(), element.display());
     Ok(())
 }
 
-/// Runs the wasm-bindgen tests of the binding layer in Node and in headless
-/// Chromium (through ChromeDriver from the system packages).
-pub fn wasm_tests() -> Result {
-    ensure_wasm_target()?;
-    ensure_wasm_bindgen()?;
-    let runner = "wasm-bindgen-test-runner";
-    let mut node = Command::new("cargo");
-    node.args(["test", "--target", "wasm32-unknown-unknown", "--lib", "wasm::"])
-        .env("CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER", runner)
-        .current_dir(root());
-    eprintln!("$ cargo test --target wasm32-unknown-unknown --lib wasm::   (Node)");
-    let status = node.status().map_err(|e| format!("cannot run cargo: {e}"))?;
-    if !status.success() {
-        return Err("wasm tests in Node failed".into());
+/// The files of the element's folder: the bundle and the wasm from the
+/// built site `site`, a package.json and the README of `www/element/`.
+pub const ELEMENT_FILES: [&str; 4] = ["screwcut-preview.js", "screwcut_bg.wasm", "package.json", "README.md"];
+
+/// Writes `dir` (emptied first) as the vendorable element package, from the built site `site`.
+fn write_element_package(site: &Path, dir: &Path) -> Result {
+    if dir.exists() {
+        std::fs::remove_dir_all(dir).map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    for f in &ELEMENT_FILES[..2] {
+        copy(&site.join(f), &dir.join(f))?;
+    }
+    let version = crate_version(&read(&root().join("Cargo.toml"))?)?;
+    write(&dir.join("package.json"), &element_package_json(&version))?;
+    copy(&root().join("www").join("element").join("README.md"), &dir.join("README.md"))?;
+    for f in &ELEMENT_FILES[..2] {
+        let size = std::fs::metadata(dir.join(f)).map(|m| m.len()).unwrap_or(0);
+        eprintln!("element: {f} {} KiB", size.div_ceil(1024));
     }
     Ok(())
 }
 
+/// The `version` of the `[package]` table of a Cargo.toml.
+fn crate_version(manifest: &str) -> Result<String> {
+    let package = manifest.split("\n[").next().unwrap_or(manifest);
+    package
+        .lines()
+        .find_map(|l| {
+            l.trim().strip_prefix("version").map(|v| v.trim_start().trim_start_matches('=').trim().trim_matches('"'))
+        })
+        .map(str::to_string)
+        .ok_or_else(|| "Cargo.toml: no package version".to_string())
+}
+
+/// The package.json of the element folder.
+fn element_package_json(version: &str) -> String {
+    format!(
+        r#"{{
+  "name": "screwcut-preview",
+  "version": "{version}",
+  "description": "<screwcut-preview>: a live diagram of CNC lathe thread-cutting G-code (GSK980TDc, Fanuc 0i, Renhe) for documentation pages",
+  "license": "MIT OR Apache-2.0",
+  "type": "module",
+  "main": "screwcut-preview.js",
+  "module": "screwcut-preview.js",
+  "exports": {{
+    ".": "./screwcut-preview.js",
+    "./screwcut_bg.wasm": "./screwcut_bg.wasm"
+  }},
+  "files": ["screwcut-preview.js", "screwcut_bg.wasm", "README.md"],
+  "sideEffects": true,
+  "keywords": ["cnc", "lathe", "g-code", "thread", "web-component", "custom-element", "wasm"]
+}}
+"#
+    )
+}
+
+/// Runs the wasm-bindgen tests of the binding layer (`src/wasm/tests/`)
+/// twice from the library's wasm32 test binary: in Node, then in headless
+/// Chromium through ChromeDriver from the system packages (options in
+/// `webdriver.json`). Both runs print their results and pass counts.
+pub fn wasm_tests() -> Result {
+    ensure_wasm_target()?;
+    ensure_wasm_bindgen()?;
+    let node = wasm_test_run("Node", &[])?;
+    ensure_chromium()?;
+    let driver = root().join("webdriver.json");
+    let browser = wasm_test_run(
+        "Chromium",
+        &[
+            ("WASM_BINDGEN_USE_BROWSER", "1"),
+            ("CHROMEDRIVER", "/usr/bin/chromedriver"),
+            ("WASM_BINDGEN_TEST_WEBDRIVER_JSON", &path_str(&driver)?),
+        ],
+    )?;
+    eprintln!("wasm tests: {node} passed in Node, {browser} passed in Chromium");
+    Ok(())
+}
+
+/// `cargo test --target wasm32-unknown-unknown --lib wasm::` under
+/// wasm-bindgen-test-runner with `env`; echoes the output and returns the
+/// number of tests that passed (an error when any failed or none ran).
+fn wasm_test_run(place: &str, env: &[(&str, &str)]) -> Result<u32> {
+    let args = ["test", "--target", "wasm32-unknown-unknown", "--lib", "wasm::"];
+    let shown: Vec<String> = env.iter().map(|(k, v)| format!("{k}={v} ")).collect();
+    eprintln!("$ {}cargo {}   ({place})", shown.concat(), args.join(" "));
+    let mut child = Command::new("cargo")
+        .args(args)
+        .env("CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER", "wasm-bindgen-test-runner")
+        .envs(env.iter().copied())
+        .current_dir(root())
+        .stdout(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot run cargo: {e}"))?;
+    let mut passed = 0;
+    if let Some(out) = child.stdout.take() {
+        for line in BufReader::new(out).lines().map_while(std::result::Result::ok) {
+            println!("{line}");
+            if let Some(n) = passed_count(&line) {
+                passed += n;
+            }
+        }
+    }
+    let status = child.wait().map_err(|e| format!("cargo test: {e}"))?;
+    if !status.success() {
+        return Err(format!("wasm tests in {place} failed ({status})"));
+    }
+    if passed == 0 {
+        return Err(format!("no wasm test ran in {place}"));
+    }
+    Ok(passed)
+}
+
+/// The pass count of a libtest summary line (`test result: ok. 27 passed; ...`).
+fn passed_count(line: &str) -> Option<u32> {
+    let rest = line.trim().strip_prefix("test result: ")?;
+    let (_, counts) = rest.split_once(". ")?;
+    counts.split_once(" passed")?.0.trim().parse().ok()
+}
+
 /// Builds the site, serves it on a free local port and runs the Playwright
-/// test in `tests/browser/` against it with the system Chromium; fails when
-/// the test fails.
+/// tests in `tests/browser/` against it with the system Chromium: the app
+/// (`test.mjs`), then the documentation page of embedded previews
+/// (`docs.test.mjs`); fails when either fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -84,7 +194,9 @@ pub fn browser_tests() -> Result {
     let port = listener.local_addr().map_err(|e| e.to_string())?.port();
     std::thread::spawn(move || serve_forever(listener, out));
     let url = format!("http://127.0.0.1:{port}/");
-    run("node", &["test.mjs", &url], Some(&dir))
+    let app = run("node", &["test.mjs", &url], Some(&dir));
+    let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
+    app.and(docs)
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
@@ -117,15 +229,17 @@ pub fn build_site(release: bool, out: &Path) -> Result {
         std::fs::remove_dir_all(out).map_err(|e| format!("cannot empty {}: {e}", out.display()))?;
     }
     std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let esbuild = www.join("node_modules").join(".bin").join("esbuild");
-    let outfile = format!("--outfile={}", path_str(&out.join("app.js"))?);
-    let mut args = vec!["src/main.js", "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];
-    if release {
-        args.push("--minify");
-    } else {
-        args.push("--sourcemap");
+    let esbuild = path_str(&www.join("node_modules").join(".bin").join("esbuild"))?;
+    for (entry, file) in [("src/main.js", "app.js"), ("src/embed/element.js", "screwcut-preview.js")] {
+        let outfile = format!("--outfile={}", path_str(&out.join(file))?);
+        let mut args = vec![entry, "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];
+        if release {
+            args.push("--minify");
+        } else {
+            args.push("--sourcemap");
+        }
+        run(&esbuild, &args, Some(&www))?;
     }
-    run(&path_str(&esbuild)?, &args, Some(&www))?;
     copy(&bg, &out.join("screwcut_bg.wasm"))?;
     let statics = www.join("static");
     for entry in std::fs::read_dir(&statics).map_err(|e| format!("{}: {e}", statics.display()))? {
@@ -140,8 +254,14 @@ pub fn build_site(release: bool, out: &Path) -> Result {
         copy(&examples.join(&file), &out.join("examples").join(&file))?;
     }
     copy(&examples.join("index.json"), &out.join("examples").join("index.json"))?;
-    let size = std::fs::metadata(out.join("screwcut_bg.wasm")).map(|m| m.len()).unwrap_or(0);
-    eprintln!("site: {} (wasm {} KiB)", out.display(), size / 1024);
+    let size = |f: &str| std::fs::metadata(out.join(f)).map(|m| m.len().div_ceil(1024)).unwrap_or(0);
+    eprintln!(
+        "site: {} (wasm {} KiB, app.js {} KiB, screwcut-preview.js {} KiB)",
+        out.display(),
+        size("screwcut_bg.wasm"),
+        size("app.js"),
+        size("screwcut-preview.js")
+    );
     Ok(())
 }
 
@@ -248,6 +368,10 @@ fn path_str(p: &Path) -> Result<String> {
 
 fn read(p: &Path) -> Result<String> {
     std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))
+}
+
+fn write(p: &Path, text: &str) -> Result {
+    std::fs::write(p, text).map_err(|e| format!("{}: {e}", p.display()))
 }
 
 fn copy(from: &Path, to: &Path) -> Result {
@@ -362,6 +486,29 @@ mod tests {
         assert_eq!(resolve(d, "/../etc/passwd"), None);
         assert_eq!(resolve(d, "/%2e%2e/etc/passwd"), None);
         assert_eq!(resolve(d, "/bad%zz"), None);
+    }
+
+    #[test]
+    fn pass_counts_are_read_from_libtest_summaries() {
+        assert_eq!(
+            passed_count("test result: ok. 27 passed; 0 failed; 0 ignored; 0 filtered out; finished in 0.85s"),
+            Some(27)
+        );
+        assert_eq!(passed_count("test result: FAILED. 3 passed; 1 failed; 0 ignored"), Some(3));
+        assert_eq!(passed_count("running 27 tests"), None);
+        assert_eq!(passed_count("test wasm::tests::a ... ok"), None);
+    }
+
+    #[test]
+    fn element_package_carries_the_crate_version() {
+        let manifest = "[package]\nname = \"screwcut\"\nversion = \"1.2.3\"\n\n[dependencies]\nversion = \"9\"\n";
+        assert_eq!(crate_version(manifest).unwrap(), "1.2.3");
+        assert!(crate_version("[package]\nname = \"x\"\n").is_err());
+        let real = crate_version(&read(&root().join("Cargo.toml")).unwrap()).unwrap();
+        let json = element_package_json(&real);
+        assert!(json.contains(&format!("\"version\": \"{real}\"")));
+        assert!(json.contains("\"main\": \"screwcut-preview.js\""));
+        assert!(root().join("www").join("element").join("README.md").exists());
     }
 
     #[test]

@@ -1,0 +1,59 @@
+// Reading <screwcut-preview>'s attributes and text content.
+
+/** The views an element can show, in the order they are laid out. */
+export const VIEWS = ['side', 'tooth', 'starts', 'table'];
+
+/** `view="side tooth"` (spaces, commas or bars) → the known views, default side. */
+export function parseViews(attr) {
+  const asked = String(attr || '')
+    .toLowerCase()
+    .split(/[\s,|]+/)
+    .filter((v) => VIEWS.includes(v));
+  return asked.length ? [...new Set(asked)] : ['side'];
+}
+
+/** `height="320"` (CSS pixels per drawing), clamped to 120–1200, default 320. */
+export function parseHeight(attr) {
+  const h = Number.parseFloat(attr);
+  return Number.isFinite(h) ? Math.min(1200, Math.max(120, h)) : 320;
+}
+
+/** `thread="2"` (1-based) → 0-based index, default 0. */
+export function parseThread(attr) {
+  const n = Number.parseInt(attr, 10);
+  return Number.isFinite(n) && n >= 1 ? n - 1 : 0;
+}
+
+/** `settings="No.058=55; x_mode=radius"` → `{name: value}` (lines or `;` separate them). */
+export function parseSettings(attr) {
+  const out = {};
+  for (const part of String(attr || '').split(/[;\n]/)) {
+    const eq = part.indexOf('=');
+    if (eq <= 0) continue;
+    const name = part.slice(0, eq).trim();
+    const value = part.slice(eq + 1).trim();
+    if (name) out[name] = value;
+  }
+  return out;
+}
+
+/** `{name: value}` as the planner's `NAME=VALUE` lines. */
+export const settingsLines = (s) =>
+  Object.entries(s)
+    .map(([k, v]) => `${k}=${v}`)
+    .join('\n');
+
+/**
+ * A program written inside the element, as the author meant it: the blank
+ * first and last lines of the markup dropped and the common indentation
+ * removed (so it can be indented with the page's HTML).
+ */
+export function dedent(text) {
+  const lines = String(text).replace(/\r\n?/g, '\n').split('\n');
+  while (lines.length && !lines[0].trim()) lines.shift();
+  while (lines.length && !lines[lines.length - 1].trim()) lines.pop();
+  let indent = Infinity;
+  for (const l of lines) if (l.trim()) indent = Math.min(indent, l.match(/^[ \t]*/)[0].length);
+  if (!Number.isFinite(indent)) indent = 0;
+  return lines.map((l) => l.slice(indent)).join('\n') + (lines.length ? '\n' : '');
+}

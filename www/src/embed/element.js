@@ -1,0 +1,388 @@
+// <screwcut-preview>: a live thread diagram for documentation pages.
+//
+//   <script type="module" src="screwcut-preview.js"></script>
+//   <screwcut-preview dialect="gsk980tdc" view="side table" height="300">
+//     G00 X58 Z70
+//     X47.1
+//     G32 Z13 F2
+//     ...
+//   </screwcut-preview>
+//
+// Attributes: `dialect` (gsk980tdc, fanuc0i, renhe), `view` (any of side,
+// tooth, starts, table), `height` (px per drawing), `thread` (1-based),
+// `settings` ("NAME=VALUE; ..."), `src` (load the program from a URL instead
+// of the text content), `editable` (a plain editor that re-plans as you
+// type; without it the program is listed read-only, unless `hide-code`), `app` (the full app the "Open in editor" link goes to; default: a
+// <meta name="screwcut-app" content="..."> of the page, else the app next to
+// this script), `lang` (en, zh). Every element on a page shares one wasm
+// instance, loaded when the first element comes into view; each element
+// plans and draws when it is scrolled near. Properties: `program` (get/set),
+// `result` (the planner's last answer), `start()`. Event `screwcut-plan`
+// after every plan, with counts in `detail`.
+
+import { SceneView } from '../view.js';
+import { textIn, labelIn } from '../i18n.js';
+import { esc, num, passTableHead, passTableRows } from '../table.js';
+import { jsonFragment } from '../fragment.js';
+import { HERE, loadCore, startWhenVisible, forget } from './core.js';
+import { STYLE } from './style.js';
+import { parseViews, parseHeight, parseThread, parseSettings, settingsLines, dedent } from './attrs.js';
+
+/** Most diagnostics listed under an embedded drawing. */
+const MAX_LISTED = 6;
+
+/** Attributes that change the layout (the rest only re-plan). */
+const LAYOUT = new Set(['view', 'height', 'editable', 'hide-code', 'lang']);
+
+export class ScrewcutPreview extends HTMLElement {
+  static observedAttributes = ['dialect', 'view', 'height', 'editable', 'hide-code', 'src', 'app', 'settings', 'thread', 'lang'];
+
+  constructor() {
+    super();
+    this.attachShadow({ mode: 'open' });
+    this._text = null; // the program, once read
+    this._state = 'idle'; // idle → loading → ready | error
+    this._views = {}; // name → SceneView
+    this._result = null;
+    this._lastGood = null;
+    this._thread = null; // chosen in the bar; null: the `thread` attribute
+    this._queued = false;
+    this._hover = null;
+  }
+
+  connectedCallback() {
+    if (!this._built) this._build();
+    if (this._state === 'idle') {
+      this.dataset.state = 'idle';
+      startWhenVisible(this);
+    }
+  }
+
+  disconnectedCallback() {
+    if (this._state === 'idle') forget(this);
+  }
+
+  attributeChangedCallback(name, old, value) {
+    if (!this._built || old === value) return;
+    if (LAYOUT.has(name)) {
+      this._build();
+      if (this._state === 'ready') this._plan();
+    } else if (name === 'src') {
+      if (this._state !== 'idle') this._load();
+    } else if (name === 'app') {
+      this._updateLink();
+    } else if (name === 'thread') {
+      this._thread = null;
+      this._schedule();
+    } else if (this._state === 'ready') {
+      this._schedule();
+    }
+  }
+
+  /** The G-code shown (the text content or `src` until set). */
+  get program() {
+    return this._text ?? dedent(this.textContent);
+  }
+
+  set program(text) {
+    this._text = String(text);
+    if (this._editor && this._editor.value !== this._text) this._editor.value = this._text;
+    this._renderListing();
+    if (this._state === 'ready') this._schedule();
+  }
+
+  /** The planner's last answer (see `update` in src/wasm.rs), or null. */
+  get result() {
+    return this._result;
+  }
+
+  /** Starts now, without waiting to be scrolled into view. */
+  start() {
+    if (this._state !== 'idle') return this._started;
+    forget(this);
+    this._started = this._load();
+    return this._started;
+  }
+
+  // ---- layout ----
+
+  _t(key, vars) {
+    return textIn(this._lang(), key, vars);
+  }
+
+  _lang() {
+    return this.getAttribute('lang') === 'zh' ? 'zh' : 'en';
+  }
+
+  _build() {
+    this._built = true;
+    for (const v of Object.values(this._views)) v.destroy();
+    this._views = {};
+    const views = parseViews(this.getAttribute('view'));
+    this._viewNames = views;
+    const h = parseHeight(this.getAttribute('height'));
+    const editable = this.hasAttribute('editable');
+    const panes = views
+      .map((v) =>
+        v === 'table'
+          ? `<div class="view table" data-view="table"><span class="cap">${esc(this._t('passes'))}</span><table><thead></thead><tbody></tbody></table></div>`
+          : `<div class="view" data-view="${v}"><canvas></canvas><span class="cap">${esc(this._t(v))}</span></div>`,
+      )
+      .join('');
+    this.shadowRoot.innerHTML =
+      `<style>${STYLE}</style><div class="box" part="box" style="--h:${h}px"><div class="views">${panes}</div>` +
+      (editable
+        ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>`
+        : this.hasAttribute('hide-code')
+          ? ''
+          : `<pre class="code" part="code"></pre>`) +
+      `<div class="bar"><span class="sum">${esc(this._t('loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
+      `<a class="open" target="_blank" rel="noopener" part="open">${esc(this._t('open_in_editor'))} ↗</a></div>` +
+      `<ul class="diags"${editable ? ' data-editable' : ''}></ul><div class="tip" hidden></div></div>`;
+    const $ = (sel) => this.shadowRoot.querySelector(sel);
+    this._sum = $('.sum');
+    this._select = $('.thread');
+    this._link = $('.open');
+    this._diags = $('.diags');
+    this._tip = $('.tip');
+    this._box = $('.box');
+    this._table = $('.view.table table');
+    this._editor = $('textarea');
+    this._listing = $('pre.code');
+    this._renderListing();
+    this._select.addEventListener('change', () => {
+      this._thread = Number(this._select.value);
+      this._plan();
+    });
+    if (this._editor) {
+      this._editor.value = this.program;
+      this._editor.addEventListener('input', () => {
+        this._text = this._editor.value;
+        this._schedule();
+      });
+    }
+    this._diags.addEventListener('click', (e) => {
+      const li = e.target.closest('li[data-line]');
+      if (li && this._editor) this._gotoLine(Number(li.dataset.line));
+    });
+    this._updateLink();
+    if (this._state === 'ready') this._makeViews();
+  }
+
+  _makeViews() {
+    const tr = (key, value) => labelIn(this._lang(), key, value);
+    for (const name of this._viewNames) {
+      if (name === 'table') continue;
+      const canvas = this.shadowRoot.querySelector(`.view[data-view="${name}"] canvas`);
+      this._views[name] = new SceneView(canvas, {
+        styleNames: this._styleNames,
+        tr,
+        name,
+        stretch: name === 'side',
+        wheel: 'ctrl',
+        onHover: (info) => this._onHover(info),
+        onMove: (x, y) => this._moveTip(x, y),
+        onPick: (info) => {
+          if (this._editor && info.lines.length) this._gotoLine(info.lines[0]);
+        },
+      });
+    }
+  }
+
+  // ---- planning ----
+
+  async _load() {
+    this._setState('loading');
+    try {
+      const src = this.getAttribute('src');
+      const fetched = src
+        ? fetch(new URL(src, document.baseURI)).then((r) => {
+            if (!r.ok) throw new Error(`${src}: ${r.status} ${r.statusText}`);
+            return r.text();
+          })
+        : null;
+      const [core, text] = await Promise.all([loadCore(), fetched]);
+      if (text !== null) this._text = text;
+      this._renderListing();
+      this._core = core;
+      this._styleNames = core.styleNames;
+      if (this._editor) this._editor.value = this.program;
+      this._setState('ready');
+      this._makeViews();
+      this._plan();
+    } catch (e) {
+      this._fail(e);
+    }
+  }
+
+  _schedule() {
+    if (this._queued || this._state !== 'ready') return;
+    this._queued = true;
+    requestAnimationFrame(() => {
+      this._queued = false;
+      this._plan();
+    });
+  }
+
+  _settings() {
+    return parseSettings(this.getAttribute('settings'));
+  }
+
+  _dialect() {
+    return (this.getAttribute('dialect') || 'gsk980tdc').trim();
+  }
+
+  _plan() {
+    if (this._state !== 'ready') return;
+    const text = this.program;
+    const thread = this._thread ?? parseThread(this.getAttribute('thread'));
+    let r;
+    try {
+      r = this._core.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1);
+    } catch (e) {
+      this._fail(e, true);
+      return;
+    }
+    this._result = r;
+    const stale = r.alarms > 0 && this._lastGood;
+    if (r.good) this._lastGood = r;
+    const shown = stale ? this._lastGood : r;
+    for (const [name, view] of Object.entries(this._views)) {
+      view.setScene(shown[name], !!stale);
+      view.setThread(shown.thread ?? 0);
+    }
+    this._renderTable(shown);
+    this._renderBar(r, !!stale);
+    this._renderDiagnostics(r.diagnostics);
+    this._updateLink();
+    this.dispatchEvent(
+      new CustomEvent('screwcut-plan', {
+        detail: { threads: r.threads.length, passes: (r.passes || []).length, alarms: r.alarms, warnings: r.warnings, notes: r.notes },
+      }),
+    );
+  }
+
+  _fail(e, keep = false) {
+    const msg = String(e && e.message ? e.message : e);
+    if (!keep) this._setState('error');
+    this._sum.textContent = msg;
+    this._sum.classList.add('stale');
+    this.dispatchEvent(new CustomEvent('screwcut-error', { detail: { message: msg } }));
+  }
+
+  _setState(s) {
+    this._state = s;
+    this.dataset.state = s;
+  }
+
+  // ---- parts ----
+
+  /** The read-only listing: one numbered line per program line. */
+  _renderListing() {
+    if (!this._listing) return;
+    const lines = this.program.replace(/\n$/, '').split('\n');
+    this._listing.innerHTML = lines.map((l, i) => `<span data-line="${i + 1}">${esc(l)}</span>`).join('');
+  }
+
+  /** Marks the listing's lines of what the pointer is over. */
+  _markLines(lines) {
+    if (!this._listing) return;
+    for (const el of this._listing.querySelectorAll('span.hot')) el.classList.remove('hot');
+    for (const l of lines) this._listing.querySelector(`span[data-line="${l}"]`)?.classList.add('hot');
+  }
+
+  _renderTable(r) {
+    if (!this._table) return;
+    const t = (key) => this._t(key);
+    this._table.tHead.innerHTML = passTableHead(t);
+    this._table.tBodies[0].innerHTML = passTableRows(r.passes, t);
+  }
+
+  _renderBar(r, stale) {
+    const th = r.threads.length > 0 ? r.threads[r.thread ?? 0] : null;
+    let sum = this._t('embed_summary', { threads: r.threads.length, passes: th ? th.passes : 0, alarms: r.alarms, warnings: r.warnings });
+    if (stale) sum += ` · ${this._t('stale')}`;
+    this._sum.textContent = sum;
+    this._sum.classList.toggle('stale', stale || r.alarms > 0);
+    const options = r.threads
+      .map((x, i) => `<option value="${i}">${i + 1}: ${esc(x.source.toUpperCase())} ${esc(x.kind)} · ${esc(labelIn(this._lang(), 'lead', num(x.lead)))} · L${x.line}–${x.end_line}</option>`)
+      .join('');
+    if (this._select.dataset.html !== options) {
+      this._select.innerHTML = options;
+      this._select.dataset.html = options;
+    }
+    this._select.hidden = r.threads.length < 2;
+    if (r.thread !== null && r.thread !== undefined) this._select.value = String(r.thread);
+  }
+
+  _renderDiagnostics(list) {
+    const shown = (list || []).filter((d) => d.severity !== 'info');
+    const items = shown
+      .slice(0, MAX_LISTED)
+      .map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}</li>`);
+    if (shown.length > MAX_LISTED) items.push(`<li>${esc(this._t('more', { n: shown.length - MAX_LISTED }))}</li>`);
+    this._diags.innerHTML = items.join('');
+  }
+
+  /** Points "Open in editor" at the app, carrying the program, dialect and settings. */
+  _updateLink() {
+    const dialect = this._result ? this._result.dialect : this._dialect();
+    const state = { dialect, settings: { [dialect]: this._settings() }, program: this.program };
+    this._link.href = this._appUrl().href + jsonFragment(state);
+  }
+
+  _appUrl() {
+    const attr = this.getAttribute('app');
+    const meta = document.querySelector('meta[name="screwcut-app"]');
+    const base = attr || (meta && meta.content) || '';
+    const url = base ? new URL(base, document.baseURI) : new URL(HERE);
+    url.hash = '';
+    return url;
+  }
+
+  _gotoLine(line) {
+    const ed = this._editor;
+    const lines = ed.value.split('\n');
+    let at = 0;
+    for (let i = 0; i < Math.min(line - 1, lines.length); i++) at += lines[i].length + 1;
+    ed.focus();
+    ed.setSelectionRange(at, at + (lines[line - 1] || '').length);
+  }
+
+  _onHover(info) {
+    const tip = this._tip;
+    const r = this._result;
+    for (const view of Object.values(this._views)) {
+      view.setHighlight(info && info.pass >= 0 ? new Set(view.itemsOfPass(info.thread, info.pass)) : null);
+    }
+    const rows = this._table ? this._table.tBodies[0].rows : [];
+    for (const row of rows) row.classList.toggle('hot', !!info && info.thread === r?.thread && Number(row.dataset.pass) === info.pass);
+    if (!info) {
+      tip.hidden = true;
+      this._markLines([]);
+      return;
+    }
+    const p = info.pass >= 0 && r && info.thread === r.thread && r.passes ? r.passes[info.pass] : null;
+    this._markLines(p ? p.lines : info.lines);
+    let text = `${this._t('col_lines')} ${info.lines.join(', ')}`;
+    if (p) {
+      text =
+        `${this._t('col_pass')} ${p.index}` +
+        (r.threads[r.thread]?.starts > 1 ? ` · ${this._t('col_start')} ${p.start}` : '') +
+        ` · X${num(p.from[0])} Z${num(p.from[1])}→${num(p.to[1])} · ${this._t('col_depth')} ${num(p.depth)} · ${this._t(p.role)} · ${text}`;
+    }
+    tip.textContent = text;
+    tip.hidden = false;
+    this._moveTip(info.x, info.y);
+  }
+
+  _moveTip(x, y) {
+    const box = this._box.getBoundingClientRect();
+    const tip = this._tip;
+    const left = Math.max(4, Math.min(x - box.left + 12, box.width - tip.offsetWidth - 4));
+    tip.style.left = `${left}px`;
+    tip.style.top = `${y - box.top + 14}px`;
+  }
+}
+
+if (!customElements.get('screwcut-preview')) customElements.define('screwcut-preview', ScrewcutPreview);
