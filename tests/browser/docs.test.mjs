@@ -115,6 +115,12 @@ const inspect = (id) =>
 const waitReady = (id) =>
   page.waitForFunction((id) => ['ready', 'error'].includes(document.getElementById(id).dataset.state), id, { timeout: 20_000 });
 
+/** The state an "Open in editor" link carries in its `#j=` fragment. */
+function fromFragment(link) {
+  const at = link.indexOf('#j=');
+  return at < 0 ? null : JSON.parse(Buffer.from(link.slice(at + 3), 'base64url').toString('utf8'));
+}
+
 /** Two animation frames: the views draw on the next frame after a plan. */
 const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
@@ -200,6 +206,17 @@ try {
   await page.waitForTimeout(300);
   const y1 = await page.evaluate(() => window.scrollY);
   check('the wheel over a drawing scrolls the page', y1 > y0, `${y0} → ${y1}`);
+  const before = await page.evaluate(() => document.getElementById('o1006')._views.side.transform().sx);
+  const box2 = await page.locator('#o1006 .view[data-view="side"] canvas').boundingBox();
+  await page.mouse.move(box2.x + box2.width / 2, box2.y + box2.height / 2);
+  await page.keyboard.down('Control');
+  await page.mouse.wheel(0, -200);
+  await page.keyboard.up('Control');
+  await page.waitForTimeout(150);
+  const zoom = await page.evaluate(() => ({ sx: document.getElementById('o1006')._views.side.transform().sx, y: window.scrollY }));
+  check('Ctrl + wheel zooms the drawing instead', zoom.sx > before * 1.2 && zoom.y === y1, `${before} → ${zoom.sx}, scroll ${y1} → ${zoom.y}`);
+  await page.evaluate(() => document.getElementById('o1006')._views.side.fit());
+  await page.waitForTimeout(100);
   const at = await page.evaluate(() => {
     const v = document.getElementById('o1006')._views.side;
     const s = v.scene;
@@ -221,6 +238,23 @@ try {
   const marked = await page.evaluate(() => [...document.getElementById('o1006').shadowRoot.querySelectorAll('pre.code span.hot')].map((s) => s.textContent));
   check('and its four blocks in the listing', marked.length === 4 && marked[0].startsWith('N30 X47.1') && marked[1].startsWith('N40 G32'), JSON.stringify(marked));
   await page.mouse.move(5, 5);
+
+  // ---- attributes change a started embed ----
+  const changed = await page.evaluate(async () => {
+    const el = document.getElementById('g92-two-start');
+    el.setAttribute('lang', 'zh');
+    el.setAttribute('hide-code', '');
+    el.setAttribute('view', 'starts table');
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    const root = el.shadowRoot;
+    return {
+      captions: [...root.querySelectorAll('.cap')].map((c) => c.textContent),
+      listing: !!root.querySelector('pre.code'),
+      rows: root.querySelectorAll('tbody tr').length,
+      link: root.querySelector('a.open').textContent,
+    };
+  });
+  check('lang, hide-code and view apply to a started embed', JSON.stringify(changed.captions) === '["多头","走刀"]' && !changed.listing && changed.rows === 8 && changed.link.startsWith('在编辑器中打开'), JSON.stringify(changed));
 
   // ---- the editable embed re-plans as one types ----
   const editor = page.locator('#renhe-edit textarea');
@@ -245,7 +279,8 @@ try {
   check('without the X feed the G33 on line 6 is alarm E18-05', alarm.diagnostics.some((d) => d.startsWith('error') && d.includes('6:1') && d.includes('E18-05')), JSON.stringify(alarm.diagnostics));
   check('the last good drawing stays, greyed', alarm.canvases[0].n > 200 && alarm.summary.includes('Alarm'), `${alarm.canvases[0].n} px, ${alarm.summary}`);
   await page.locator('#renhe-edit').screenshot({ path: path.join(shots, 'docs-renhe-edit-alarm.png') });
-  check('the link carries the edited program', decodeURIComponent(alarm.link).includes('#j=') && alarm.link !== seen['renhe-edit'].link);
+  const carried = fromFragment(alarm.link);
+  check('the link carries the edited program', carried && carried.program === (await editor.inputValue()) && carried.dialect === 'renhe', JSON.stringify(carried));
 
   // ---- "Open in editor" opens the app with the same program ----
   for (const id of ['o1006', 'g76-fanuc']) {

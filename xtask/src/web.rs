@@ -117,13 +117,19 @@ fn element_package_json(version: &str) -> String {
     )
 }
 
-/// Runs the wasm-bindgen tests of the binding layer (`src/wasm/tests/`)
-/// twice from the library's wasm32 test binary: in Node, then in headless
-/// Chromium through ChromeDriver from the system packages (options in
-/// `webdriver.json`). Both runs print their results and pass counts.
+/// Lints the wasm-bindgen tests of the binding layer (`src/wasm/tests/`) and
+/// runs them twice from the library's wasm32 test binary: in Node, then in
+/// headless Chromium through ChromeDriver from the system packages (options
+/// in `webdriver.json`). Both runs print their results and pass counts.
 pub fn wasm_tests() -> Result {
     ensure_wasm_target()?;
     ensure_wasm_bindgen()?;
+    // The tests are wasm32-only code that the native clippy run never sees.
+    run(
+        "cargo",
+        &["clippy", "--target", "wasm32-unknown-unknown", "--lib", "--profile", "test", "--", "-D", "warnings"],
+        None,
+    )?;
     let node = wasm_test_run("Node", &[])?;
     ensure_chromium()?;
     let driver = root().join("webdriver.json");

@@ -126,7 +126,7 @@ export class ScrewcutPreview extends HTMLElement {
       .map((v) =>
         v === 'table'
           ? `<div class="view table" data-view="table"><span class="cap">${esc(this._t('passes'))}</span><table><thead></thead><tbody></tbody></table></div>`
-          : `<div class="view" data-view="${v}"><canvas></canvas><span class="cap">${esc(this._t(v))}</span></div>`,
+          : `<div class="view" data-view="${v}"><canvas role="img" aria-label="${esc(this._t(v))}"></canvas><span class="cap">${esc(this._t(v))}</span></div>`,
       )
       .join('');
     this.shadowRoot.innerHTML =
