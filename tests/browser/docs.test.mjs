@@ -160,7 +160,8 @@ try {
     );
     check(`${id}: plans without an alarm`, s.result && s.result.alarms === 0, s.summary);
     const editable = await page.evaluate((id) => document.getElementById(id).hasAttribute('editable'), id);
-    if (!editable) check(`${id}: lists its program`, s.listing.length > 20 && s.listing + '\n' === s.program, JSON.stringify(s.listing.slice(0, 60)));
+    const hidden = await page.evaluate((id) => document.getElementById(id).hasAttribute('hide-code'), id);
+    if (!editable && !hidden) check(`${id}: lists its program`, s.listing.length > 20 && s.listing + '\n' === s.program, JSON.stringify(s.listing.slice(0, 60)));
     await page.locator(`#${id}`).screenshot({ path: path.join(shots, `docs-${id}.png`) });
   }
   check('one wasm download served every embed', wasmRequests.length === 1, JSON.stringify(wasmRequests));
@@ -168,6 +169,7 @@ try {
   // ---- what the page says each example does ----
   const o1006 = seen.o1006;
   check('O1006: five passes, the first at X47.1', o1006.rows.length === 5 && o1006.rows[0][2] === '47.1', JSON.stringify(o1006.rows[0]));
+  check('the tooth-only O1006 embed has the same program, not listed', seen['o1006-tooth'].program === o1006.program && seen['o1006-tooth'].listing === '', seen['o1006-tooth'].listing);
   check('O1006: depths 0.45 … 1.3', JSON.stringify(o1006.result.passes.map((p) => p.depth)) === '[0.45,0.75,1.05,1.25,1.3]', JSON.stringify(o1006.result.passes));
   check('O0009: the 1 mm infeed warning is listed', seen.o0009.diagnostics.some((d) => d.startsWith('warning') && d.includes('infeed-too-large')), JSON.stringify(seen.o0009.diagnostics));
   const modes = ['g78-radial', 'g78-left', 'g78-right', 'g78-alternating'].map((id) => seen[id].result.threads[0].infeed);
@@ -266,17 +268,18 @@ try {
   await page.waitForFunction(() => document.getElementById('renhe-edit').result.warnings === 0, null, { timeout: 5000 }).catch(() => {});
   const calm = await inspect('renhe-edit');
   check('S1400 clears the warning', calm.result.warnings === 0 && calm.diagnostics.length === 0, JSON.stringify(calm.diagnostics));
-  // Type over the "G00 X34" line a Z move: no X feed before the thread.
+  // Delete the line "G00 X34" (line 5), as the page suggests: no X feed before the thread.
   await editor.click();
   await page.keyboard.press('Control+Home');
   for (let i = 0; i < 4; i++) await page.keyboard.press('ArrowDown');
   await page.keyboard.press('Home');
   await page.keyboard.press('Shift+End');
-  await page.keyboard.type('G00 Z5', { delay: 10 });
+  await page.keyboard.press('Backspace');
+  await page.keyboard.press('Backspace');
   await page.waitForFunction(() => document.getElementById('renhe-edit').result.alarms > 0, null, { timeout: 5000 }).catch(() => {});
   await frames();
   const alarm = await inspect('renhe-edit');
-  check('without the X feed the G33 on line 6 is alarm E18-05', alarm.diagnostics.some((d) => d.startsWith('error') && d.includes('6:1') && d.includes('E18-05')), JSON.stringify(alarm.diagnostics));
+  check('without the X feed the G33, now on line 5, is alarm E18-05', !alarm.program.includes('G00 X34') && alarm.diagnostics.some((d) => d.startsWith('error') && d.includes('5:1') && d.includes('E18-05')), JSON.stringify(alarm.diagnostics));
   check('the last good drawing stays, greyed', alarm.canvases[0].n > 200 && alarm.summary.includes('Alarm'), `${alarm.canvases[0].n} px, ${alarm.summary}`);
   await page.locator('#renhe-edit').screenshot({ path: path.join(shots, 'docs-renhe-edit-alarm.png') });
   const carried = fromFragment(alarm.link);
