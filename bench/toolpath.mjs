@@ -38,6 +38,11 @@ function screwcut(text) {
   return mod.moves().length;
 }
 
+// Native rates measured by `cargo bench --bench throughput` in the same run, passed by xtask.
+const native = Object.fromEntries((process.env.NATIVE_RATES || '').split(',').filter(Boolean).map((kv) => {
+  const [k, v] = kv.split('=');
+  return [k, Number(v)];
+}));
 const rows = [];
 for (const file of files) {
   const text = readFileSync(file, 'utf8');
@@ -47,6 +52,10 @@ for (const file of files) {
   const [scMs] = best(runs, () => screwcut(text));
   const name = file.split('/').pop();
   rows.push({ name, mb, tpMs, scMs });
+  if (native[name]) {
+    const tpRate = mb / tpMs * 1e3;
+    console.log(`  ${name}: screwcut native ${native[name].toFixed(1)} MB/s = ${(native[name] / tpRate).toFixed(1)}× gcode-toolpath (${tpRate.toFixed(1)} MB/s)`);
+  }
   console.log(
     `  ${name}: gcode-toolpath ${tpMs.toFixed(0)} ms (${(mb / tpMs * 1e3).toFixed(1)} MB/s, ${tpSegs} segments); ` +
       `screwcut wasm in Node ${scMs.toFixed(0)} ms (${(mb / scMs * 1e3).toFixed(1)} MB/s) = ${(tpMs / scMs).toFixed(1)}× gcode-toolpath`,

@@ -79,6 +79,8 @@ fn main() {
             summary.1,
             summary.2
         );
+        // A machine-readable line for `cargo xtask bench`.
+        println!("RATE {name}-{mb}mb.nc {rate:.3}");
         if let Some((base, peak)) = mem {
             println!(
                 "                     peak memory {:.1} MiB (text and generator {:.1} MiB before planning): {:.1}× the program size",

@@ -52,24 +52,28 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Settings { dialect } => {
             let s = Settings::new(dialect);
+            let mut out = String::new();
             for (def, v) in s.entries() {
                 let value = match def.kind {
                     Kind::Choice(c) => c.get(v as usize).copied().unwrap_or("?").to_string(),
                     _ => fmt(v),
                 };
-                println!("{:<24} {:<10} {:<12} {}", def.name, value, def.unit, def.help);
+                out += &format!("{:<24} {:<10} {:<12} {}\n", def.name, value, def.unit, def.help);
             }
+            emit(&out);
             ExitCode::SUCCESS
         }
         Command::Codes => {
+            let mut out = String::new();
             for c in Code::ALL {
                 let sev = match c.severity() {
                     Severity::Error => "error",
                     Severity::Warning => "warning",
                     Severity::Info => "info",
                 };
-                println!("{:<28} {sev}", c.as_str());
+                out += &format!("{:<28} {sev}\n", c.as_str());
             }
+            emit(&out);
             ExitCode::SUCCESS
         }
     }
@@ -96,10 +100,13 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
     // Programs from old controllers are not always UTF-8: read them lossily rather than refuse.
     let text = String::from_utf8_lossy(&bytes);
     let plan = screwcut::plan(&text, &settings);
-    // A closed pipe (`| head`) is not an error worth a panic.
-    let out = if json { plan.to_json() + "\n" } else { summary(&plan, file) };
-    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), out.as_bytes());
+    emit(&if json { plan.to_json() + "\n" } else { summary(&plan, file) });
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}
+
+/// Writes to standard output; a closed pipe (`| head`) is not worth a panic.
+fn emit(text: &str) {
+    let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), text.as_bytes());
 }
 
 fn summary(plan: &Plan, file: &str) -> String {
