@@ -15,6 +15,7 @@
 
 pub mod advice;
 pub mod block;
+pub mod chip;
 pub mod cycle;
 pub mod diagnostic;
 pub mod diagram;

@@ -323,3 +323,29 @@ fn g92_gsk_starts_and_run_out() {
     let p = gsk("G00 X30 Z5\nG92 X23.2 F3\n");
     at(&p, Code::MissingWord, 2, 1);
 }
+
+/// Chip areas: whatever the infeed, every pass stays inside the finished
+/// thread space, so the areas of all passes add up to the V of the final
+/// depth, tan 30°·1.3² = 0.975729; radial passes remove tan 30°·(h₁² − h₀²)
+/// each, alternating ones remove more on some passes (the slivers left by
+/// the other flank) and less on others.
+#[test]
+fn chip_areas_add_up_to_the_thread_space() {
+    let full = TAN30 * 1.3 * 1.3;
+    let mut per_mode = Vec::new();
+    for r in 0..4 {
+        let plan = gsk(&format!("G00 X35 Z5\nG78 P0{r}60 Q50 R0.1 D1\nG78 X27.4 Z-30 P1300 Q400 F2\n"));
+        let areas: Vec<f64> = plan.threads[0].passes.iter().map(|p| p.area.unwrap()).collect();
+        let sum: f64 = areas.iter().sum();
+        assert!((sum - full).abs() < 1e-9, "r = {r}: {sum} against {full}");
+        per_mode.push(areas);
+    }
+    // Radial (r = 0): pass 2 from 0.4 to 0.8 removes tan 30°·(0.64 − 0.16).
+    eq(per_mode[0][1], TAN30 * 0.48);
+    // Left flank (r = 1): the same areas as radial.
+    for (a, b) in per_mode[0].iter().zip(&per_mode[1]) {
+        eq(*a, *b);
+    }
+    // Alternating (r = 3): pass 2 takes more than the radial formula.
+    assert!(per_mode[3][1] > TAN30 * 0.48 + 1e-3, "{:?}", per_mode[3]);
+}

@@ -23,7 +23,7 @@ use crate::motion::{MoveKind, Point};
 use crate::num::{EPS, fmt};
 use crate::settings::P;
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, Source, Thread, ThreadKind, v_area};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, Source, Thread, ThreadKind};
 
 /// State the cycles keep between blocks.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -324,12 +324,19 @@ pub fn plan_multi(it: &mut Interp, m: Multi) {
     let k = m.schedule.k;
     let line = *m.lines.last().unwrap_or(&0);
     let first_move = it.moves.len();
+    // Every start has the same passes: the chip areas are computed once.
+    let shifts: Vec<(f64, f64)> = sched
+        .iter()
+        .enumerate()
+        .map(|(n, &(h, _))| (h, infeed::shift(m.infeed, n as u32 + 1, h, k, m.angle, left_side)))
+        .collect();
+    let areas = crate::chip::pass_areas(m.angle, &shifts);
     let mut passes = Vec::with_capacity(sched.len() * m.starts as usize);
     'starts: for s in 0..m.starts {
         let angle = 360.0 * s as f64 / m.starts as f64;
         let mut prev = 0.0;
         for (n, &(h, role)) in sched.iter().enumerate() {
-            let shift = infeed::shift(m.infeed, n as u32 + 1, h, k, m.angle, left_side);
+            let shift = shifts[n].1;
             let pts = m.geom.pass(h, k, shift);
             m.geom.emit(it, &pts, line, m.span);
             if it.stopped() {
@@ -349,7 +356,7 @@ pub fn plan_multi(it: &mut Interp, m: Multi) {
                 screw_in_from: pts.screw_in_from,
                 shift,
                 angle,
-                area: v_area(m.angle, prev, h),
+                area: areas[n],
             });
             prev = h;
         }

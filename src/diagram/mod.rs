@@ -12,7 +12,6 @@
 pub mod editor;
 pub mod packed;
 pub mod paths;
-pub mod profile;
 pub mod scene;
 pub mod side;
 pub mod starts;

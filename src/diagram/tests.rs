@@ -304,7 +304,7 @@ fn o1006_tooth_shows_radial_chevrons() {
     for a in &areas {
         let p = &t.passes[a.pass.unwrap() as usize];
         let pts: Vec<(f64, f64)> = polyline(a).iter().map(|q| (q[0], q[1])).collect();
-        let got = profile::area(&pts);
+        let got = crate::chip::area(&pts);
         assert!((got - p.area.unwrap()).abs() < 1e-5, "pass {}: {got} vs {:?}", p.index, p.area);
         assert_eq!(a.lines, p.lines);
     }

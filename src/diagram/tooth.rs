@@ -9,8 +9,8 @@
 use crate::plan::Plan;
 use crate::thread::{Infeed, Pass, Role, Thread};
 
-use super::profile::{Pl, Tool, area};
 use super::scene::{Anchor, Glyph, Item, Label, Pt, Scene, Shape, Style, ViewKind, num};
+use crate::chip::{Pl, Tool, area};
 
 /// Most depth labels written beside the space; more passes are labelled sparsely.
 pub const MAX_DEPTH_LABELS: usize = 40;

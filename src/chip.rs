@@ -1,3 +1,5 @@
+//! Chip areas: what each pass of a thread removes from the thread space.
+//!
 //! Thread-space profiles as piecewise-linear functions of the axial offset
 //! `u`: the surface left after some passes, `w(u)` ≤ 0 below the crest
 //! (external orientation: depth downward). A tool at depth `d` and shift `s`
@@ -155,6 +157,31 @@ impl Pl {
     }
 }
 
+/// The area each pass removes from one thread space, in cutting order, for
+/// passes given as (depth, axial shift) with a V tool of `angle_deg`: the
+/// material between the surface before the pass and the lower envelope of
+/// the surface and the pass's cut. Radial and single-flank passes give
+/// tan(a/2)·(h₁² − h₀²); alternating flanks leave slivers and remove more.
+/// `None` for a 0° (square) tool, whose width the program does not give.
+pub fn pass_areas(angle_deg: f64, passes: &[(f64, f64)]) -> Vec<Option<f64>> {
+    if !(angle_deg > 0.0 && angle_deg < 180.0) {
+        return vec![None; passes.len()];
+    }
+    let tool = Tool { t: (angle_deg.to_radians() / 2.0).tan(), flat: 0.0 };
+    let reach = passes.iter().map(|(d, s)| d.max(0.0) * tool.t + s.abs()).fold(0.0, f64::max);
+    let (u0, u1) = (-reach - 1.0, reach + 1.0);
+    let mut surface = Pl::flat(u0, u1);
+    passes
+        .iter()
+        .map(|&(d, s)| {
+            let next = surface.min(&tool.cut(d, s, u0, u1));
+            let a: f64 = surface.regions_above(&next).iter().map(|r| area(r)).sum();
+            surface = next;
+            Some(a)
+        })
+        .collect()
+}
+
 /// Area of a simple polygon (absolute, shoelace).
 pub fn area(poly: &[(f64, f64)]) -> f64 {
     let n = poly.len();
@@ -213,6 +240,28 @@ mod tests {
         let removed: f64 = a.regions_above(&env).iter().map(|r| area(r)).sum();
         let total = area(&Pl::flat(-2.0, 2.0).regions_above(&env)[0]);
         assert!((removed + T60 * 0.25 - total).abs() < 1e-9, "{removed} {total}");
+    }
+
+    /// Radial passes: tan 30°·(h₁² − h₀²); flank passes the same; alternating more.
+    #[test]
+    fn pass_areas_by_infeed() {
+        let radial = pass_areas(60.0, &[(0.45, 0.0), (0.75, 0.0)]);
+        assert!((radial[0].unwrap() - T60 * 0.45 * 0.45).abs() < 1e-12);
+        assert!((radial[1].unwrap() - T60 * (0.75f64.powi(2) - 0.45f64.powi(2))).abs() < 1e-12);
+        // Left flank: the tip runs on the −Z flank, (k − h)·tan 30° left of the middle (k = 1.3).
+        let k = 1.3;
+        let flank: Vec<(f64, f64)> = [0.4, 0.8, 1.2, 1.3].iter().map(|&h| (h, -(k - h) * T60)).collect();
+        let a = pass_areas(60.0, &flank);
+        let mut prev = 0.0f64;
+        for (h, got) in [0.4, 0.8, 1.2, 1.3].iter().zip(&a) {
+            assert!((got.unwrap() - T60 * (h * h - prev * prev)).abs() < 1e-9, "{h}: {got:?}");
+            prev = *h;
+        }
+        // Alternating: the second pass, on the other flank, removes more than the radial formula.
+        let alt = pass_areas(60.0, &[(0.4, -0.9 * T60), (0.8, 0.5 * T60)]);
+        assert!(alt[1].unwrap() > T60 * (0.64 - 0.16) + 1e-6, "{alt:?}");
+        // Every pass together removes exactly the final V: tan 30°·0.8² plus what lies outside it.
+        assert_eq!(pass_areas(0.0, &[(1.0, 0.0)]), vec![None]);
     }
 
     #[test]
