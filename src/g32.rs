@@ -9,9 +9,9 @@
 use crate::block::{Block, Word};
 use crate::diagnostic::Code;
 use crate::dialect::Dialect;
-use crate::group::{Chain, Seg};
+use crate::group::{Seg, cut_piece};
 use crate::interp::Interp;
-use crate::motion::{MoveKind, Point};
+use crate::motion::Point;
 use crate::num::{EPS, fmt};
 use crate::settings::P;
 use crate::span::Span;
@@ -239,32 +239,8 @@ pub fn block(it: &mut Interp, b: &Block) {
         }
         None => (end, None),
     };
-    let first_move = it.moves.len();
-    it.emit(MoveKind::Thread, start, cut_end, b.line, None, b.span);
-    if let Some(o) = out {
-        it.emit(MoveKind::Runout, cut_end, o, b.line, None, b.span);
-    }
-    let approach = it.last_x.0;
-    it.arrive(out.unwrap_or(end), true, true, b.line);
     let seg = Seg { from: start, to: cut_end, runout_to: out, kind, long };
-    match &mut it.grouper.chain {
-        Some(c) => {
-            c.segs.push(seg);
-            c.lines.push(b.line);
-        }
-        None => {
-            it.grouper.chain = Some(Chain {
-                source: Source::G32,
-                lead,
-                segs: vec![seg],
-                angle,
-                lines: vec![b.line],
-                approach,
-                span: b.span,
-                first_move,
-            });
-        }
-    }
+    cut_piece(it, Source::G32, lead, angle, seg, end, b.line, b.span);
 }
 
 /// Parameter No.107: when non-zero the short axis retracts at that speed

@@ -8,6 +8,7 @@
 
 use crate::diagnostic::Code;
 use crate::interp::{Interp, Target};
+use crate::motion::MoveKind;
 use crate::motion::Point;
 use crate::num::{EPS, close as near};
 use crate::settings::P;
@@ -150,6 +151,30 @@ pub fn add_chain(it: &mut Interp, mut chain: Chain) {
     }
     it.grouper.cuts.push(chain);
     it.grouper.after = if blockwise { After::Retract } else { After::Nothing };
+}
+
+/// Emits one block-by-block thread piece — the synchronised cut from
+/// `from` to `to`, then the run-out to `runout_to` — moves the tool there,
+/// and adds the piece to the continuous thread being cut (or starts one).
+#[allow(clippy::too_many_arguments)]
+pub fn cut_piece(it: &mut Interp, source: Source, lead: f64, angle: f64, seg: Seg, end: Point, line: u32, span: Span) {
+    let first_move = it.moves.len();
+    it.emit(MoveKind::Thread, seg.from, seg.to, line, None, span);
+    if let Some(o) = seg.runout_to {
+        it.emit(MoveKind::Runout, seg.to, o, line, None, span);
+    }
+    let approach = it.last_x.0;
+    it.arrive(seg.runout_to.unwrap_or(end), true, true, line);
+    match &mut it.grouper.chain {
+        Some(c) => {
+            c.segs.push(seg);
+            c.lines.push(line);
+        }
+        None => {
+            it.grouper.chain =
+                Some(Chain { source, lead, segs: vec![seg], angle, lines: vec![line], approach, span, first_move });
+        }
+    }
 }
 
 /// Whether `b` cuts the same helix as `a` (one more pass of it).

@@ -12,9 +12,8 @@
 use crate::block::{Block, Word};
 use crate::diagnostic::Code;
 use crate::g32::{classify, split_runout};
-use crate::group::{Chain, Seg};
+use crate::group::{Seg, cut_piece};
 use crate::interp::Interp;
-use crate::motion::MoveKind;
 use crate::num::fmt;
 use crate::settings::P;
 use crate::thread::{Axis, Source};
@@ -214,32 +213,8 @@ pub fn thread_block(it: &mut Interp, b: &Block, inch: bool) {
         }
         _ => (end, None),
     };
-    let first_move = it.moves.len();
-    it.emit(MoveKind::Thread, start, cut_end, b.line, None, b.span);
-    if let Some(o) = tail_end {
-        it.emit(MoveKind::Runout, cut_end, o, b.line, None, b.span);
-    }
-    let approach = it.last_x.0;
-    it.arrive(tail_end.unwrap_or(end), true, true, b.line);
     let seg = Seg { from: start, to: cut_end, runout_to: tail_end, kind, long };
-    match &mut it.grouper.chain {
-        Some(c) => {
-            c.segs.push(seg);
-            c.lines.push(b.line);
-        }
-        None => {
-            it.grouper.chain = Some(Chain {
-                source: Source::Renhe,
-                lead,
-                segs: vec![seg],
-                angle: 0.0,
-                lines: vec![b.line],
-                approach,
-                span: b.span,
-                first_move,
-            })
-        }
-    }
+    cut_piece(it, Source::Renhe, lead, 0.0, seg, end, b.line, b.span);
 }
 
 /// The manual's spindle advice n ≤ 2300/t − 60 (t: pitch in mm).

@@ -5,11 +5,10 @@
 //! `G76 X(U) Z(W) R(i) P(k) Q(Δd) F;` — degressive depth Δd·√n, single
 //! flank infeed along the flank that leads into the cut.
 
-use super::{Geometry, Multi, depth_word, in_range, plan_multi, runout, schedule};
+use super::{Geometry, Multi, depth_word, height_and_first_depth, in_range, plan_multi, runout, schedule};
 use crate::block::{Block, Word};
 use crate::diagnostic::Code;
 use crate::dialect::Dialect;
-use crate::g32::read_lead;
 use crate::interp::Interp;
 use crate::num::fmt;
 use crate::settings::P;
@@ -108,23 +107,7 @@ pub fn second(it: &mut Interp, b: &Block, g: Word) {
     if !it.check_words(b, allowed, "G76") {
         return;
     }
-    let Some(lead) = read_lead(it, b, "G76") else { return };
-    let Some(pk) = b.get(b'P').copied() else {
-        it.diag(Code::MissingThreadHeight, g.span, "G76 needs the thread height P(k)");
-        return;
-    };
-    let Some(qd) = b.get(b'Q').copied() else {
-        it.diag(Code::MissingFirstDepth, g.span, "G76 needs the first cut depth Q(Δd)");
-        return;
-    };
-    let Some(k) = depth_word(it, &pk, "P(k)") else { return };
-    let Some(dd) = depth_word(it, &qd, "Q(Δd)") else { return };
-    let inc = it.s.length_increment(it.inch);
-    if !in_range(it, &pk, k, inc, 99999.999, "thread height k")
-        || !in_range(it, &qd, dd, inc, 99999.999, "first depth Δd")
-    {
-        return;
-    }
+    let Some((lead, k, dd)) = height_and_first_depth(it, b, &g, "G76") else { return };
     let i = match b.get(b'R').copied() {
         Some(w) => it.length(&w),
         None => 0.0,

@@ -3,10 +3,9 @@
 //! `G78 P(m)(r)(a) Q(Δdmin) R(d) J K D L E;`
 //! `G78 X(U) Z(W) R(i) P(k) Q(Δd) F(I);`
 
-use super::{Geometry, Multi, depth_word, in_range, plan_multi, runout, schedule};
+use super::{Geometry, Multi, depth_word, height_and_first_depth, in_range, plan_multi, runout, schedule};
 use crate::block::{Block, Word};
 use crate::diagnostic::Code;
-use crate::g32::read_lead;
 use crate::interp::Interp;
 use crate::settings::P;
 use crate::thread::{Infeed, Source};
@@ -145,23 +144,7 @@ pub fn second(it: &mut Interp, b: &Block, g: Word) {
     if !it.check_words(b, b"XZUWRPQFI", "G78") {
         return;
     }
-    let Some(lead) = read_lead(it, b, "G78") else { return };
-    let Some(pk) = b.get(b'P').copied() else {
-        it.diag(Code::MissingThreadHeight, g.span, "G78 needs the thread height P(k)");
-        return;
-    };
-    let Some(qd) = b.get(b'Q').copied() else {
-        it.diag(Code::MissingFirstDepth, g.span, "G78 needs the first cut depth Q(Δd)");
-        return;
-    };
-    let Some(k) = depth_word(it, &pk, "P(k)") else { return };
-    let Some(dd) = depth_word(it, &qd, "Q(Δd)") else { return };
-    let inc = it.s.length_increment(it.inch);
-    if !in_range(it, &pk, k, inc, 99999.999, "thread height k")
-        || !in_range(it, &qd, dd, inc, 99999.999, "first depth Δd")
-    {
-        return;
-    }
+    let Some((lead, k, dd)) = height_and_first_depth(it, b, &g, "G78") else { return };
     let i = match b.get(b'R').copied() {
         Some(w) => {
             let v = it.length(&w);
@@ -181,6 +164,7 @@ pub fn second(it: &mut Interp, b: &Block, g: Word) {
     let m = f.m.unwrap_or(it.s.int(P::No061) as u32);
     let r = f.r.unwrap_or(it.s.int(P::No062) as u32);
     let a = f.a.unwrap_or(it.s.int(P::No058) as u32) as f64;
+    let inc = it.s.length_increment(it.inch);
     let dmin = f.dmin.unwrap_or(it.s.get(P::No059) * inc);
     let d = f.d.unwrap_or(it.s.get(P::No060) * inc);
     let count = f.count.unwrap_or(it.s.int(P::G78DefaultD) as u32);

@@ -16,7 +16,7 @@ pub mod schedule;
 use crate::block::{Block, Word};
 use crate::diagnostic::Code;
 use crate::dialect::Dialect;
-use crate::g32::{classify, split_runout};
+use crate::g32::{classify, read_lead, split_runout};
 use crate::gcode::G;
 use crate::interp::Interp;
 use crate::motion::{MoveKind, Point};
@@ -96,6 +96,27 @@ pub fn depth_word(it: &mut Interp, w: &Word, what: &str) -> Option<f64> {
             }
         }
     }
+}
+
+/// What the second block of G76 and G78 always gives: the lead, the thread
+/// height P(k) and the first depth Q(Δd), each checked; `None` after an
+/// alarm. `what` names the cycle in messages.
+pub fn height_and_first_depth(it: &mut Interp, b: &Block, g: &Word, what: &str) -> Option<(f64, f64, f64)> {
+    let lead = read_lead(it, b, what)?;
+    let Some(pk) = b.get(b'P').copied() else {
+        it.diag(Code::MissingThreadHeight, g.span, format!("{what} needs the thread height P(k)"));
+        return None;
+    };
+    let Some(qd) = b.get(b'Q').copied() else {
+        it.diag(Code::MissingFirstDepth, g.span, format!("{what} needs the first cut depth Q(Δd)"));
+        return None;
+    };
+    let k = depth_word(it, &pk, "P(k)")?;
+    let dd = depth_word(it, &qd, "Q(Δd)")?;
+    let inc = it.s.length_increment(it.inch);
+    let ok = in_range(it, &pk, k, inc, 99999.999, "thread height k")
+        && in_range(it, &qd, dd, inc, 99999.999, "first depth Δd");
+    ok.then_some((lead, k, dd))
 }
 
 /// Checks `lo ≤ v ≤ hi`, reporting at `w` otherwise.
