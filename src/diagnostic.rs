@@ -115,6 +115,8 @@ codes! {
     // ---- thread cutting (G32 and shared) ----
     /// A thread block with no lead: no F/I in it or before it.
     MissingLead = "missing-lead", Error;
+    /// Fanuc: a thread block without F takes the lead from a feed rate's F (one shared register).
+    LeadFromFeed = "lead-from-feed", Warning;
     /// A thread block that does not move.
     ZeroLengthThread = "zero-length-thread", Error;
     /// The run-out length K is longer than the thread itself.

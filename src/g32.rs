@@ -43,6 +43,7 @@ pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
             return None;
         }
         it.lead = Some(v);
+        it.lead_from_feed = None;
     } else if let Some(i) = i {
         let tpi = i.value();
         if !(0.06..=25400.0).contains(&tpi) {
@@ -50,12 +51,25 @@ pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
             return None;
         }
         it.lead = Some(if it.inch { 1.0 / tpi } else { 25.4 / tpi });
+        it.lead_from_feed = None;
+    }
+    if let (None, Some(line), Some(lead)) = (f, it.lead_from_feed, it.lead) {
+        let span = b.all(b'G').next().map_or(b.span, |w| w.span);
+        it.diag(
+            Code::LeadFromFeed,
+            span,
+            format!(
+                "{what} has no F: the single F register holds F{} from line {line}, a feed rate, so this thread is cut with a lead of {}; give the lead in this block",
+                fmt(lead),
+                fmt(lead)
+            ),
+        );
     }
     if it.lead.is_none() {
         let span = b.all(b'G').next().map_or(b.span, |w| w.span);
         let msg = match (it.dialect, it.feed) {
-            (Dialect::Fanuc0i, Some(feed)) if feed > 0.0 => format!(
-                "{what} without F: no lead has been given (the feed F{} of line {} is not a lead; write the lead in this block)",
+            (Dialect::Gsk980tdc, Some(feed)) if feed > 0.0 => format!(
+                "{what} without a lead: the feed F{} of line {} is not a lead (GSK keeps the thread lead apart); give F (lead) or I (threads per inch)",
                 fmt(feed),
                 it.feed_line
             ),

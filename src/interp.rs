@@ -122,6 +122,9 @@ pub struct Interp {
     pub feed_line: u32,
     /// Lead register (thread F/I), program units per revolution.
     pub lead: Option<f64>,
+    /// On Fanuc, whose single F register serves feed and lead: the line of
+    /// the non-thread block whose F the lead register holds.
+    pub lead_from_feed: Option<u32>,
     /// GSK G32 modal run-out J and K (cancelled by a non-thread motion block).
     pub jk: (Option<f64>, Option<f64>),
     /// Spindle speed S (rev/min under G97, m/min under G96).
@@ -153,6 +156,7 @@ pub struct Snapshot {
     feed: Option<f64>,
     feed_line: u32,
     lead: Option<f64>,
+    lead_from_feed: Option<u32>,
     jk: (Option<f64>, Option<f64>),
     spindle: Option<f64>,
     css: bool,
@@ -197,6 +201,7 @@ impl Interp {
             feed: None,
             feed_line: 0,
             lead: None,
+            lead_from_feed: None,
             jk: (None, None),
             spindle: None,
             css: false,
@@ -220,6 +225,7 @@ impl Interp {
             feed: self.feed,
             feed_line: self.feed_line,
             lead: self.lead,
+            lead_from_feed: self.lead_from_feed,
             jk: self.jk,
             spindle: self.spindle,
             css: self.css,
@@ -245,6 +251,7 @@ impl Interp {
         self.feed = snap.feed;
         self.feed_line = snap.feed_line;
         self.lead = snap.lead;
+        self.lead_from_feed = snap.lead_from_feed;
         self.jk = snap.jk;
         self.spindle = snap.spindle;
         self.css = snap.css;
@@ -588,8 +595,7 @@ impl Interp {
             self.end_thread_chain();
             if let Some(f) = b.get(b'F') {
                 let v = self.length(f);
-                self.feed = Some(v);
-                self.feed_line = b.line;
+                self.set_feed(v, b.line);
             }
         }
         if m_end {
@@ -677,6 +683,10 @@ impl Interp {
                     return;
                 }
                 self.jk = (None, None);
+                if let Some(f) = b.get(b'F') {
+                    let v = self.length(f);
+                    self.set_feed(v, b.line);
+                }
                 let t = self.target(b);
                 let (x0, kx0) = (self.pos.p.x, self.pos.kx);
                 self.go(MoveKind::Rapid, &t, b.line, b.span);
@@ -730,12 +740,22 @@ impl Interp {
         }
     }
 
+    /// Sets the feed register from a non-thread block's F. Fanuc has one F
+    /// register: the same value is then the lead a following G32 uses.
+    fn set_feed(&mut self, v: f64, line: u32) {
+        self.feed = Some(v);
+        self.feed_line = line;
+        if self.dialect == Dialect::Fanuc0i {
+            self.lead = Some(v);
+            self.lead_from_feed = Some(line);
+        }
+    }
+
     /// F in a feed block sets the feed register; a feed move without any F warns.
     fn feed_word(&mut self, b: &Block) {
         if let Some(f) = b.get(b'F') {
             let v = self.length(f);
-            self.feed = Some(v);
-            self.feed_line = b.line;
+            self.set_feed(v, b.line);
         } else if self.feed.is_none() {
             let span = b.all(b'G').next().map_or(b.span, |w| w.span);
             self.diag(Code::MissingFeed, span, "feed move without a feed rate: no F has been given yet");

@@ -46,6 +46,7 @@ const CASES: &[Case] = &[
     (Code::StartAssumed, G, &[], "G00 U10\n", 1, 5, "X0 Z0"),
     (Code::MoveLimit, G, &["limits.moves=1"], "G00 X10 Z5\nG00 X20\nG00 X30\n", 3, 1, "limits.moves"),
     (Code::MissingLead, G, &[], "G00 X40 Z5\nG32 Z-30\n", 2, 1, "without a lead"),
+    (Code::LeadFromFeed, F, &[], "G00 X40. Z5.\nG01 X39. F0.2\nG32 Z-30.\n", 3, 1, "lead of 0.2"),
     (Code::ZeroLengthThread, G, &[], "G00 X40 Z5\nG32 Z5 F2\n", 2, 5, "does not move"),
     (Code::RunoutTooLong, G, &[], "G00 X40 Z5\nG32 W-10 F2 J1 K12\n", 2, 16, "K = 12"),
     (Code::QIgnored, G, &[], "G00 X40 Z5\nG32 W-10 F2 Q90000\nG32 W-10 Q180000\n", 3, 10, "ignored"),

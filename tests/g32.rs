@@ -256,10 +256,23 @@ fn fanuc_g32_words() {
     at(&plan, Code::DecimalPointNotAllowed, 2, 15);
     let plan = plan_with("G00 X40. Z5.\nG32 Z-30. F2. J2.\n", Dialect::Fanuc0i, &[]);
     at(&plan, Code::UnexpectedWord, 2, 15);
-    // A feed F is not a lead: a G32 without F after G01 F0.2 alarms and says why.
+    // One F register: a G32 without F after G01 F0.2 cuts a 0.2 lead, and warns.
     let plan = plan_with("G00 X40. Z5.\nG01 X39. F0.2\nG32 Z-30.\n", Dialect::Fanuc0i, &[]);
-    let d = at(&plan, Code::MissingLead, 3, 1);
-    assert!(d.message.contains("F0.2"), "{}", d.message);
+    no_alarm(&plan);
+    let d = at(&plan, Code::LeadFromFeed, 3, 1);
+    assert!(d.message.contains("F0.2 from line 2"), "{}", d.message);
+    eq(plan.threads[0].lead, 0.2);
+    // The F of a G32 is the lead again for the next G32 (no warning then).
+    let plan = plan_with(
+        "G00 X40. Z5.\nG01 X39. F0.2\nG32 Z-30. F2.\nG00 X45.\nZ5.\nX39.\nG32 Z-30.\n",
+        Dialect::Fanuc0i,
+        &[],
+    );
+    assert_eq!(plan.with_code(Code::LeadFromFeed).count(), 0);
+    eq(plan.threads[0].lead, 2.0);
+    // GSK keeps them apart: the same program without a lead alarms and says why.
+    let plan = gsk("G00 X40 Z5\nG01 X39 F0.2\nG32 Z-30\n");
+    assert!(at(&plan, Code::MissingLead, 3, 1).message.contains("F0.2 of line 2"));
 }
 
 /// A face thread cut block by block: the infeed and retract are Z moves, the
