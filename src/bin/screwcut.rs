@@ -7,6 +7,7 @@ use clap::{Parser, Subcommand};
 use screwcut::diagnostic::Severity;
 use screwcut::num::fmt;
 use screwcut::settings::{Kind, Settings};
+use screwcut::thread::Source;
 use screwcut::{Code, Dialect, Plan};
 
 #[derive(Parser)]
@@ -128,21 +129,29 @@ fn summary(plan: &Plan, file: &str) -> String {
         count(Severity::Info)
     );
     for (i, t) in plan.threads.iter().enumerate() {
+        let lower = |v: String| v.to_lowercase();
+        let plural = |n: u32, one: &str| if n == 1 { format!("1 {one}") } else { format!("{n} {one}s") };
         let _ = writeln!(
             out,
-            "\nthread {} (lines {}-{}): {:?} {:?}, lead {}, pitch {}, {} start(s), {}, crest {} {} ({:?}), height {}",
+            "\nthread {} (lines {}-{}): {} {}, lead {}, pitch {}, {}, {}; crest {}{} ({}), height {}",
             i + 1,
             t.line,
             t.end_line,
-            t.kind,
-            t.source,
+            lower(format!("{:?}", t.kind)),
+            match t.source {
+                Source::G32 => "G32",
+                Source::Renhe => "Renhe G32/G33",
+                Source::G78 => "G78",
+                Source::G92 => "G92",
+                Source::G76 => "G76",
+            },
             fmt(t.lead),
             fmt(t.pitch),
-            t.starts,
+            plural(t.starts, "start"),
             if t.internal { "internal" } else { "external" },
             if t.long_axis == screwcut::thread::Axis::Z { "X" } else { "Z" },
             fmt(t.crest),
-            t.crest_source,
+            lower(format!("{:?}", t.crest_source)),
             fmt(t.height)
         );
         let _ = writeln!(
