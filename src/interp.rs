@@ -304,7 +304,7 @@ impl Interp {
         if !(from.is_finite() && to.is_finite()) {
             return false;
         }
-        self.moves.push(Move { kind, from, to, line, arc });
+        self.moves.push(Move { kind, from, to, line, span, arc });
         true
     }
 

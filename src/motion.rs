@@ -3,6 +3,7 @@
 use serde::{Serialize, Serializer};
 
 use crate::num::round_out;
+use crate::span::Span;
 
 /// A point of the X–Z plane in program units; `x` is a **diameter**.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -52,10 +53,11 @@ impl Serialize for Point {
 }
 
 /// What a motion is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MoveKind {
     /// G00 positioning.
+    #[default]
     Rapid,
     /// Straight feed (G01, turning cycles).
     Feed,
@@ -86,7 +88,7 @@ pub struct ArcData {
 }
 
 /// One motion of the tool tip.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct Move {
     /// Kind of motion.
     pub kind: MoveKind,
@@ -96,6 +98,8 @@ pub struct Move {
     pub to: Point,
     /// 1-based source line of the block that made it.
     pub line: u32,
+    /// Byte span of that block in the source.
+    pub span: Span,
     /// Arc centre and direction, for arcs.
     #[serde(skip_serializing_if = "Option::is_none", flatten)]
     pub arc: Option<ArcData>,

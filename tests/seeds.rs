@@ -48,6 +48,9 @@ fn o0009_taper_thread_two_passes() {
     let cuts: Vec<_> = plan.moves.iter().filter(|m| m.kind == MoveKind::Thread).collect();
     assert_eq!(cuts.len(), 2);
     assert_eq!((cuts[0].line, cuts[1].line), (3, 7));
+    // Each motion keeps the span of its block.
+    let sp = cuts[0].span;
+    assert_eq!(&O0009[sp.start as usize..sp.end as usize], "G32 X48.8571 W-75 F2.0;\t(锥螺纹第一次切削)");
     let rapids: Vec<_> = plan.moves.iter().filter(|m| m.kind == MoveKind::Rapid).map(|m| m.line).collect();
     assert_eq!(rapids, vec![4, 5, 6, 8, 9]);
     let d = one(&plan, Code::CrestAssumed);

@@ -144,7 +144,8 @@ fn turned_outline_gives_delta_zones() {
 fn cycle_plan() -> Plan {
     let line = 3;
     let a = Point::new(60.0, 75.0);
-    let mut moves = vec![Move { kind: MoveKind::Rapid, from: Point::new(100.0, 100.0), to: a, line: 2, arc: None }];
+    let mut moves =
+        vec![Move { kind: MoveKind::Rapid, from: Point::new(100.0, 100.0), to: a, line: 2, ..Move::default() }];
     let mut passes = Vec::new();
     let t60 = 30f64.to_radians().tan();
     let crest = 48.0;
@@ -170,7 +171,7 @@ fn cycle_plan() -> Plan {
                 (MoveKind::Rapid, Point::new(a.x, run.z), a),
             ];
             for (kind, f, t) in seq {
-                moves.push(Move { kind, from: f, to: t, line, arc: None });
+                moves.push(Move { kind, from: f, to: t, line, ..Move::default() });
             }
             passes.push(Pass {
                 start,
