@@ -188,3 +188,24 @@ fn garbage_never_panics() {
         }
     }
 }
+
+/// An internal thread in a turned bore: the bore (X30) is the crest, depths
+/// grow outward: (30.6 − 30)/2 = 0.3, 0.6, then 1.3 = 1.3·P/2 (no depth warning);
+/// the bore starts at Z2 and the passes at Z7, so δ1 = 5.
+#[test]
+fn internal_thread_in_a_turned_bore() {
+    let src = "G00 X30 Z2\nG01 Z-40 F0.2\nG00 X28 Z7\nX30.6\nG32 Z-30 F2\nG00 X28\nZ7\nX31.2\nG32 Z-30\nG00 X28\nZ7\nX32.6\nG32 Z-30\nG00 X28\nZ7\n";
+    let plan = gsk(src);
+    no_alarm(&plan);
+    let t = &plan.threads[0];
+    assert!(t.internal);
+    assert_eq!(t.crest_source, screwcut::thread::CrestSource::Outline);
+    eq(t.crest, 30.0);
+    let depths: Vec<f64> = t.passes.iter().map(|p| (p.depth * 1e9).round() / 1e9).collect();
+    assert_eq!(depths, vec![0.3, 0.6, 1.3]);
+    assert_eq!(plan.with_code(Code::DepthVsStandard).count(), 0);
+    assert_eq!(plan.with_code(Code::Clearance).count(), 0);
+    // Started at Z3 instead, δ1 = 1 warns.
+    let plan = gsk(&src.replace("Z7", "Z3"));
+    assert!(one(&plan, Code::Clearance).message.contains("δ1 = 1"));
+}
