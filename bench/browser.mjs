@@ -1,6 +1,7 @@
 // In headless Chromium (the system package): time from an edit to the
-// finished frame for a 5,000-line program, and the wasm plan time of the
-// 20 MB generated program. Usage: node browser.mjs SITE_DIR PROGRAM_20MB
+// finished frame for a 5,000-line program (to the commit of the frame, which
+// rasterises the canvases), and the wasm plan time of the 20 MB generated
+// program. Usage: node browser.mjs SITE_DIR PROGRAM_20MB
 // Prints figures; asserts nothing.
 import { chromium } from 'playwright-core';
 import fs from 'node:fs';
@@ -57,26 +58,42 @@ try {
   await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: {}, program: program(5000) }));
   await page.waitForFunction(() => window.__screwcut.ready && window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 60_000 });
   const lines = await page.evaluate(() => window.__screwcut.updates.at(-1).lines);
-  /** Types `keys` at the end of line `at` ('first' or 'near-end': the last pass's X rapid). */
+  /**
+   * Types `keys` (a list of key names) at the end of line `at` ('first',
+   * 'first-pass': the first pass's X rapid on line 9, or 'near-end': the
+   * last pass's X rapid) and prints the medians: from the
+   * keystroke to the frame committed (canvases rasterised), and its parts.
+   */
   const measure = async (what, at, keys) => {
     await page.locator('.cm-line').first().click();
+    if (at === 'first-pass') for (let i = 0; i < 8; i++) await page.keyboard.press('ArrowDown');
     if (at === 'near-end') {
       await page.keyboard.press('Control+End');
       for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowUp');
     }
     await page.keyboard.press('End');
+    await page.waitForTimeout(300);
     await page.evaluate(() => { window.__screwcut.frames.length = 0; window.__screwcut.updates.length = 0; });
-    for (const ch of keys) {
-      await page.keyboard.type(ch);
-      await page.waitForTimeout(80);
+    for (const key of keys) {
+      await page.keyboard.press(key);
+      await page.waitForTimeout(100);
     }
     await page.waitForTimeout(300);
     const m = await page.evaluate(() => ({ frames: window.__screwcut.frames, updates: window.__screwcut.updates }));
     const f = (a, k) => median(a.map((x) => x[k] || 0)).toFixed(1);
-    console.log(`  edit-to-frame, ${lines} lines, ${what}: median ${f(m.frames, 'frame')} ms from the keystroke to the next frame (${m.frames.length} keystrokes; plan+transfer ${f(m.updates, 'plan')} ms, canvas ${f(m.frames, 'canvas')} ms)`);
+    console.log(
+      `  edit-to-frame, ${lines} lines, ${what}: median ${f(m.frames, 'frame')} ms from the keystroke to the committed frame ` +
+        `(${m.frames.length} keystrokes, max ${Math.max(...m.frames.map((x) => x.frame)).toFixed(1)}; keystroke to re-plan ${f(m.frames, 'editor')} ms, ` +
+        `plan+transfer ${f(m.updates, 'plan')} ms, lists and editor ${f(m.updates, 'draw')} ms, keystroke to frame callbacks done ${f(m.frames, 'raf')} ms, ` +
+        `canvas drawing ${f(m.frames, 'canvas')} ms, commit and rasterisation ${f(m.frames, 'commit')} ms)`,
+    );
   };
-  await measure('typing a comment at the top', 'first', ' (edit)');
-  await measure('typing digits into a pass near the end', 'near-end', '12');
+  const comment = [...' (edit-to-frame)'].map((c) => (c === ' ' ? 'Space' : c));
+  await measure('typing a comment at the top', 'first', comment);
+  // A digit typed and deleted, in turn: every keystroke changes a pass.
+  const digits = Array.from({ length: 16 }, (_, i) => (i % 2 ? 'Backspace' : String((i / 2) % 10)));
+  await measure('typing and deleting a digit in the first pass', 'first-pass', digits);
+  await measure('typing and deleting a digit in a pass near the end', 'near-end', digits);
   const big20 = await page.evaluate(async () => {
     const text = await (await fetch('bench-20mb.nc')).text();
     const core = window.__screwcut.core;

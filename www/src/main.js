@@ -76,12 +76,29 @@ function replan() {
   if (pendingInput !== null) {
     const input = pendingInput;
     pendingInput = null;
+    const editorAt = probe.editorAt;
+    probe.editorAt = null;
     requestAnimationFrame(() => {
+      // The views drew in this frame's callbacks; the canvases are rasterised
+      // when the frame is committed, after the callbacks, in the same task.
       const canvas = views.side.lastDraw + views.tooth.lastDraw + views.starts.lastDraw;
-      probe.frames.push({ drawn: t2 - input, frame: performance.now() - input, canvas, editor: probe.editorAt });
-      probe.editorAt = null;
+      const raf = performance.now() - input;
+      afterTask(() => {
+        const frame = performance.now() - input;
+        probe.frames.push({ drawn: t2 - input, raf, frame, commit: frame - raf, canvas, editor: editorAt });
+      });
     });
   }
+}
+
+/** Runs `f` in a new task: after a frame callback, once the frame is committed. */
+function afterTask(f) {
+  const ch = new MessageChannel();
+  ch.port1.onmessage = () => {
+    ch.port1.close();
+    f();
+  };
+  ch.port2.postMessage(0);
 }
 
 function queuePlan() {
