@@ -168,6 +168,22 @@ pub fn pass_areas(angle_deg: f64, passes: &[(f64, f64)]) -> Vec<Option<f64>> {
         return vec![None; passes.len()];
     }
     let tool = Tool { t: (angle_deg.to_radians() / 2.0).tan(), flat: 0.0 };
+    // When each cut contains the one before (the tip moves no further
+    // sideways than the V widens: radial and single-flank infeed), the
+    // space after pass n is the V of pass n and the areas have a closed form.
+    let nested = passes.windows(2).all(|w| (w[1].1 - w[0].1).abs() <= (w[1].0 - w[0].0) * tool.t + 1e-12);
+    if nested {
+        let mut prev = 0.0f64;
+        return passes
+            .iter()
+            .map(|&(d, _)| {
+                let d = d.max(prev);
+                let a = tool.t * (d * d - prev * prev);
+                prev = d;
+                Some(a)
+            })
+            .collect();
+    }
     let reach = passes.iter().map(|(d, s)| d.max(0.0) * tool.t + s.abs()).fold(0.0, f64::max);
     let (u0, u1) = (-reach - 1.0, reach + 1.0);
     let mut surface = Pl::flat(u0, u1);
@@ -260,8 +276,24 @@ mod tests {
         // Alternating: the second pass, on the other flank, removes more than the radial formula.
         let alt = pass_areas(60.0, &[(0.4, -0.9 * T60), (0.8, 0.5 * T60)]);
         assert!(alt[1].unwrap() > T60 * (0.64 - 0.16) + 1e-6, "{alt:?}");
-        // Every pass together removes exactly the final V: tan 30°·0.8² plus what lies outside it.
         assert_eq!(pass_areas(0.0, &[(1.0, 0.0)]), vec![None]);
+    }
+
+    /// The closed form for nested cuts agrees with the envelope.
+    #[test]
+    fn closed_form_matches_the_envelope() {
+        let k = 1.3;
+        let flank: Vec<(f64, f64)> = [0.4, 0.6, 0.9, 1.2, 1.3].iter().map(|&h| (h, (k - h) * T60)).collect();
+        let fast = pass_areas(60.0, &flank);
+        // The envelope, step by step as in `pass_areas`' general path.
+        let tool = Tool { t: T60, flat: 0.0 };
+        let mut surface = Pl::flat(-3.0, 3.0);
+        for (&(d, s), got) in flank.iter().zip(&fast) {
+            let next = surface.min(&tool.cut(d, s, -3.0, 3.0));
+            let a: f64 = surface.regions_above(&next).iter().map(|r| area(r)).sum();
+            assert!((a - got.unwrap()).abs() < 1e-9, "{a} vs {got:?}");
+            surface = next;
+        }
     }
 
     #[test]
