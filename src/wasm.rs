@@ -4,27 +4,45 @@
 //! Nothing here may panic: a panic aborts the wasm instance and the page
 //! loses its planner. Inputs are validated and errors come back as values
 //! (`Err` becomes a thrown JS `Error` with a message; setting errors are
-//! listed in the result). The last plan is kept in a `Cell` (taken and put
+//! listed in the result). The planner is kept in a `Cell` (taken and put
 //! back, never borrowed), so even a trap in one call leaves later calls working.
+//!
+//! The planner is incremental ([`crate::planner::Planner`]): an edit re-reads
+//! the program from the last snapshot before it. Each part of the answer
+//! (threads, passes, scenes) carries a content key; a part whose key the
+//! caller says it has is not built or sent again.
 //!
 //! Bulk geometry crosses as typed arrays (see [`crate::diagram::packed`]);
 //! the rest (diagnostics, threads, setting tables) through serde-wasm-bindgen.
 
 use std::cell::Cell;
-use std::hash::{DefaultHasher, Hash, Hasher};
 
 use js_sys::{Array, Float64Array, Object, Reflect, Uint32Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+use crate::diagram::fingerprint::{PlanKeys, combine, js_key, key_of};
 use crate::diagram::{self, Packed, Scene};
 use crate::dialect::Dialect;
 use crate::plan::Plan;
+use crate::planner::Planner;
 use crate::settings::{Kind, Settings};
 use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind};
 
 thread_local! {
-    static LAST: Cell<Option<Plan>> = const { Cell::new(None) };
+    /// The planner, holding the last plan; `None` before the first plan.
+    static PLANNER: Cell<Option<Planner>> = const { Cell::new(None) };
+}
+
+/// Runs `f` on the last plan; an error when nothing was planned yet.
+fn with_last<R>(f: impl FnOnce(&Plan) -> Result<R, JsValue>) -> Result<R, JsValue> {
+    let planner = PLANNER.with(Cell::take);
+    let out = match planner.as_ref().and_then(Planner::last) {
+        Some(plan) => f(plan),
+        None => Err(err("nothing planned yet")),
+    };
+    PLANNER.with(|c| c.set(planner));
+    out
 }
 
 fn err(msg: impl std::fmt::Display) -> JsValue {
@@ -214,13 +232,6 @@ impl ThreadSummary {
     }
 }
 
-fn passes_js(plan: &Plan, thread: Option<usize>) -> Result<JsValue, JsValue> {
-    match thread {
-        Some(t) => to_js(&plan.threads[t].passes),
-        None => Ok(Array::new().into()),
-    }
-}
-
 /// A packed scene as a JS object with typed arrays:
 /// `{view, bounds, focus, coords: Float64Array, items: Uint32Array, lines: Uint32Array, labels}`.
 fn packed_to_js(p: &Packed) -> JsValue {
@@ -250,24 +261,6 @@ fn pick(plan: &Plan, thread: i32) -> Option<usize> {
     (thread >= 0 && n > 0).then(|| (thread as usize).min(n - 1))
 }
 
-fn thread_scenes_of(plan: &Plan, thread: Option<usize>, start: u32) -> (JsValue, JsValue) {
-    match thread {
-        Some(t) => {
-            let starts = plan.threads[t].starts.max(1);
-            let start = start.clamp(1, starts);
-            (scene_js(diagram::tooth(plan, t, start)), scene_js(diagram::starts(plan, t)))
-        }
-        None => (JsValue::NULL, JsValue::NULL),
-    }
-}
-
-/// A key of a list for skipping unchanged transfers: 52 bits of a hash, exact as a JS number.
-fn key_of<T: Hash + ?Sized>(v: &T) -> f64 {
-    let mut h = DefaultHasher::new();
-    v.hash(&mut h);
-    (h.finish() & ((1u64 << 52) - 1)) as f64
-}
-
 /// The key of the diagnostics by position (line and column, not offset): when
 /// it is unchanged the editor's own diagnostics, mapped through the edit, are current.
 fn diagnostics_key(plan: &Plan) -> f64 {
@@ -276,18 +269,100 @@ fn diagnostics_key(plan: &Plan) -> f64 {
         .iter()
         .map(|d| (d.severity as u8, d.code.as_str(), d.message.as_str(), d.line, d.column, d.end_line, d.end_column))
         .collect();
-    key_of(&fields)
+    js_key(key_of(&fields))
+}
+
+/// Parts of the answer that carry a key, in the order of `update`'s `known` argument.
+#[derive(Clone, Copy)]
+enum Part {
+    Threads = 0,
+    Passes = 1,
+    Side = 2,
+    Tooth = 3,
+    Starts = 4,
+}
+
+impl Part {
+    fn name(self) -> &'static str {
+        match self {
+            Part::Threads => "threads",
+            Part::Passes => "passes",
+            Part::Side => "side",
+            Part::Tooth => "tooth",
+            Part::Starts => "starts",
+        }
+    }
+}
+
+/// What the caller already has: a key per [`Part`] (NaN or a missing entry: nothing).
+struct Known(Vec<f64>);
+
+impl Known {
+    fn has(&self, part: Part, key: f64) -> bool {
+        self.0.get(part as usize) == Some(&key)
+    }
+}
+
+/// Sets `<part>` and `<part>Key` on `o`: the value from `make` unless the
+/// caller has `key`, then null (the caller keeps its own).
+fn keyed(
+    o: &Object,
+    known: &Known,
+    part: Part,
+    key: u64,
+    make: impl FnOnce() -> Result<JsValue, JsValue>,
+) -> Result<(), JsValue> {
+    let key = js_key(key);
+    let value = if known.has(part, key) { JsValue::NULL } else { make()? };
+    set(o, part.name(), &value);
+    set(o, &format!("{}Key", part.name()), &key.into());
+    Ok(())
+}
+
+/// Sets the chosen thread, its passes and its tooth and starts scenes on `o`.
+fn thread_parts(
+    o: &Object,
+    plan: &Plan,
+    keys: &PlanKeys,
+    chosen: Option<usize>,
+    start: u32,
+    known: &Known,
+) -> Result<(), JsValue> {
+    set(o, "thread", &chosen.map_or(JsValue::NULL, |t| (t as u32).into()));
+    let Some(t) = chosen else {
+        for part in [Part::Passes, Part::Tooth, Part::Starts] {
+            keyed(o, known, part, 0, || {
+                Ok(if matches!(part, Part::Passes) { Array::new().into() } else { JsValue::NULL })
+            })?;
+        }
+        return Ok(());
+    };
+    let thread_key = keys.threads[t];
+    let start = start.clamp(1, plan.threads[t].starts.max(1));
+    keyed(o, known, Part::Passes, combine(&[thread_key, t as u64]), || to_js(&plan.threads[t].passes))?;
+    keyed(o, known, Part::Tooth, combine(&[thread_key, t as u64, u64::from(start)]), || {
+        Ok(scene_js(diagram::tooth(plan, t, start)))
+    })?;
+    keyed(o, known, Part::Starts, combine(&[thread_key, t as u64]), || Ok(scene_js(diagram::starts(plan, t))))
 }
 
 /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines) and
 /// returns everything the app shows:
 /// `{dialect, units, alarms, warnings, notes, moves, good, settingErrors,
-/// diagnostics, diagnosticsKey, threads, thread, passes, side, tooth, starts}`:
+/// diagnostics, diagnosticsKey, threads, threadsKey, thread, passes,
+/// passesKey, side, sideKey, tooth, toothKey, starts, startsKey, resumedAt}`:
 /// `threads` are summaries (a pass count instead of the passes), `passes` are
 /// the chosen thread's. `diagnostics` is null when its key equals
-/// `known_diagnostics` (the key of the list the caller already has). `thread` and `start`
-/// choose the thread (−1: none) and start drawn in the tooth and starts views.
-/// `good` is true when the plan draws something (threads or motions) and has no alarm.
+/// `known_diagnostics` (the key of the list the caller already has); so is
+/// each of `threads`, `passes`, `side`, `tooth` and `starts` when its key is
+/// in `known` (`[threads, passes, side, tooth, starts]` keys; omitted: none
+/// known). `thread` and `start` choose the thread (−1: none) and start drawn
+/// in the tooth and starts views. `good` is true when the plan draws
+/// something (threads or motions) and has no alarm.
+///
+/// The program is re-read only from the last planner snapshot before the
+/// first byte that differs from the last call's text; `resumedAt` is the
+/// line reading resumed at (1: the whole program was read).
 #[wasm_bindgen]
 pub fn update(
     text: &str,
@@ -296,10 +371,39 @@ pub fn update(
     thread: i32,
     start: u32,
     known_diagnostics: f64,
+    known: Option<Vec<f64>>,
 ) -> Result<JsValue, JsValue> {
     let d = dialect(dialect_name)?;
     let (s, problems) = settings_from(d, settings);
-    let plan = crate::plan(text, &s);
+    let known = Known(known.unwrap_or_default());
+    let mut planner = match PLANNER.with(Cell::take) {
+        Some(mut p) => {
+            p.set_settings(s);
+            p
+        }
+        None => Planner::new(s),
+    };
+    planner.plan(text);
+    let out = match planner.last() {
+        Some(plan) => answer(text, plan, &problems, (thread, start), known_diagnostics, &known).map(|o| {
+            set(&o, "resumedAt", &planner.resumed_at().into());
+            o.into()
+        }),
+        None => Err(err("the planner kept no plan")),
+    };
+    PLANNER.with(|c| c.set(Some(planner)));
+    out
+}
+
+/// The object [`update`] returns, for `plan` of `text`.
+fn answer(
+    text: &str,
+    plan: &Plan,
+    problems: &[SettingProblem],
+    (thread, start): (i32, u32),
+    known_diagnostics: f64,
+    known: &Known,
+) -> Result<Object, JsValue> {
     let o = Object::new();
     let count = |sev: crate::Severity| plan.diagnostics.iter().filter(|x| x.severity == sev).count() as u32;
     set(&o, "dialect", &JsValue::from_str(plan.dialect.name()));
@@ -310,37 +414,47 @@ pub fn update(
     set(&o, "moves", &(plan.moves.len() as u32).into());
     let good = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
     set(&o, "good", &good.into());
-    set(&o, "settingErrors", &to_js(&problems)?);
-    let key = diagnostics_key(&plan);
+    set(&o, "settingErrors", &to_js(problems)?);
+    let key = diagnostics_key(plan);
     set(&o, "diagnosticsKey", &key.into());
-    let diagnostics = if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, &plan))? };
+    let diagnostics = if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan))? };
     set(&o, "diagnostics", &diagnostics);
-    set(&o, "threads", &to_js(&plan.threads.iter().map(ThreadSummary::of).collect::<Vec<_>>())?);
-    let chosen = pick(&plan, thread);
-    set(&o, "thread", &chosen.map_or(JsValue::NULL, |t| (t as u32).into()));
-    set(&o, "passes", &passes_js(&plan, chosen)?);
-    set(&o, "side", &scene_js(Some(diagram::side(&plan))));
-    let (tooth, starts) = thread_scenes_of(&plan, chosen, start);
-    set(&o, "tooth", &tooth);
-    set(&o, "starts", &starts);
-    LAST.with(|c| c.set(Some(plan)));
+    let keys = PlanKeys::of(plan);
+    keyed(&o, known, Part::Threads, keys.all_threads, || {
+        to_js(&plan.threads.iter().map(ThreadSummary::of).collect::<Vec<_>>())
+    })?;
+    keyed(&o, known, Part::Side, keys.side, || Ok(scene_js(Some(diagram::side(plan)))))?;
+    thread_parts(&o, plan, &keys, pick(plan, thread), start, known)?;
+    Ok(o)
+}
+
+/// The counts of a plan of `text` (planned from scratch, nothing drawn or
+/// kept): `{moves, threads, passes, diagnostics, alarms}`. For timing the planner.
+#[wasm_bindgen]
+pub fn plan_summary(text: &str, dialect_name: &str, settings: &str) -> Result<JsValue, JsValue> {
+    let (s, _) = settings_from(dialect(dialect_name)?, settings);
+    let plan = crate::plan(text, &s);
+    let o = Object::new();
+    set(&o, "moves", &(plan.moves.len() as u32).into());
+    set(&o, "threads", &(plan.threads.len() as u32).into());
+    set(&o, "passes", &(plan.threads.iter().map(|t| t.passes.len()).sum::<usize>() as u32).into());
+    set(&o, "diagnostics", &(plan.diagnostics.len() as u32).into());
+    let alarms = plan.diagnostics.iter().filter(|d| d.severity == crate::Severity::Error).count();
+    set(&o, "alarms", &(alarms as u32).into());
     Ok(o.into())
 }
 
 /// The tooth and starts scenes of another thread or start of the last plan:
-/// `{thread, passes, tooth, starts}`.
+/// `{thread, passes, passesKey, tooth, toothKey, starts, startsKey}` (every
+/// part sent; the keys are those [`update`] uses).
 #[wasm_bindgen]
 pub fn thread_scenes(thread: i32, start: u32) -> Result<JsValue, JsValue> {
-    let plan = LAST.with(Cell::take).ok_or_else(|| err("nothing planned yet"))?;
-    let chosen = pick(&plan, thread);
-    let (tooth, starts) = thread_scenes_of(&plan, chosen, start);
-    let o = Object::new();
-    set(&o, "thread", &chosen.map_or(JsValue::NULL, |t| (t as u32).into()));
-    set(&o, "passes", &passes_js(&plan, chosen)?);
-    set(&o, "tooth", &tooth);
-    set(&o, "starts", &starts);
-    LAST.with(|c| c.set(Some(plan)));
-    Ok(o.into())
+    with_last(|plan| {
+        let keys = PlanKeys::of(plan);
+        let o = Object::new();
+        thread_parts(&o, plan, &keys, pick(plan, thread), start, &Known(Vec::new()))?;
+        Ok(o.into())
+    })
 }
 
 /// The whole plan of `text` as JSON (the CLI's `--json`), for download.
@@ -355,9 +469,8 @@ pub fn plan_json(text: &str, dialect_name: &str, settings: &str) -> Result<Strin
 /// 3 thread, 4 run-out, 5 screw-in and `cw` 1 for clockwise arcs (X as a diameter).
 #[wasm_bindgen]
 pub fn moves() -> Float64Array {
-    let plan = LAST.with(Cell::take);
     let mut out = Vec::new();
-    if let Some(p) = &plan {
+    let _ = with_last(|p| {
         out.reserve(p.moves.len() * 7);
         for m in &p.moves {
             use crate::motion::MoveKind::*;
@@ -372,8 +485,8 @@ pub fn moves() -> Float64Array {
             let cw = m.arc.map_or(0.0, |a| if a.cw { 1.0 } else { 0.0 });
             out.extend_from_slice(&[kind, m.from.x, m.from.z, m.to.x, m.to.z, m.line as f64, cw]);
         }
-    }
-    LAST.with(|c| c.set(plan));
+        Ok(())
+    });
     Float64Array::from(&out[..])
 }
 
@@ -383,30 +496,26 @@ pub fn moves() -> Float64Array {
 /// `"json"` (a JSON string).
 #[wasm_bindgen]
 pub fn side_scene_as(format: &str) -> Result<JsValue, JsValue> {
-    let plan = LAST.with(Cell::take).ok_or_else(|| err("nothing planned yet"))?;
-    let scene = diagram::side(&plan);
-    let out = match format {
-        "packed" => Ok(packed_to_js(&diagram::pack(&scene))),
-        "objects" => to_js(&scene),
-        "json" => serde_json::to_string(&scene).map(|s| JsValue::from_str(&s)).map_err(err),
-        _ => Err(err(format!("unknown format '{format}' (packed, objects, json)"))),
-    };
-    LAST.with(|c| c.set(Some(plan)));
-    out
+    with_last(|plan| {
+        let scene = diagram::side(plan);
+        match format {
+            "packed" => Ok(packed_to_js(&diagram::pack(&scene))),
+            "objects" => to_js(&scene),
+            "json" => serde_json::to_string(&scene).map(|s| JsValue::from_str(&s)).map_err(err),
+            _ => Err(err(format!("unknown format '{format}' (packed, objects, json)"))),
+        }
+    })
 }
 
 /// The threads of the last plan as serde-wasm-bindgen objects or as a JSON
 /// string (`"objects"` or `"json"`), for comparing transfer costs.
 #[wasm_bindgen]
 pub fn threads_as(format: &str) -> Result<JsValue, JsValue> {
-    let plan = LAST.with(Cell::take).ok_or_else(|| err("nothing planned yet"))?;
-    let out = match format {
+    with_last(|plan| match format {
         "objects" => to_js(&plan.threads),
         "json" => serde_json::to_string(&plan.threads).map(|s| JsValue::from_str(&s)).map_err(err),
         _ => Err(err(format!("unknown format '{format}' (objects, json)"))),
-    };
-    LAST.with(|c| c.set(Some(plan)));
-    out
+    })
 }
 
 /// The binding's tests (wasm-bindgen-test), run in Node and in headless

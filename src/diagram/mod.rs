@@ -8,8 +8,12 @@
 //! - [`side()`]: the side section of the whole program ([`side`]).
 //! - [`tooth()`]: one thread space of one thread at large scale ([`tooth`]).
 //! - [`starts()`]: the start angles and axial offsets of one thread ([`starts`]).
+//!
+//! [`fingerprint`] keys the parts of a plan these read, so that unchanged
+//! scenes need not be built or sent again.
 
 pub mod editor;
+pub mod fingerprint;
 pub mod packed;
 pub mod paths;
 pub mod scene;

@@ -145,6 +145,34 @@ impl Band {
 /// The work's extent along the thread: the turned moves that lie on the
 /// crest line and overlap the cut. `None` when the crest is not turned.
 pub fn work_extent(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)> {
+    work_extent_in(t, band, moves, &FeedIndex::new(moves))
+}
+
+/// The feed motions of a plan by their start radius, so that the work of
+/// each straight thread is found among the motions on its crest only.
+pub struct FeedIndex {
+    /// `(start radius, motion index)` of the feed motions with a finite start radius, by radius.
+    by_radius: Vec<(f64, usize)>,
+}
+
+impl FeedIndex {
+    /// Indexes the feed motions of `moves`.
+    pub fn new(moves: &[Move]) -> FeedIndex {
+        let mut by_radius: Vec<(f64, usize)> = moves
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| m.kind == MoveKind::Feed && m.from.r().is_finite())
+            .map(|(k, m)| (m.from.r(), k))
+            .collect();
+        by_radius.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        FeedIndex { by_radius }
+    }
+}
+
+/// [`work_extent`] with the feed motions indexed. A straight thread's crest
+/// is one radius, so only the motions starting within the tolerance of it
+/// are tested; a tapered one tests every feed motion.
+pub fn work_extent_in(t: &Thread, band: &Band, moves: &[Move], index: &FeedIndex) -> Option<(f64, f64)> {
     if t.crest_source != CrestSource::Outline || band.long != Axis::Z {
         return None;
     }
@@ -153,12 +181,26 @@ pub fn work_extent(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)
         (p.r() - c).abs() <= 1e-4 + 1e-6 * c.abs()
     };
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for m in moves.iter().filter(|m| m.kind == MoveKind::Feed) {
+    let mut take = |m: &Move| {
         let (a, b) = (m.from.z.min(m.to.z), m.from.z.max(m.to.z));
         if b - a > 1e-9 && on_crest(m.from) && on_crest(m.to) && b > band.lo && a < band.hi {
             lo = lo.min(a);
             hi = hi.max(b);
         }
+    };
+    if band.slope_total == 0.0 {
+        // crest(z) is crest0 (or NaN, never on the crest): a motion on it starts within tol of crest0.
+        let tol = 1e-4 + 1e-6 * band.crest0.abs();
+        let list = &index.by_radius;
+        let first = list.partition_point(|(r, _)| *r < band.crest0 - tol);
+        for &(r, k) in &list[first..] {
+            if r > band.crest0 + tol {
+                break;
+            }
+            take(&moves[k]);
+        }
+    } else {
+        moves.iter().filter(|m| m.kind == MoveKind::Feed).for_each(take);
     }
     (lo <= hi).then_some((lo, hi))
 }
@@ -189,8 +231,9 @@ pub fn side(plan: &Plan) -> Scene {
     let mut back: Vec<(Item, bool)> = Vec::new();
     let mut front: Vec<(Item, bool)> = Vec::new();
     let has_threads = !plan.threads.is_empty();
+    let feeds = FeedIndex::new(&plan.moves);
     for (ti, t) in plan.threads.iter().enumerate() {
-        thread_items(plan, ti, t, &mut back, &mut front);
+        thread_items(plan, &feeds, ti, t, &mut back, &mut front);
     }
     for (item, focus) in back {
         scene.push(item, focus);
@@ -327,7 +370,14 @@ fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
 }
 
 /// The band, crest and root lines, δ zones and dimensions of one thread.
-fn thread_items(plan: &Plan, ti: usize, t: &Thread, back: &mut Vec<(Item, bool)>, front: &mut Vec<(Item, bool)>) {
+fn thread_items(
+    plan: &Plan,
+    feeds: &FeedIndex,
+    ti: usize,
+    t: &Thread,
+    back: &mut Vec<(Item, bool)>,
+    front: &mut Vec<(Item, bool)>,
+) {
     let Some(band) = Band::of(t) else { return };
     let lines: Vec<u32> = vec![t.line];
     let own = |shape: Shape, style: Style| Item::new(shape, style).lines(lines.clone()).of(ti, None);
@@ -344,7 +394,7 @@ fn thread_items(plan: &Plan, ti: usize, t: &Thread, back: &mut Vec<(Item, bool)>
     }
     back.push((own(line(band.pt(lo, band.root(lo)), band.pt(hi, band.root(hi))), Style::Root), true));
     // δ1 before the work, δ2 after it.
-    if let Some(work) = work_extent(t, &band, &plan.moves) {
+    if let Some(work) = work_extent_in(t, &band, &plan.moves, feeds) {
         let (d1, d2) = deltas(&band, work);
         let s = band.sense();
         let zones = [

@@ -3,7 +3,7 @@
 use super::packed::{STRIDE, pack};
 use super::paths::pass_paths;
 use super::scene::{Item, Scene, Shape, Style};
-use super::side::{Band, deltas, work_extent};
+use super::side::{Band, FeedIndex, deltas, work_extent, work_extent_in};
 use super::starts::{RULER_LEN, RULER_X, starts_of};
 use super::tooth::cuts;
 use super::*;
@@ -462,4 +462,63 @@ fn face_thread_is_drawn_along_x() {
     assert!(d.contains(&("height", "1.3".into())) && d.contains(&("lead", "2".into())), "{d:?}");
     assert!(!d.iter().any(|(k, _)| k.starts_with("dia_")), "no diameters on a face thread: {d:?}");
     assert!(tooth(&plan, 0, 1).is_some());
+}
+
+/// The definition of the work's extent: every feed motion tested.
+fn work_extent_by_scan(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)> {
+    if t.crest_source != CrestSource::Outline || band.long != Axis::Z {
+        return None;
+    }
+    let on_crest = |p: Point| {
+        let c = band.crest(p.z);
+        (p.r() - c).abs() <= 1e-4 + 1e-6 * c.abs()
+    };
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for m in moves.iter().filter(|m| m.kind == MoveKind::Feed) {
+        let (a, b) = (m.from.z.min(m.to.z), m.from.z.max(m.to.z));
+        if b - a > 1e-9 && on_crest(m.from) && on_crest(m.to) && b > band.lo && a < band.hi {
+            lo = lo.min(a);
+            hi = hi.max(b);
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+#[test]
+fn indexed_work_extent_equals_the_scan() {
+    // Straight threads turned on diameters that repeat, turning moves just
+    // inside and just outside the crest tolerance, work away from the cut,
+    // and a tapered thread on a turned taper.
+    let mut text = String::from("G00 X120 Z100\n");
+    for k in 0..24 {
+        let d = 40 + 2 * (k as u32 % 6);
+        let z0 = 70 + 5 * (k % 4);
+        let near = ["", ".00015", ".001", "", ".0001"][k % 5];
+        text += &format!(
+            "G00 X{} Z{z0}\nG01 X{d}{near} F0.2\nZ{}\nX{d} Z10\nG00 X{}\nZ{}\n",
+            d + 4,
+            z0 - 50,
+            d + 4,
+            z0 + 2
+        );
+        text += &format!("G01 X{d} Z200\nZ150\nG00 X{}\n", d + 4);
+        for x in [0.9, 1.5] {
+            text +=
+                &format!("G00 X{} Z{}\nX{:.1}\nG32 Z{} F2\nG00 X{}\n", d + 4, z0 + 2, f64::from(d) - x, z0 - 45, d + 4);
+        }
+    }
+    text += "G00 X60 Z5\nG01 X30 Z0\nG01 X40 Z-70\nG00 X60\nZ5\nX29.1 Z0\nG32 X39.1 Z-65 F2\nG00 X60\nZ5\nM30\n";
+    let plan = plan_default(&text, Dialect::Gsk980tdc);
+    let outline = plan.threads.iter().filter(|t| t.crest_source == CrestSource::Outline).count();
+    assert!(plan.threads.len() >= 20 && outline >= 10, "{} threads, {outline} on a turned crest", plan.threads.len());
+    let index = FeedIndex::new(&plan.moves);
+    let mut found = 0;
+    for t in &plan.threads {
+        let Some(band) = Band::of(t) else { continue };
+        let want = work_extent_by_scan(t, &band, &plan.moves);
+        assert_eq!(work_extent_in(t, &band, &plan.moves, &index), want, "thread at line {}", t.line);
+        assert_eq!(work_extent(t, &band, &plan.moves), want);
+        found += usize::from(want.is_some());
+    }
+    assert!(found >= 10, "{found} threads with work");
 }

@@ -31,11 +31,14 @@ const marked = StateField.define({
 
 /**
  * Creates the editor in `parent`.
- * onChange(text) runs on every document change; onCursor(line) when the
+ * onChange() runs on every document change (read the text with `text()`:
+ * building it costs a walk of the whole document); onCursor(line) when the
  * cursor moves to another line.
  */
 export function createEditor(parent, { doc, onChange, onCursor }) {
   let lastLine = -1;
+  let marks = ''; // the lines marked, as a key
+  let markedDoc = null;
   const view = new EditorView({
     parent,
     state: EditorState.create({
@@ -51,7 +54,7 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
         marked,
         keymap.of([...defaultKeymap, ...historyKeymap, ...lintKeymap]),
         EditorView.updateListener.of((u) => {
-          if (u.docChanged) onChange(u.state.doc.toString());
+          if (u.docChanged) onChange();
           if (u.selectionSet || u.docChanged) {
             const line = u.state.doc.lineAt(u.state.selection.main.head).number;
             if (line !== lastLine || u.docChanged) {
@@ -86,10 +89,16 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
       });
       view.dispatch(setDiagnostics(view.state, diags));
     },
-    /** Marks 1-based `lines` (an iterable), replacing the previous marks. */
+    /** Marks 1-based `lines` (an iterable), replacing the previous marks; the same lines again change nothing. */
     markLines(lines) {
       const doc = view.state.doc;
       const sorted = [...new Set(lines)].filter((l) => l >= 1 && l <= doc.lines).sort((a, b) => a - b);
+      const key = sorted.join(',');
+      // Marks move with edits; an edit that joins or splits lines re-marks them.
+      if (key === marks && doc === markedDoc) return;
+      if (key === '' && marks === '') return;
+      marks = key;
+      markedDoc = doc;
       const b = new RangeSetBuilder();
       for (const l of sorted) {
         const line = doc.line(l);

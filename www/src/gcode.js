@@ -1,10 +1,16 @@
-// G-code highlighting for CodeMirror 6 as a stream language: comments in
-// parentheses or after ';', program numbers and '%' lines, sequence numbers,
-// G and M codes, axis and other words with their numbers. Full-width
-// characters (Ｇ３２, ；, （）) are read like their ASCII twins.
+// G-code highlighting for CodeMirror 6: comments in parentheses or after
+// ';', program numbers and '%' lines, sequence numbers, G and M codes, axis
+// and other words with their numbers. Full-width characters (Ｇ３２, ；, （）)
+// are read like their ASCII twins.
+//
+// A block is one line and a comment ends with its line (as the planner reads
+// them), so every line is highlighted on its own, and only the lines the
+// editor shows: an edit costs the same in a program of any length, with no
+// parse of the whole document behind it.
 
-import { StreamLanguage, HighlightStyle, syntaxHighlighting } from '@codemirror/language';
-import { tags } from '@lezer/highlight';
+import { EditorState, RangeSetBuilder } from '@codemirror/state';
+import { EditorView, ViewPlugin, Decoration } from '@codemirror/view';
+import { StringStream } from '@codemirror/language';
 
 const FULL = /[\uFF01-\uFF5E]/;
 const ascii = (c) => (c && FULL.test(c) ? String.fromCharCode(c.charCodeAt(0) - 0xfee0) : c);
@@ -65,23 +71,64 @@ const gcodeParser = {
   blankLine(state) {
     state.comment = false;
   },
-  languageData: { commentTokens: { line: ';' } },
 };
 
-/** The G-code language and its colours. */
+/** Colours of the token types. */
+const COLOURS = {
+  comment: { color: '#6b7280', fontStyle: 'italic' },
+  keyword: { color: '#1d4ed8', fontWeight: '600' },
+  atom: { color: '#7c3aed', fontWeight: '600' },
+  variableName: { color: '#b45309' },
+  propertyName: { color: '#047857' },
+  labelName: { color: '#9ca3af' },
+  meta: { color: '#be185d' },
+  number: { color: '#0f766e' },
+  invalid: { color: '#dc2626', textDecoration: 'underline wavy' },
+};
+const MARKS = Object.fromEntries(Object.keys(COLOURS).map((k) => [k, Decoration.mark({ class: `cm-g-${k}` })]));
+
+/** Calls `emit(from, to, type)` for every token of one line (a fresh state: comments end with the line). */
+export function tokens(text, emit) {
+  const stream = new StringStream(text, 4, 2);
+  const state = gcodeParser.startState();
+  while (!stream.eol()) {
+    stream.start = stream.pos;
+    const type = gcodeParser.token(stream, state);
+    if (stream.pos === stream.start) stream.next();
+    if (type && MARKS[type]) emit(stream.start, stream.pos, type);
+  }
+}
+
+/** The marks of the lines in the editor's viewport. */
+function marks(view) {
+  const b = new RangeSetBuilder();
+  const doc = view.state.doc;
+  const { from, to } = view.viewport;
+  for (let pos = from; pos <= to; ) {
+    const line = doc.lineAt(pos);
+    tokens(line.text, (a, e, type) => b.add(line.from + a, line.from + e, MARKS[type]));
+    pos = line.to + 1;
+  }
+  return b.finish();
+}
+
+const highlighter = ViewPlugin.fromClass(
+  class {
+    constructor(view) {
+      this.decorations = marks(view);
+    }
+
+    update(u) {
+      if (u.docChanged || u.viewportChanged) this.decorations = marks(u.view);
+    }
+  },
+  { decorations: (p) => p.decorations },
+);
+
+/** G-code highlighting, its colours and its comment token (for toggle-comment). */
 export function gcode() {
-  const style = HighlightStyle.define([
-    { tag: tags.comment, color: '#6b7280', fontStyle: 'italic' },
-    { tag: tags.keyword, color: '#1d4ed8', fontWeight: '600' },
-    { tag: tags.atom, color: '#7c3aed', fontWeight: '600' },
-    { tag: tags.variableName, color: '#b45309' },
-    { tag: tags.propertyName, color: '#047857' },
-    { tag: tags.labelName, color: '#9ca3af' },
-    { tag: tags.meta, color: '#be185d' },
-    { tag: tags.number, color: '#0f766e' },
-    { tag: tags.invalid, color: '#dc2626', textDecoration: 'underline wavy' },
-  ]);
-  return [StreamLanguage.define(gcodeParser), syntaxHighlighting(style)];
+  const theme = EditorView.baseTheme(Object.fromEntries(Object.entries(COLOURS).map(([k, v]) => [`.cm-g-${k}`, v])));
+  return [highlighter, theme, EditorState.languageData.of(() => [{ commentTokens: { line: ';' } }])];
 }
 
 export { gcodeParser };

@@ -35,6 +35,9 @@ let pendingInput = null;
 let planQueued = false;
 let hover = null;
 let diagnosticsKey = -1; // key of the diagnostics the editor and the list show
+/** Parts of an update kept here by key: the planner sends a part only when its key changes. */
+const PARTS = ['threads', 'passes', 'side', 'tooth', 'starts'];
+const held = { keys: PARTS.map(() => -1), values: PARTS.map(() => null) };
 
 function settingsText() {
   const s = state.settings[state.dialect] || {};
@@ -59,15 +62,17 @@ function replan() {
   const t0 = performance.now();
   let r;
   try {
-    r = core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey);
+    r = core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey, new Float64Array(held.keys));
   } catch (e) {
     // A planner failure (which must not happen) keeps the page and the last drawing.
     diagnosticsKey = -1;
+    held.keys.fill(-1);
     probe.errors.push(String(e && e.message ? e.message : e));
     showCrash();
     return;
   }
   const t1 = performance.now();
+  for (const v of Object.values(views)) v.drawTime = 0;
   apply(r);
   const t2 = performance.now();
   probe.updates.push({ plan: t1 - t0, draw: t2 - t1, total: t2 - t0, lines: editor.view.state.doc.lines, ...probe.parts });
@@ -81,7 +86,7 @@ function replan() {
     requestAnimationFrame(() => {
       // The views drew in this frame's callbacks; the canvases are rasterised
       // when the frame is committed, after the callbacks, in the same task.
-      const canvas = views.side.lastDraw + views.tooth.lastDraw + views.starts.lastDraw;
+      const canvas = views.side.drawTime + views.tooth.drawTime + views.starts.drawTime;
       const raf = performance.now() - input;
       afterTask(() => {
         const frame = performance.now() - input;
@@ -108,8 +113,23 @@ function queuePlan() {
   queueMicrotask(replan);
 }
 
+/** Fills the parts `r` did not send (their keys are the held ones) and holds the new ones. */
+function hold(r) {
+  PARTS.forEach((part, i) => {
+    const key = r[`${part}Key`];
+    if (key === undefined) return;
+    if (key === held.keys[i]) {
+      r[part] = held.values[i];
+    } else {
+      held.keys[i] = key;
+      held.values[i] = r[part];
+    }
+  });
+}
+
 function apply(r) {
   const t0 = performance.now();
+  hold(r);
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
@@ -184,6 +204,7 @@ function selectThread(ti, st = 1) {
     probe.errors.push(String(e && e.message ? e.message : e));
     return;
   }
+  hold(s);
   result.passes = s.passes;
   result.tooth = s.tooth;
   result.starts = s.starts;
@@ -199,7 +220,11 @@ function selectThread(ti, st = 1) {
 // ---- lists ----
 
 let lastTable = '';
+let shownThreads = null; // what the selector and the table were last rendered from
 function renderThreads(r) {
+  const shown = { threads: r.threads, thread: r.thread, passes: r.passes, start, lang: getLang() };
+  if (shownThreads && Object.keys(shown).every((k) => shown[k] === shownThreads[k])) return;
+  shownThreads = shown;
   const sel = $('thread');
   const options = r.threads
     .map((th, i) => {

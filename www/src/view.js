@@ -27,6 +27,7 @@ export class SceneView {
     this.thread = 0;
     this.hovered = -1;
     this.lastDraw = 0;
+    this.drawTime = 0; // milliseconds spent drawing since the owner last zeroed it
     this.ro = new ResizeObserver(() => this.resize());
     this.ro.observe(canvas);
     this.resize();
@@ -54,8 +55,9 @@ export class SceneView {
     this.draw();
   }
 
-  /** Shows a new scene (`stale`: the last good one, greyed). */
+  /** Shows a new scene (`stale`: the last good one, greyed); the same one again draws nothing. */
   setScene(scene, stale) {
+    if (scene === this.scene && !!stale === this.stale) return;
     if (scene) prepare(scene, this.opts.styleNames);
     const first = !this.scene;
     this.scene = scene;
@@ -93,10 +95,12 @@ export class SceneView {
     }
   }
 
-  /** Highlights items: a Set of item indices, or null. */
+  /** Highlights items: a Set of item indices, or null; the same items again draw nothing. */
   setHighlight(set) {
+    const old = this.highlight;
+    const same = (!old || !old.size) && (!set || !set.size) ? true : !!old && !!set && old.size === set.size && [...set].every((i) => old.has(i));
     this.highlight = set;
-    this.draw();
+    if (!same) this.draw();
   }
 
   /** Item indices drawn from source `line`. */
@@ -135,8 +139,10 @@ export class SceneView {
       stale: this.stale,
       width: this.cssW,
       height: this.cssH,
+      cull: true,
     });
     this.lastDraw = performance.now() - t0;
+    this.drawTime += this.lastDraw;
   }
 
   /** The scene as an SVG document, as currently shown. */

@@ -157,7 +157,7 @@ pub fn field<T: serde::de::DeserializeOwned>(v: &JsValue, key: &str) -> T {
 
 /// Plans `text` as `dialect` with `settings`, thread 0, start 1, no known diagnostics.
 pub fn plan(text: &str, dialect: &str, settings: &str) -> JsValue {
-    wasm::update(text, dialect, settings, 0, 1, -1.0).unwrap_or_else(|e| panic!("update failed: {}", message(e)))
+    wasm::update(text, dialect, settings, 0, 1, -1.0, None).unwrap_or_else(|e| panic!("update failed: {}", message(e)))
 }
 
 /// One item of a packed scene, decoded.

@@ -52,14 +52,14 @@ fn empty_program() {
 #[wasm_bindgen_test]
 fn unknown_dialect_is_an_error_value() {
     for name in ["", "fanuc16i", "mazak", "renhe\0", "гск"] {
-        let e = wasm::update(O1006, name, "", 0, 1, -1.0).unwrap_err();
+        let e = wasm::update(O1006, name, "", 0, 1, -1.0, None).unwrap_err();
         let m = message(e);
         assert!(m.starts_with("unknown dialect") && m.contains("fanuc0i"), "{name:?}: {m}");
     }
     // Names are matched as the CLI does: case, spaces and dashes do not count.
     for (name, is) in [("GSK", "gsk980tdc"), (" Fanuc 0i ", "fanuc0i"), ("gsk-980tdc", "gsk980tdc"), ("RENHE", "renhe")]
     {
-        let r = wasm::update(O1006, name, "", 0, 1, -1.0).unwrap();
+        let r = wasm::update(O1006, name, "", 0, 1, -1.0, None).unwrap();
         assert_eq!(get(&r, "dialect").as_string().as_deref(), Some(is), "{name:?}");
     }
 }
@@ -84,7 +84,7 @@ fn huge_and_odd_numbers() {
     ];
     for (k, text) in cases.iter().enumerate() {
         for dialect in ["gsk980tdc", "fanuc0i", "renhe"] {
-            let r = wasm::update(text, dialect, "", 0, 1, -1.0)
+            let r = wasm::update(text, dialect, "", 0, 1, -1.0, None)
                 .unwrap_or_else(|e| panic!("case {k} on {dialect}: {}", message(e)));
             sane(text, &r);
         }
@@ -129,7 +129,7 @@ fn garbage_never_traps() {
         let text: String = (0..len).map(|_| rng.pick(&pieces)).collect();
         let dialect = ["gsk980tdc", "fanuc0i", "renhe"][k % 3];
         let thread = (rng.next() % 4) as i32 - 1;
-        let r = wasm::update(&text, dialect, "", thread, (rng.next() % 3) as u32, -1.0)
+        let r = wasm::update(&text, dialect, "", thread, (rng.next() % 3) as u32, -1.0, None)
             .unwrap_or_else(|e| panic!("program {k}: {}\n{text:?}", message(e)));
         sane(&text, &r);
         assert!(wasm::thread_scenes(thread + 1, 1).is_ok());

@@ -18,6 +18,7 @@
 //! binary for wasm32 too.)
 
 mod helpers;
+mod incremental;
 mod input;
 mod plans;
 mod scenes;

@@ -187,15 +187,15 @@ fn unchanged_diagnostics_are_not_sent_again() {
     let r = plan(O1006, "gsk980tdc", "");
     let key = num(&r, "diagnosticsKey");
     assert!(key >= 0.0 && key < 2f64.powi(52) && key.fract() == 0.0);
-    let again = wasm::update(O1006, "gsk980tdc", "", 0, 1, key).unwrap();
+    let again = wasm::update(O1006, "gsk980tdc", "", 0, 1, key, None).unwrap();
     assert!(get(&again, "diagnostics").is_null());
     // A comment edit moves offsets but not lines and columns: the key stays.
     let edited = O1006.replace("N15 S300 M03 T0101;", "N15 S300 M03 T0101; (spindle)");
-    let r2 = wasm::update(&edited, "gsk980tdc", "", 0, 1, key).unwrap();
+    let r2 = wasm::update(&edited, "gsk980tdc", "", 0, 1, key, None).unwrap();
     assert!(get(&r2, "diagnostics").is_null());
     // A new alarm changes it.
     let broken = O1006.replace("X46.5", "X46..5");
-    let r3 = wasm::update(&broken, "gsk980tdc", "", 0, 1, key).unwrap();
+    let r3 = wasm::update(&broken, "gsk980tdc", "", 0, 1, key, None).unwrap();
     assert_ne!(num(&r3, "diagnosticsKey"), key);
     let d: Vec<Diag> = field(&r3, "diagnostics");
     assert!(d.iter().any(|d| d.code == "malformed-number" && d.line == 9));

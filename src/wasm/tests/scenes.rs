@@ -175,18 +175,18 @@ fn taper_thread_runs_along_its_cone() {
 
 #[wasm_bindgen_test]
 fn thread_and_start_choices_are_clamped() {
-    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", 99, 99, -1.0).unwrap();
+    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", 99, 99, -1.0, None).unwrap();
     assert_eq!(num(&r, "thread"), 0.0);
     let tooth = scene(&get(&r, "tooth"));
     assert!(tooth.labels("note").contains(&("start_of".into(), "2/2".into())), "start 99 is the last start");
-    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", 0, 0, -1.0).unwrap();
+    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", 0, 0, -1.0, None).unwrap();
     assert!(scene(&get(&r, "tooth")).labels("note").contains(&("start_of".into(), "1/2".into())));
-    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", -1, 1, -1.0).unwrap();
+    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", -1, 1, -1.0, None).unwrap();
     assert!(get(&r, "thread").is_null() && get(&r, "tooth").is_null() && get(&r, "starts").is_null());
     assert!(array(&get(&r, "passes")).is_empty());
     assert!(get(&r, "side").is_object(), "the side view draws every thread");
     // Renhe's two threads: the second one chosen.
-    let r = wasm::update(RENHE_TAILS, "renhe", "", 1, 1, -1.0).unwrap();
+    let r = wasm::update(RENHE_TAILS, "renhe", "", 1, 1, -1.0, None).unwrap();
     assert_eq!(num(&r, "thread"), 1.0);
     let p: Vec<PassInfo> = field(&r, "passes");
     assert_eq!(p[0].lines, [10, 11, 12]);

@@ -1,0 +1,296 @@
+//! Content keys of the parts of a plan the views draw: equal keys mean equal
+//! inputs, so a scene or list built from them need not be built or sent again.
+//!
+//! Every field a drawing reads is hashed, numbers by their bits; the byte
+//! span of a motion and a thread's first motion index are not (no drawing
+//! reads them, and a comment typed above would change every span). The
+//! structs are destructured without `..`, so a field added to a motion, pass
+//! or thread does not compile here until it is hashed or named as unread (a
+//! missed field would leave a drawing stale).
+//! The hash is a fast multiplicative one with a final avalanche: changing one
+//! word always changes the state (each step is a bijection), and the
+//! finaliser spreads any change over the 52 bits a JavaScript number keeps exactly.
+
+use std::hash::{Hash, Hasher};
+use std::mem::discriminant;
+
+use crate::motion::{ArcData, Move, Point};
+use crate::plan::Plan;
+use crate::thread::{Pass, Thread};
+
+/// A fast streaming hasher for content keys (not for hash tables facing untrusted keys).
+#[derive(Clone, Copy, Debug)]
+pub struct KeyHasher(u64);
+
+const K: u64 = 0x517c_c1b7_2722_0a95;
+
+impl Default for KeyHasher {
+    fn default() -> KeyHasher {
+        KeyHasher(0x2545_f491_4f6c_dd1d)
+    }
+}
+
+impl Hasher for KeyHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        let mut chunks = bytes.chunks_exact(8);
+        for c in &mut chunks {
+            self.write_u64(u64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]));
+        }
+        let rest = chunks.remainder();
+        if !rest.is_empty() {
+            let mut b = [0u8; 8];
+            b[..rest.len()].copy_from_slice(rest);
+            // The length keeps "ab" and "ab\0" apart.
+            self.write_u64(u64::from_le_bytes(b) ^ ((rest.len() as u64) << 56));
+        }
+    }
+
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(K);
+    }
+
+    fn write_u32(&mut self, v: u32) {
+        self.write_u64(u64::from(v));
+    }
+
+    fn write_u8(&mut self, v: u8) {
+        self.write_u64(u64::from(v));
+    }
+
+    fn write_usize(&mut self, v: usize) {
+        self.write_u64(v as u64);
+    }
+
+    fn finish(&self) -> u64 {
+        // The MurmurHash3 finaliser.
+        let mut h = self.0;
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        h ^ (h >> 33)
+    }
+}
+
+/// A key as a JavaScript number: the low 52 bits of a hash, exact as an `f64`.
+pub fn js_key(h: u64) -> f64 {
+    (h & ((1u64 << 52) - 1)) as f64
+}
+
+/// The key of any hashable value.
+pub fn key_of<T: Hash + ?Sized>(v: &T) -> u64 {
+    let mut h = KeyHasher::default();
+    v.hash(&mut h);
+    h.finish()
+}
+
+/// Combines keys in order.
+pub fn combine(keys: &[u64]) -> u64 {
+    let mut h = KeyHasher::default();
+    keys.iter().for_each(|k| h.write_u64(*k));
+    h.finish()
+}
+
+fn f(h: &mut KeyHasher, v: f64) {
+    h.write_u64(v.to_bits());
+}
+
+fn point(h: &mut KeyHasher, p: &Point) {
+    let Point { x, z } = *p;
+    f(h, x);
+    f(h, z);
+}
+
+fn opt_point(h: &mut KeyHasher, p: &Option<Point>) {
+    match p {
+        Some(p) => {
+            h.write_u8(1);
+            point(h, p);
+        }
+        None => h.write_u8(0),
+    }
+}
+
+/// Feeds a motion into `h`.
+pub fn hash_move(h: &mut KeyHasher, m: &Move) {
+    // The span is not drawn.
+    let Move { kind, from, to, line, span: _, arc } = m;
+    kind.hash(h);
+    point(h, from);
+    point(h, to);
+    h.write_u32(*line);
+    match arc {
+        Some(ArcData { center, cw }) => {
+            h.write_u8(if *cw { 2 } else { 1 });
+            point(h, center);
+        }
+        None => h.write_u8(0),
+    }
+}
+
+/// Feeds a pass into `h`.
+pub fn hash_pass(h: &mut KeyHasher, p: &Pass) {
+    let Pass {
+        start,
+        index,
+        from,
+        to,
+        depth,
+        infeed,
+        role,
+        lines,
+        segments,
+        runout_to,
+        screw_in_from,
+        shift,
+        angle,
+        area,
+    } = p;
+    h.write_u32(*start);
+    h.write_u32(*index);
+    point(h, from);
+    point(h, to);
+    f(h, *depth);
+    f(h, *infeed);
+    discriminant(role).hash(h);
+    lines.hash(h);
+    h.write_usize(segments.len());
+    segments.iter().for_each(|s| point(h, s));
+    opt_point(h, runout_to);
+    opt_point(h, screw_in_from);
+    f(h, *shift);
+    f(h, *angle);
+    match area {
+        Some(a) => {
+            h.write_u8(1);
+            f(h, *a);
+        }
+        None => h.write_u8(0),
+    }
+}
+
+/// The key of a thread with its passes.
+pub fn thread_key(t: &Thread) -> u64 {
+    let Thread {
+        line,
+        end_line,
+        source,
+        kind,
+        long_axis,
+        lead,
+        pitch,
+        starts,
+        internal,
+        infeed,
+        tool_angle,
+        crest,
+        crest_source,
+        height,
+        taper,
+        passes,
+        depth_dir,
+        first_move: _, // not drawn
+    } = t;
+    let mut h = KeyHasher::default();
+    h.write_u32(*line);
+    h.write_u32(*end_line);
+    discriminant(source).hash(&mut h);
+    discriminant(kind).hash(&mut h);
+    discriminant(long_axis).hash(&mut h);
+    f(&mut h, *lead);
+    f(&mut h, *pitch);
+    h.write_u32(*starts);
+    h.write_u8(u8::from(*internal));
+    discriminant(infeed).hash(&mut h);
+    f(&mut h, *tool_angle);
+    f(&mut h, *crest);
+    discriminant(crest_source).hash(&mut h);
+    f(&mut h, *height);
+    f(&mut h, *taper);
+    h.write_usize(passes.len());
+    passes.iter().for_each(|p| hash_pass(&mut h, p));
+    f(&mut h, *depth_dir);
+    h.finish()
+}
+
+/// The key of a run of motions.
+pub fn moves_key(moves: &[Move]) -> u64 {
+    let mut h = KeyHasher::default();
+    h.write_usize(moves.len());
+    moves.iter().for_each(|m| hash_move(&mut h, m));
+    h.finish()
+}
+
+/// The keys of a plan's drawn parts: each thread's, and the side section's
+/// (every motion and thread: all that [`super::side()`] reads).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PlanKeys {
+    /// One key per thread, in plan order.
+    pub threads: Vec<u64>,
+    /// The key of all threads together.
+    pub all_threads: u64,
+    /// The key of the side section's inputs.
+    pub side: u64,
+}
+
+impl PlanKeys {
+    /// The keys of `plan`.
+    pub fn of(plan: &Plan) -> PlanKeys {
+        let threads: Vec<u64> = plan.threads.iter().map(thread_key).collect();
+        let all_threads = combine(&threads);
+        let side = combine(&[all_threads, moves_key(&plan.moves)]);
+        PlanKeys { threads, all_threads, side }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dialect::Dialect;
+    use crate::settings::Settings;
+
+    const O1006: &str = include_str!("../../examples/o1006.nc");
+
+    fn plan(text: &str) -> Plan {
+        crate::plan(text, &Settings::new(Dialect::Gsk980tdc))
+    }
+
+    #[test]
+    fn equal_plans_have_equal_keys() {
+        assert_eq!(PlanKeys::of(&plan(O1006)), PlanKeys::of(&plan(O1006)));
+        // A comment changes no motion and no thread (only byte spans, which are not drawn).
+        let commented = O1006.replacen('\n', " (a note)\n", 1);
+        assert_ne!(plan(O1006).moves[0].span, plan(&commented).moves[0].span);
+        assert_eq!(PlanKeys::of(&plan(O1006)), PlanKeys::of(&plan(&commented)));
+    }
+
+    #[test]
+    fn a_changed_pass_changes_its_thread_and_the_side_key_only() {
+        let first = "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\nZ70\n";
+        let text = format!("{first}G00 X40 Z30\nX35.1\nG32 Z5 F1.5\nG00 X40\nZ30\n");
+        let a = PlanKeys::of(&plan(&text));
+        let b = PlanKeys::of(&plan(&text.replace("X35.1", "X35.2")));
+        assert_eq!(a.threads.len(), 2, "two threads");
+        assert_eq!(a.threads[0], b.threads[0]);
+        assert_ne!(a.threads[1], b.threads[1]);
+        assert_ne!((a.all_threads, a.side), (b.all_threads, b.side));
+        // A motion that belongs to no thread changes the side key alone.
+        let c = PlanKeys::of(&plan(&format!("{text}G00 X60 Z80\n")));
+        assert_eq!((c.threads[0], c.all_threads), (a.threads[0], a.all_threads));
+        assert_ne!(c.side, a.side);
+    }
+
+    #[test]
+    fn one_changed_word_changes_the_key() {
+        let a: Vec<u64> = (0..64).map(|i| key_of(&[1u64, 2, i, 4])).collect();
+        let mut sorted = a.clone();
+        sorted.sort_unstable();
+        sorted.dedup();
+        assert_eq!(sorted.len(), a.len());
+        assert_ne!(key_of("ab"), key_of("ab\0"));
+        assert_ne!(combine(&[1, 2]), combine(&[2, 1]));
+        // Keys fit a JS number exactly and use its bits.
+        assert!(a.iter().all(|k| js_key(*k) < (1u64 << 52) as f64));
+        assert!(a.iter().any(|k| js_key(*k) >= (1u64 << 51) as f64));
+    }
+}

@@ -1,0 +1,218 @@
+//! Incremental updates: the kept planner re-reads only from the last
+//! snapshot before an edit and must answer exactly as a plan from scratch;
+//! parts the caller has (by key) are not sent again.
+
+use js_sys::{Float64Array, Uint32Array};
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::wasm_bindgen_test;
+
+use super::helpers::*;
+use crate::wasm;
+
+/// `threads` O1006-style threads of two passes, each turned first on its own
+/// diameter: 13 lines each, 4 more around them.
+fn program(threads: usize) -> String {
+    let mut out = String::from("O2000\nG50 X100 Z100\nS300 M03 T0101\n");
+    for k in 0..threads {
+        let d = 30 + (k % 20) as u32;
+        out += &format!("G00 X{} Z70\nG01 X{d} F0.2\nZ20\nX{}\nG00 Z70\n", d + 10, d + 5);
+        for x in [0.9, 1.5] {
+            out += &format!("X{:.1}\nG32 Z13 F2\nG00 X{}\nZ70\n", f64::from(d) - x, d + 10);
+        }
+    }
+    out + "M30\n"
+}
+
+/// `text` with its line `n` (1-based; negative: from the end, −1 the last) changed by `f`.
+fn edit_line(text: &str, n: isize, f: impl Fn(&str) -> String) -> String {
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let i = if n < 0 { lines.len() - n.unsigned_abs() } else { n as usize - 1 };
+    lines[i] = f(&lines[i]);
+    lines.join("\n") + "\n"
+}
+
+/// Every key and value of an answer that the app reads, decoded for comparison.
+fn snapshot(r: &JsValue) -> String {
+    let diags: Vec<Diag> = field(r, "diagnostics");
+    let threads: Vec<ThreadInfo> = field(r, "threads");
+    let passes: Vec<PassInfo> = field(r, "passes");
+    let scene_text = |key: &str| {
+        let v = get(r, key);
+        if v.is_null() {
+            return "null".to_string();
+        }
+        let coords = Float64Array::from(get(&v, "coords")).to_vec();
+        let items = Uint32Array::from(get(&v, "items")).to_vec();
+        let lines = Uint32Array::from(get(&v, "lines")).to_vec();
+        let labels = get(&v, "labels").as_string().unwrap_or_default();
+        let bounds = Float64Array::from(get(&v, "bounds")).to_vec();
+        format!("{coords:?}{items:?}{lines:?}{labels}{bounds:?}")
+    };
+    let keys: Vec<f64> = ["diagnosticsKey", "threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"]
+        .iter()
+        .map(|k| num(r, k))
+        .collect();
+    format!(
+        "{:?}|{diags:?}|{threads:?}|{passes:?}|{}|{}|{}|{keys:?}|{}",
+        [num(r, "alarms"), num(r, "warnings"), num(r, "notes"), num(r, "moves")],
+        scene_text("side"),
+        scene_text("tooth"),
+        scene_text("starts"),
+        get(r, "thread").as_f64().unwrap_or(-1.0),
+    )
+}
+
+/// Plans `text` from scratch: another text first, so that nothing is reused.
+fn from_scratch(text: &str, dialect: &str, settings: &str) -> JsValue {
+    plan("%", dialect, settings);
+    let r = plan(text, dialect, settings);
+    assert_eq!(num(&r, "resumedAt"), 1.0);
+    r
+}
+
+#[wasm_bindgen_test]
+fn incremental_updates_equal_full_ones() {
+    // 784 lines; the planner keeps snapshots at blocks 257, 513 and 769.
+    let base = program(60);
+    assert_eq!(base.lines().count(), 784);
+    let last_pass_x = -9; // the last thread's first pass: X48.1
+    assert_eq!(base.lines().nth(784 - 9), Some("X48.1"));
+    let edits: Vec<(String, bool)> = vec![
+        // (text, whether the edit is late enough to resume past the top)
+        (edit_line(&base, last_pass_x, |_| "X48.0".into()), true),
+        (edit_line(&base, -1, |l| format!("G00 X60 Z80\n{l}")), true),
+        (edit_line(&base, 2, |l| format!("{l} (top)")), false),
+        (edit_line(&base, 9, |_| "X29.2".into()), false),
+        (edit_line(&base, -1, |_| "G00 X70\nX66.1\nG32 Z40 F3\nG00 X72\nM30".into()), true),
+        (base[..base.len() / 2].to_string(), true),
+        (base.replacen("G32 Z13 F2", "G32 Z13 F2.5", 50), false),
+        (edit_line(&base, last_pass_x, |_| "X48..1".into()), true), // an alarm near the end
+        (edit_line(&base, 400, |_| String::new()), true),           // a line emptied
+        (edit_line(&base, 300, |l| format!("{l}\n\n")), true),      // lines inserted
+    ];
+    for (k, (text, late)) in edits.iter().enumerate() {
+        plan(&base, "gsk980tdc", "");
+        let inc = plan(text, "gsk980tdc", "");
+        let resumed = num(&inc, "resumedAt");
+        assert_eq!(resumed > 1.0, *late, "edit {k} resumed at line {resumed}");
+        let inc = snapshot(&inc);
+        let full = snapshot(&from_scratch(text, "gsk980tdc", ""));
+        assert_eq!(inc, full, "edit {k}");
+    }
+    // An alarm near the end is in the incremental answer too.
+    plan(&base, "gsk980tdc", "");
+    let r = plan(&edits[7].0, "gsk980tdc", "");
+    assert_eq!(num(&r, "alarms"), 1.0);
+    let d: Vec<Diag> = field(&r, "diagnostics");
+    assert!(d.iter().any(|d| d.code == "malformed-number" && d.line == 776), "{d:?}");
+}
+
+#[wasm_bindgen_test]
+fn a_settings_change_plans_from_the_top() {
+    let text = program(40);
+    plan(&text, "gsk980tdc", "");
+    let r = plan(&text, "gsk980tdc", "No.058=55");
+    assert_eq!(num(&r, "resumedAt"), 1.0);
+    assert_eq!(snapshot(&r), snapshot(&from_scratch(&text, "gsk980tdc", "No.058=55")));
+    let threads: Vec<ThreadInfo> = field(&r, "threads");
+    assert_eq!(threads[0].tool_angle, 55.0);
+    // The same settings again: a late edit resumes.
+    let r = plan(&format!("{text}G00 X80\n"), "gsk980tdc", "No.058=55");
+    assert!(num(&r, "resumedAt") > 1.0);
+    // Another dialect plans from the top as well.
+    let r = plan(&text, "fanuc0i", "");
+    assert_eq!(num(&r, "resumedAt"), 1.0);
+    assert_eq!(snapshot(&r), snapshot(&from_scratch(&text, "fanuc0i", "")));
+}
+
+/// `update` with everything the last answer `r` carried as known.
+fn again(text: &str, r: &JsValue, thread: i32, start: u32) -> JsValue {
+    let known = ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"].iter().map(|k| num(r, k)).collect();
+    wasm::update(text, "gsk980tdc", "", thread, start, num(r, "diagnosticsKey"), Some(known))
+        .unwrap_or_else(|e| panic!("{}", message(e)))
+}
+
+const PARTS: [&str; 5] = ["threads", "passes", "side", "tooth", "starts"];
+
+fn sent(r: &JsValue) -> Vec<&'static str> {
+    PARTS.iter().copied().filter(|p| !get(r, p).is_null()).collect()
+}
+
+#[wasm_bindgen_test]
+fn parts_the_caller_has_are_not_sent_again() {
+    let text = program(30);
+    let r = plan(&text, "gsk980tdc", "");
+    assert_eq!(sent(&r), PARTS);
+    // The same text: nothing is sent, every key is the same.
+    let same = again(&text, &r, 0, 1);
+    assert_eq!(sent(&same), [] as [&str; 0]);
+    assert!(get(&same, "diagnostics").is_null());
+    for k in ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"] {
+        assert_eq!(num(&same, k), num(&r, k), "{k}");
+    }
+    // A comment at the top: no motion or thread changed.
+    let commented = text.replacen("G50 X100 Z100", "G50 X100 Z100 (datum)", 1);
+    assert_eq!(sent(&again(&commented, &r, 0, 1)), [] as [&str; 0]);
+    // A pass of the last thread: the thread list and the side section; the
+    // first thread's passes, tooth and starts are the same.
+    assert_eq!(text.lines().nth(394 - 9), Some("X38.1"));
+    let late = edit_line(&text, -9, |_| "X38.0".into());
+    let r2 = again(&late, &r, 0, 1);
+    assert_eq!(sent(&r2), ["threads", "side"]);
+    // Choosing the changed thread sends its parts.
+    let last = num(&r2, "threadsKey");
+    let r3 = again(&late, &r2, 29, 1);
+    assert_eq!(sent(&r3), ["passes", "tooth", "starts"]);
+    assert_eq!(num(&r3, "threadsKey"), last);
+    let passes: Vec<PassInfo> = field(&r3, "passes");
+    assert!(close(passes[0].from[0], 38.0), "{:?}", passes[0].from);
+    // A motion outside every thread: the side section alone.
+    let r4 = again(&edit_line(&late, -1, |l| format!("G00 X90 Z90\n{l}")), &r3, 29, 1);
+    assert_eq!(sent(&r4), ["side"]);
+    // A caller that passes no keys gets everything.
+    let r5 = wasm::update(&late, "gsk980tdc", "", 29, 1, -1.0, None).unwrap();
+    assert_eq!(sent(&r5), PARTS);
+    assert!(!get(&r5, "diagnostics").is_null());
+}
+
+#[wasm_bindgen_test]
+fn thread_scenes_carry_the_keys_update_uses() {
+    let text = program(5);
+    let r = plan(&text, "gsk980tdc", "");
+    let s = wasm::thread_scenes(3, 1).unwrap();
+    assert_eq!(num(&s, "thread"), 3.0);
+    let r3 = again(&text, &r, 3, 1);
+    for k in ["passesKey", "toothKey", "startsKey"] {
+        assert_eq!(num(&s, k), num(&r3, k), "{k}");
+    }
+    // With thread 3's keys known, choosing it again sends nothing of it.
+    let known: Vec<f64> = ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"]
+        .iter()
+        .map(|k| if k.starts_with("threads") || k.starts_with("side") { num(&r, k) } else { num(&s, k) })
+        .collect();
+    let r4 = wasm::update(&text, "gsk980tdc", "", 3, 1, num(&r, "diagnosticsKey"), Some(known)).unwrap();
+    assert_eq!(sent(&r4), [] as [&str; 0]);
+}
+
+#[wasm_bindgen_test]
+fn plan_summary_counts_without_drawing() {
+    let s = wasm::plan_summary(O1006, "gsk980tdc", "").unwrap();
+    assert_eq!(
+        [num(&s, "moves"), num(&s, "threads"), num(&s, "passes"), num(&s, "diagnostics"), num(&s, "alarms")],
+        [21.0, 1.0, 5.0, 2.0, 0.0]
+    );
+    let s = wasm::plan_summary(&O1006.replace("X46.5", "X46..5"), "gsk980tdc", "").unwrap();
+    assert_eq!(num(&s, "alarms"), 1.0);
+    let s = wasm::plan_summary(G92_TWO_START, "gsk980tdc", "").unwrap();
+    assert_eq!((num(&s, "threads"), num(&s, "passes")), (1.0, 8.0));
+    for text in ["", "\u{0}(((", "G32 Z1e999 F0", "😀\n%\n%"] {
+        let s = wasm::plan_summary(text, "renhe", "No.058=abc").unwrap();
+        assert_eq!(num(&s, "threads"), 0.0, "{text:?}");
+    }
+    assert!(message(wasm::plan_summary(O1006, "bogus", "").unwrap_err()).contains("unknown dialect"));
+    // It keeps nothing: the last plan is still the one update made.
+    plan(G76_FANUC, "fanuc0i", "");
+    wasm::plan_summary(O1006, "gsk980tdc", "").unwrap();
+    let p: Vec<PassInfo> = field(&wasm::thread_scenes(0, 1).unwrap(), "passes");
+    assert!(close(p[0].depth, 1.8));
+}
