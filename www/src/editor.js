@@ -29,6 +29,16 @@ const marked = StateField.define({
   provide: (f) => EditorView.decorations.from(f),
 });
 
+/** Runs `f` in a new task (after the current one, and after a frame's commit when called from a frame callback). */
+function afterTask(f) {
+  const ch = new MessageChannel();
+  ch.port1.onmessage = () => {
+    ch.port1.close();
+    f();
+  };
+  ch.port2.postMessage(0);
+}
+
 /**
  * Creates the editor in `parent`.
  * onChange() runs on every document change (read the text with `text()`:
@@ -39,6 +49,7 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
   let lastLine = -1;
   let marks = ''; // the lines marked, as a key
   let markedDoc = null;
+  let pending = null; // diagnostics to show after the frame: {list, changes made since}
   const view = new EditorView({
     parent,
     state: EditorState.create({
@@ -54,7 +65,10 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
         marked,
         keymap.of([...defaultKeymap, ...historyKeymap, ...lintKeymap]),
         EditorView.updateListener.of((u) => {
-          if (u.docChanged) onChange();
+          if (u.docChanged) {
+            if (pending) pending.changes = pending.changes ? pending.changes.compose(u.changes) : u.changes;
+            onChange();
+          }
           if (u.selectionSet || u.docChanged) {
             const line = u.state.doc.lineAt(u.state.selection.main.head).number;
             if (line !== lastLine || u.docChanged) {
@@ -72,6 +86,24 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
     }),
   });
 
+  function flush() {
+    const p = pending;
+    pending = null;
+    if (!p) return;
+    const m = p.changes;
+    show(m ? p.list.map((d) => ({ ...d, from: m.mapPos(d.from, 1), to: m.mapPos(d.to, -1) })) : p.list);
+  }
+
+  function show(list) {
+    const len = view.state.doc.length;
+    const diags = list.map((d) => {
+      const from = Math.min(d.from, len);
+      const to = Math.min(Math.max(d.to, from), len);
+      return { from, to, severity: d.severity === 'error' ? 'error' : d.severity, message: d.message, source: d.code };
+    });
+    view.dispatch(setDiagnostics(view.state, diags));
+  }
+
   return {
     view,
     text: () => view.state.doc.toString(),
@@ -81,13 +113,18 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
     },
     /** Shows the plan's diagnostics (UTF-16 `from`/`to` as computed by the core). */
     setDiagnostics(list) {
-      const len = view.state.doc.length;
-      const diags = list.map((d) => {
-        const from = Math.min(d.from, len);
-        const to = Math.min(Math.max(d.to, from), len);
-        return { from, to, severity: d.severity === 'error' ? 'error' : d.severity, message: d.message, source: d.code };
-      });
-      view.dispatch(setDiagnostics(view.state, diags));
+      pending = null;
+      show(list);
+    },
+    /**
+     * Shows the diagnostics once the next frame is out (underlines and gutter
+     * marks are not worth delaying the drawings for), mapped through the
+     * edits made meanwhile; a later call replaces an earlier one not yet shown.
+     */
+    setDiagnosticsSoon(list) {
+      const scheduled = pending !== null;
+      pending = { list, changes: null };
+      if (!scheduled) requestAnimationFrame(() => afterTask(flush));
     },
     /** Marks 1-based `lines` (an iterable), replacing the previous marks; the same lines again change nothing. */
     markLines(lines) {

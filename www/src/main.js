@@ -140,7 +140,7 @@ function apply(r) {
   } else {
     lastDiagnostics = r.diagnostics;
     diagnosticsKey = r.diagnosticsKey;
-    editor.setDiagnostics(r.diagnostics);
+    editor.setDiagnosticsSoon(r.diagnostics);
   }
   const t1 = performance.now();
   if (changed) renderDiagnostics(r.diagnostics);
@@ -205,6 +205,7 @@ function selectThread(ti, st = 1) {
     return;
   }
   hold(s);
+  result.thread = s.thread;
   result.passes = s.passes;
   result.tooth = s.tooth;
   result.starts = s.starts;

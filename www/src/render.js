@@ -263,6 +263,8 @@ export function drawScene(painter, scene, xf, opts) {
   const M = 12;
   const right = opts.width + M;
   const bottom = opts.height + M;
+  // Screen points of every path, in one buffer; a batch lists [start, length] spans of it.
+  const buf = new Float64Array(coords.length);
   for (let i = 0; i < count; i++) {
     const o = i * STRIDE;
     const shape = items[o];
@@ -272,20 +274,22 @@ export function drawScene(painter, scene, xf, opts) {
     }
     const c = items[o + 2];
     const n = items[o + 3];
-    const pts = new Float64Array(n);
     let x0 = Infinity;
     let y0 = Infinity;
     let x1 = -Infinity;
     let y1 = -Infinity;
+    let h = 0x811c9dc5;
     for (let k = 0; k < n; k += 2) {
       const x = X(coords[c + k]);
       const y = Y(coords[c + k + 1]);
-      pts[k] = x;
-      pts[k + 1] = y;
+      buf[c + k] = x;
+      buf[c + k + 1] = y;
       if (x < x0) x0 = x;
       if (x > x1) x1 = x;
       if (y < y0) y0 = y;
       if (y > y1) y1 = y;
+      h = Math.imul(h ^ Math.round(x * 8), 0x01000193);
+      h = Math.imul(h ^ Math.round(y * 8), 0x01000193);
     }
     if (cull && (x1 < -M || y1 < -M || x0 > right || y0 > bottom)) continue;
     const style = styles[i];
@@ -293,18 +297,20 @@ export function drawScene(painter, scene, xf, opts) {
     const key = style === 'area' ? `area:${items[o + 4]}:${items[o + 5]}:${role}` : `${style}:${role}:${shape}`;
     let b = batches.get(key);
     if (!b) {
-      b = { first: i, paths: [], seen: new Set() };
+      b = { first: i, spans: [], seen: new Map() };
       batches.set(key, b);
       order.push(b);
     }
-    const id = pathKey(pts);
-    if (b.seen.has(id)) continue;
-    b.seen.add(id);
-    b.paths.push(pts);
+    // A repeat has the same hash and the same points to 1/8 px; the hash only finds candidates.
+    // seen: hash → the span index of the one path with it, or −1 when several have it.
+    const same = b.seen.get(h);
+    if (same !== undefined && (same >= 0 ? samePath(buf, b.spans, same, c, n) : anySame(buf, b.spans, c, n))) continue;
+    b.seen.set(h, same === undefined ? b.spans.length : -1);
+    b.spans.push(c, n);
   }
   for (const b of order) {
     const o = b.first * STRIDE;
-    painter.paths(b.paths, items[o] === SHAPE.polygon, penOf(b.first));
+    painter.paths(buf, b.spans, items[o] === SHAPE.polygon, penOf(b.first));
   }
   // With many threads, dimensions and texts of the chosen thread only.
   const only = scene.prepared.annotated > MAX_ANNOTATED ? (opts.thread ?? 0) + 1 : 0;
@@ -317,11 +323,18 @@ export function drawScene(painter, scene, xf, opts) {
   painter.end();
 }
 
-/** A path's screen points to 1/8 px, as a string key. */
-function pathKey(pts) {
-  let k = '';
-  for (let j = 0; j < pts.length; j++) k += `${Math.round(pts[j] * 8)},`;
-  return k;
+/** Whether the path at span index `at` of `spans` has the `n` numbers at `c` of `buf`, to 1/8 px. */
+function samePath(buf, spans, at, c, n) {
+  const s = spans[at];
+  if (spans[at + 1] !== n) return false;
+  for (let k = 0; k < n; k++) if (Math.round(buf[s + k] * 8) !== Math.round(buf[c + k] * 8)) return false;
+  return true;
+}
+
+/** Whether any path of `spans` has the `n` numbers at `c` of `buf`. */
+function anySame(buf, spans, c, n) {
+  for (let j = 0; j < spans.length; j += 2) if (samePath(buf, spans, j, c, n)) return true;
+  return false;
 }
 
 function arrow(p, x0, y0, x1, y1, pen) {
@@ -431,12 +444,14 @@ export function canvasPainter(ctx) {
     end() {
       ctx.restore();
     },
-    paths(list, closed, pen) {
+    paths(buf, spans, closed, pen) {
       ctx.beginPath();
-      for (const pts of list) {
-        if (pts.length < 4) continue;
-        ctx.moveTo(pts[0], pts[1]);
-        for (let k = 2; k < pts.length; k += 2) ctx.lineTo(pts[k], pts[k + 1]);
+      for (let j = 0; j < spans.length; j += 2) {
+        const s = spans[j];
+        const e = s + spans[j + 1];
+        if (e - s < 4) continue;
+        ctx.moveTo(buf[s], buf[s + 1]);
+        for (let k = s + 2; k < e; k += 2) ctx.lineTo(buf[k], buf[k + 1]);
         if (closed) ctx.closePath();
       }
       this.finish(closed, pen);
@@ -531,12 +546,14 @@ export function svgPainter(width, height) {
     end() {
       out.push('</g>');
     },
-    paths(list, closed, pen) {
+    paths(buf, spans, closed, pen) {
       let d = '';
-      for (const pts of list) {
-        if (pts.length < 4) continue;
-        d += `M${f(pts[0])} ${f(pts[1])}`;
-        for (let k = 2; k < pts.length; k += 2) d += `L${f(pts[k])} ${f(pts[k + 1])}`;
+      for (let j = 0; j < spans.length; j += 2) {
+        const s = spans[j];
+        const e = s + spans[j + 1];
+        if (e - s < 4) continue;
+        d += `M${f(buf[s])} ${f(buf[s + 1])}`;
+        for (let k = s + 2; k < e; k += 2) d += `L${f(buf[k])} ${f(buf[k + 1])}`;
         if (closed) d += 'Z';
       }
       if (d) out.push(`<path d="${d}" ${style(pen, closed)} stroke-linejoin="round"/>`);
