@@ -10,7 +10,9 @@
 //! The planner is incremental ([`crate::planner::Planner`]): an edit re-reads
 //! the program from the last snapshot before it. Each part of the answer
 //! (threads, passes, scenes) carries a content key; a part whose key the
-//! caller says it has is not built or sent again.
+//! caller says it has is not built or sent again, and the side section is
+//! put together from the pieces of the last one that did not change
+//! ([`crate::diagram::memo`]).
 //!
 //! Bulk geometry crosses as typed arrays (see [`crate::diagram::packed`]);
 //! the rest (diagnostics, threads, setting tables) through serde-wasm-bindgen.
@@ -22,6 +24,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use crate::diagram::fingerprint::{PlanKeys, combine, js_key, key_of};
+use crate::diagram::memo::SideMemo;
 use crate::diagram::{self, Packed, Scene};
 use crate::dialect::Dialect;
 use crate::plan::Plan;
@@ -29,19 +32,26 @@ use crate::planner::Planner;
 use crate::settings::{Kind, Settings};
 use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind};
 
+/// What is kept between calls: the planner (with the last plan) and the
+/// pieces of the last side section.
+struct Session {
+    planner: Planner,
+    side: SideMemo,
+}
+
 thread_local! {
-    /// The planner, holding the last plan; `None` before the first plan.
-    static PLANNER: Cell<Option<Planner>> = const { Cell::new(None) };
+    /// The session; `None` before the first plan.
+    static SESSION: Cell<Option<Session>> = const { Cell::new(None) };
 }
 
 /// Runs `f` on the last plan; an error when nothing was planned yet.
 fn with_last<R>(f: impl FnOnce(&Plan) -> Result<R, JsValue>) -> Result<R, JsValue> {
-    let planner = PLANNER.with(Cell::take);
-    let out = match planner.as_ref().and_then(Planner::last) {
+    let session = SESSION.with(Cell::take);
+    let out = match session.as_ref().and_then(|s| s.planner.last()) {
         Some(plan) => f(plan),
         None => Err(err("nothing planned yet")),
     };
-    PLANNER.with(|c| c.set(planner));
+    SESSION.with(|c| c.set(session));
     out
 }
 
@@ -376,22 +386,23 @@ pub fn update(
     let d = dialect(dialect_name)?;
     let (s, problems) = settings_from(d, settings);
     let known = Known(known.unwrap_or_default());
-    let mut planner = match PLANNER.with(Cell::take) {
-        Some(mut p) => {
-            p.set_settings(s);
-            p
+    let mut session = match SESSION.with(Cell::take) {
+        Some(mut session) => {
+            session.planner.set_settings(s);
+            session
         }
-        None => Planner::new(s),
+        None => Session { planner: Planner::new(s), side: SideMemo::new() },
     };
-    planner.plan(text);
+    session.planner.plan(text);
+    let Session { planner, side } = &mut session;
     let out = match planner.last() {
-        Some(plan) => answer(text, plan, &problems, (thread, start), known_diagnostics, &known).map(|o| {
+        Some(plan) => answer(text, plan, side, &problems, (thread, start), known_diagnostics, &known).map(|o| {
             set(&o, "resumedAt", &planner.resumed_at().into());
             o.into()
         }),
         None => Err(err("the planner kept no plan")),
     };
-    PLANNER.with(|c| c.set(Some(planner)));
+    SESSION.with(|c| c.set(Some(session)));
     out
 }
 
@@ -399,6 +410,7 @@ pub fn update(
 fn answer(
     text: &str,
     plan: &Plan,
+    memo: &mut SideMemo,
     problems: &[SettingProblem],
     (thread, start): (i32, u32),
     known_diagnostics: f64,
@@ -423,7 +435,7 @@ fn answer(
     keyed(&o, known, Part::Threads, keys.all_threads, || {
         to_js(&plan.threads.iter().map(ThreadSummary::of).collect::<Vec<_>>())
     })?;
-    keyed(&o, known, Part::Side, keys.side, || Ok(scene_js(Some(diagram::side(plan)))))?;
+    keyed(&o, known, Part::Side, keys.side, || Ok(packed_to_js(&memo.side(plan, &keys.threads))))?;
     thread_parts(&o, plan, &keys, pick(plan, thread), start, known)?;
     Ok(o)
 }

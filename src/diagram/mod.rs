@@ -14,6 +14,7 @@
 
 pub mod editor;
 pub mod fingerprint;
+pub mod memo;
 pub mod packed;
 pub mod paths;
 pub mod scene;

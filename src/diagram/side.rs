@@ -11,7 +11,7 @@ use crate::plan::Plan;
 use crate::thread::{Axis, CrestSource, Pass, Thread};
 
 use super::paths::{PassPath, pass_paths};
-use super::scene::{Anchor, Glyph, Item, Label, Pt, Scene, Shape, Style, ViewKind, num};
+use super::scene::{Anchor, Glyph, Item, Label, Pt, Rect, Scene, Shape, Style, ViewKind, num};
 
 /// Most motions drawn; a larger plan is drawn up to here, with a note.
 pub const MAX_MOVES_DRAWN: usize = 250_000;
@@ -211,113 +211,168 @@ pub fn deltas(band: &Band, work: (f64, f64)) -> (f64, f64) {
     if band.sense() < 0.0 { (band.l0 - hi, lo - band.l1) } else { (lo - band.l0, band.l1 - hi) }
 }
 
+/// What the side section is drawn from besides the plan: the motions of each
+/// pass, which motions are drawn and which belong to a pass, and the feed index.
+pub struct Layout {
+    /// The passes' motions, by cut start.
+    pub paths: Vec<PassPath>,
+    /// Motions drawn: `moves[..drawn]`.
+    pub drawn: usize,
+    /// Per drawn motion: whether a pass draws it.
+    pub owner: Vec<bool>,
+    /// Whether the plan has threads (then the outline is not the focus).
+    pub has_threads: bool,
+    /// The feed motions by radius.
+    pub feeds: FeedIndex,
+}
+
+impl Layout {
+    /// The layout of `plan`'s side section.
+    pub fn of(plan: &Plan) -> Layout {
+        let paths = pass_paths(plan);
+        let drawn = plan.moves.len().min(MAX_MOVES_DRAWN);
+        let mut owner = vec![false; drawn];
+        for p in &paths {
+            for k in p.lead_in.start..p.tail.end {
+                if let Some(o) = owner.get_mut(k) {
+                    *o = true;
+                }
+            }
+        }
+        Layout { paths, drawn, owner, has_threads: !plan.threads.is_empty(), feeds: FeedIndex::new(&plan.moves) }
+    }
+
+    /// The passes drawn from their own points (their motions are not among the drawn ones):
+    /// `(thread, pass)` in plan order.
+    pub fn unmatched(&self, plan: &Plan) -> Vec<(usize, usize)> {
+        let base: Vec<usize> = plan
+            .threads
+            .iter()
+            .scan(0, |acc, t| {
+                let b = *acc;
+                *acc += t.passes.len();
+                Some(b)
+            })
+            .collect();
+        let mut found = vec![false; base.last().map_or(0, |b| b + plan.threads.last().map_or(0, |t| t.passes.len()))];
+        for p in self.paths.iter().filter(|p| p.tail.end <= self.drawn) {
+            found[base[p.thread] + p.pass] = true;
+        }
+        let mut out = Vec::new();
+        for (ti, t) in plan.threads.iter().enumerate() {
+            out.extend((0..t.passes.len()).filter(|pi| !found[base[ti] + pi]).map(|pi| (ti, pi)));
+        }
+        out
+    }
+}
+
+/// The item of a motion that belongs to no pass, and whether it is in the focus.
+pub fn motion_item(m: &Move, has_threads: bool) -> (Item, bool) {
+    let (shape, style, focus) = match m.kind {
+        MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
+        MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
+        MoveKind::Arc => (Shape::Polyline { points: arc_points(m) }, Style::Outline, !has_threads),
+        MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),
+        MoveKind::Runout => (line(world(m.from), world(m.to)), Style::Runout, true),
+    };
+    (Item::new(shape, style).lines([m.line]), focus)
+}
+
+/// The note that only the first `drawn` motions are drawn.
+pub fn capped_note(plan: &Plan, drawn: usize) -> Option<Item> {
+    let last = plan.moves.get(drawn.checked_sub(1)?)?;
+    (drawn < plan.moves.len()).then(|| {
+        Item::new(
+            Shape::Text {
+                at: world(last.to),
+                label: Label::new("moves_capped", drawn.to_string()),
+                anchor: Anchor::Start,
+                dx: 6.0,
+                dy: 6.0,
+            },
+            Style::Note,
+        )
+    })
+}
+
+/// The item of a pass drawn from its own points.
+pub fn unmatched_item(plan: &Plan, ti: usize, pi: usize) -> Item {
+    let p = &plan.threads[ti].passes[pi];
+    Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut)
+        .lines(p.lines.clone())
+        .of(ti, Some(pi))
+        .role(p.role)
+}
+
+/// Grows `focus` by the points of the passes' rapids that stay near it (within
+/// a quarter of its larger side), so the first fit shows the approach too.
+pub fn grow_focus(focus: &mut Rect, rapid_points: impl IntoIterator<Item = Pt>) {
+    let core = *focus;
+    if core.is_empty() {
+        return;
+    }
+    let grow = 0.25 * core.width().max(core.height());
+    let near =
+        |p: &Pt| p[0] >= core.x0 - grow && p[0] <= core.x1 + grow && p[1] >= core.y0 - grow && p[1] <= core.y1 + grow;
+    for p in rapid_points {
+        if near(&p) {
+            focus.add(p);
+        }
+    }
+}
+
+/// The spindle axis across `bounds` (with a margin), and `bounds` grown by it.
+pub fn axis(bounds: &mut Rect) -> Shape {
+    let b = bounds.or_unit();
+    let margin = 0.05 * b.width().max(1.0);
+    bounds.add([b.x0 - margin, 0.0]);
+    bounds.add([b.x1 + margin, 0.0]);
+    line([b.x0 - margin, 0.0], [b.x1 + margin, 0.0])
+}
+
 /// Builds the side section of a plan.
 pub fn side(plan: &Plan) -> Scene {
     let mut scene = Scene::new(ViewKind::Side);
-    let paths = pass_paths(plan);
-    let drawn = plan.moves.len().min(MAX_MOVES_DRAWN);
-    let mut owner = vec![false; drawn];
-    for p in &paths {
-        for k in p.lead_in.start..p.tail.end {
-            if let Some(o) = owner.get_mut(k) {
-                *o = true;
-            }
-        }
-    }
+    let layout = Layout::of(plan);
+    let drawn = layout.drawn;
     let passes: usize = plan.threads.iter().map(|t| t.passes.len()).sum();
     scene.items.reserve(drawn + 2 * passes + 12 * plan.threads.len() + 2);
     // The spindle axis goes first, behind the rest; its ends are set at the end.
     scene.items.push(Item::new(line([0.0, 0.0], [0.0, 0.0]), Style::Axis));
     let mut back: Vec<(Item, bool)> = Vec::new();
     let mut front: Vec<(Item, bool)> = Vec::new();
-    let has_threads = !plan.threads.is_empty();
-    let feeds = FeedIndex::new(&plan.moves);
     for (ti, t) in plan.threads.iter().enumerate() {
-        thread_items(plan, &feeds, ti, t, &mut back, &mut front);
+        thread_items(plan, &layout.feeds, ti, t, &mut back, &mut front);
     }
     for (item, focus) in back {
         scene.push(item, focus);
     }
     // Motions of no pass: the part outline and other tool paths.
     for (k, m) in plan.moves[..drawn].iter().enumerate() {
-        if owner[k] {
-            continue;
+        if !layout.owner[k] {
+            let (item, focus) = motion_item(m, layout.has_threads);
+            scene.push(item, focus);
         }
-        let (shape, style, focus) = match m.kind {
-            MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
-            MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
-            MoveKind::Arc => (Shape::Polyline { points: arc_points(m) }, Style::Outline, !has_threads),
-            MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),
-            MoveKind::Runout => (line(world(m.from), world(m.to)), Style::Runout, true),
-        };
-        scene.push(Item::new(shape, style).lines([m.line]), focus);
     }
-    if drawn < plan.moves.len() {
-        let at = world(plan.moves[drawn - 1].to);
-        front.push((
-            Item::new(
-                Shape::Text {
-                    at,
-                    label: Label::new("moves_capped", drawn.to_string()),
-                    anchor: Anchor::Start,
-                    dx: 6.0,
-                    dy: 6.0,
-                },
-                Style::Note,
-            ),
-            false,
-        ));
+    if let Some(note) = capped_note(plan, drawn) {
+        front.push((note, false));
     }
-    let mut found = vec![false; passes];
-    let base: Vec<usize> = plan
-        .threads
-        .iter()
-        .scan(0, |acc, t| {
-            let b = *acc;
-            *acc += t.passes.len();
-            Some(b)
-        })
-        .collect();
-    for p in &paths {
-        if p.tail.end > drawn {
-            continue;
-        }
-        found[base[p.thread] + p.pass] = true;
+    for p in layout.paths.iter().filter(|p| p.tail.end <= drawn) {
         pass_items(plan, p, &mut scene);
     }
-    for (ti, t) in plan.threads.iter().enumerate() {
-        for (pi, p) in t.passes.iter().enumerate() {
-            if !found[base[ti] + pi] {
-                let item = Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut);
-                scene.push(item.lines(p.lines.clone()).of(ti, Some(pi)).role(p.role), true);
-            }
-        }
+    for (ti, pi) in layout.unmatched(plan) {
+        scene.push(unmatched_item(plan, ti, pi), true);
     }
     for (item, focus) in front {
         scene.push(item, focus);
     }
-    // The passes' rapids join the focus where they stay near the cuts.
-    let core = scene.focus;
-    if !core.is_empty() {
-        let grow = 0.25 * core.width().max(core.height());
-        let near = |p: &Pt| {
-            p[0] >= core.x0 - grow && p[0] <= core.x1 + grow && p[1] >= core.y0 - grow && p[1] <= core.y1 + grow
-        };
-        let focus = &mut scene.focus;
-        for item in scene.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
-            item.each_point(|p| {
-                if near(&p) {
-                    focus.add(p);
-                }
-            });
-        }
+    let mut rapids = Vec::new();
+    for item in scene.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
+        item.each_point(|p| rapids.push(p));
     }
+    grow_focus(&mut scene.focus, rapids);
     // The spindle axis across everything, behind the rest.
-    let b = scene.bounds.or_unit();
-    let margin = 0.05 * b.width().max(1.0);
-    scene.items[0].shape = line([b.x0 - margin, 0.0], [b.x1 + margin, 0.0]);
-    scene.bounds.add([b.x0 - margin, 0.0]);
-    scene.bounds.add([b.x1 + margin, 0.0]);
+    scene.items[0].shape = axis(&mut scene.bounds);
     scene.finish();
     scene
 }
@@ -341,7 +396,7 @@ fn pass_points(p: &Pass) -> Vec<Pt> {
 }
 
 /// The items of one matched pass: its rapids, cut, run-out and screw-in.
-fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
+pub fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
     let pass = &plan.threads[p.thread].passes[p.pass];
     for k in p.lead_in.start..p.tail.end {
         let m = &plan.moves[k];
@@ -369,8 +424,9 @@ fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
     }
 }
 
-/// The band, crest and root lines, δ zones and dimensions of one thread.
-fn thread_items(
+/// The band, crest and root lines, δ zones and dimensions of one thread:
+/// `back` goes behind the motions, `front` (dimensions, texts) over them.
+pub fn thread_items(
     plan: &Plan,
     feeds: &FeedIndex,
     ti: usize,

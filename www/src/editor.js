@@ -29,14 +29,10 @@ const marked = StateField.define({
   provide: (f) => EditorView.decorations.from(f),
 });
 
-/** Runs `f` in a new task (after the current one, and after a frame's commit when called from a frame callback). */
-function afterTask(f) {
-  const ch = new MessageChannel();
-  ch.port1.onmessage = () => {
-    ch.port1.close();
-    f();
-  };
-  ch.port2.postMessage(0);
+/** Runs `f` when the page is idle (after the next frame is out), or within 200 ms. */
+function whenIdle(f) {
+  if (typeof requestIdleCallback === 'function') requestIdleCallback(f, { timeout: 200 });
+  else setTimeout(f, 16);
 }
 
 /**
@@ -117,14 +113,15 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
       show(list);
     },
     /**
-     * Shows the diagnostics once the next frame is out (underlines and gutter
-     * marks are not worth delaying the drawings for), mapped through the
-     * edits made meanwhile; a later call replaces an earlier one not yet shown.
+     * Shows the diagnostics when the page is next idle, after the frame
+     * (underlines and gutter marks are not worth delaying the drawings for),
+     * mapped through the edits made meanwhile; a later call replaces an
+     * earlier one not yet shown.
      */
     setDiagnosticsSoon(list) {
       const scheduled = pending !== null;
       pending = { list, changes: null };
-      if (!scheduled) requestAnimationFrame(() => afterTask(flush));
+      if (!scheduled) whenIdle(flush);
     },
     /** Marks 1-based `lines` (an iterable), replacing the previous marks; the same lines again change nothing. */
     markLines(lines) {

@@ -261,25 +261,24 @@ function renderThreads(r) {
   }
 }
 
-let lastDiags = [];
+let lastDiags = []; // signatures of the entries the list shows
 let lastDiagnostics = [];
+const diagHtml = (d, i) =>
+  `<li data-i="${i}" class="${d.severity}"><span class="pos">${d.line}:${d.column}</span><span class="sev">${t(d.severity)}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`;
 /** Updates the list item by item: an edit usually changes a few entries of many. */
 function renderDiagnostics(list) {
   const ul = $('diagnostics');
-  const html = list.map(
-    (d, i) =>
-      `<li data-i="${i}" class="${d.severity}"><span class="pos">${d.line}:${d.column}</span><span class="sev">${t(d.severity)}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`,
-  );
+  const sigs = list.map((d) => `${d.severity}|${d.line}|${d.column}|${d.code}|${d.message}`);
   if (ul.children.length !== lastDiags.length) lastDiags = [];
-  if (lastDiags.length === 0 || Math.abs(html.length - lastDiags.length) > 200) {
-    ul.innerHTML = html.join('');
+  if (lastDiags.length === 0 || Math.abs(sigs.length - lastDiags.length) > 200) {
+    ul.innerHTML = list.map(diagHtml).join('');
   } else {
-    const n = Math.min(html.length, lastDiags.length);
-    for (let i = 0; i < n; i++) if (html[i] !== lastDiags[i]) ul.children[i].outerHTML = html[i];
-    for (let i = lastDiags.length - 1; i >= html.length; i--) ul.children[i].remove();
-    if (html.length > n) ul.insertAdjacentHTML('beforeend', html.slice(n).join(''));
+    const n = Math.min(sigs.length, lastDiags.length);
+    for (let i = 0; i < n; i++) if (sigs[i] !== lastDiags[i]) ul.children[i].outerHTML = diagHtml(list[i], i);
+    for (let i = lastDiags.length - 1; i >= sigs.length; i--) ul.children[i].remove();
+    if (sigs.length > n) ul.insertAdjacentHTML('beforeend', list.slice(n).map((d, k) => diagHtml(d, n + k)).join(''));
   }
-  lastDiags = html;
+  lastDiags = sigs;
   $('no-diagnostics').hidden = list.length > 0;
 }
 
