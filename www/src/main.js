@@ -498,6 +498,7 @@ async function main() {
   styleNames = core.style_names();
   probe.core = core;
   probe.text = () => (editor ? editor.text() : null);
+  probe.editor = () => editor;
   probe.dialect = () => state.dialect;
   const linked = decodeFragment(location.hash);
   const saved = linked || load();

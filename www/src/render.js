@@ -173,6 +173,8 @@ function labelText(scene, idx, tr) {
   return key ? tr(key, value) : value;
 }
 
+let screen = new Float64Array(1024);
+
 /**
  * Draws `scene` with `painter` under transform `xf`.
  * opts: { tr(key, value), highlight: Set<item index> | null, stale, width, height,
@@ -263,8 +265,9 @@ export function drawScene(painter, scene, xf, opts) {
   const M = 12;
   const right = opts.width + M;
   const bottom = opts.height + M;
-  // Screen points of every path, in one buffer; a batch lists [start, length] spans of it.
-  const buf = new Float64Array(coords.length);
+  // Screen points of every path, in one buffer (kept between draws); a batch lists [start, length] spans of it.
+  if (screen.length < coords.length) screen = new Float64Array(Math.max(coords.length, 2 * screen.length));
+  const buf = screen;
   for (let i = 0; i < count; i++) {
     const o = i * STRIDE;
     const shape = items[o];
@@ -294,7 +297,8 @@ export function drawScene(painter, scene, xf, opts) {
     if (cull && (x1 < -M || y1 < -M || x0 > right || y0 > bottom)) continue;
     const style = styles[i];
     const role = items[o + 9];
-    const key = style === 'area' ? `area:${items[o + 4]}:${items[o + 5]}:${role}` : `${style}:${role}:${shape}`;
+    // A pen per style, role and shape; area fills also per pass (a colour each).
+    const key = style === 'area' ? `area:${items[o + 4]}:${items[o + 5]}:${role}` : (items[o + 1] * 8 + role) * 8 + shape;
     let b = batches.get(key);
     if (!b) {
       b = { first: i, spans: [], seen: new Map() };
