@@ -8,9 +8,13 @@ import { createEditor } from './editor.js';
 import { SceneView } from './view.js';
 import { t, label, setLang, getLang } from './i18n.js';
 import { load, save, encodeFragment, decodeFragment } from './share.js';
-import { num, esc, passTableHead, passTableRows } from './table.js';
+import { num, esc, passTableHead, passTableRowList } from './table.js';
 
 const $ = (id) => document.getElementById(id);
+/** Sets an element's text unless it already reads so (a new text node means a new layout). */
+const setText = (el, text) => {
+  if (el.textContent !== text) el.textContent = text;
+};
 
 /** What the test and the curious can look at: timings and state. */
 const probe = { ready: false, updates: [], frames: [], errors: [], result: null, editorAt: null };
@@ -77,7 +81,7 @@ function replan() {
   const t2 = performance.now();
   probe.updates.push({ plan: t1 - t0, draw: t2 - t1, total: t2 - t0, lines: editor.view.state.doc.lines, ...probe.parts });
   if (probe.updates.length > 200) probe.updates.shift();
-  $('timing').textContent = t('timing', { plan: (t1 - t0).toFixed(1), draw: (t2 - t1).toFixed(1) });
+  setText($('timing'), t('timing', { plan: (t1 - t0).toFixed(1), draw: (t2 - t1).toFixed(1) }));
   if (pendingInput !== null) {
     const input = pendingInput;
     pendingInput = null;
@@ -147,13 +151,13 @@ function apply(r) {
   renderThreads(r);
   renderSettingErrors(r.settingErrors);
   const t2 = performance.now();
-  $('summary').textContent = t('summary', {
+  setText($('summary'), t('summary', {
     threads: r.threads.length,
     moves: r.moves,
     alarms: r.alarms,
     warnings: r.warnings,
     notes: r.notes,
-  });
+  }));
   if (r.alarms > 0 && lastGood) {
     views.side.setScene(lastGood.side, true);
     views.tooth.setScene(lastGood.tooth, true);
@@ -220,7 +224,8 @@ function selectThread(ti, st = 1) {
 
 // ---- lists ----
 
-let lastTable = '';
+let lastTable = ''; // the table head shown
+let lastRows = []; // the rows shown
 let shownThreads = null; // what the selector and the table were last rendered from
 function renderThreads(r) {
   const shown = { threads: r.threads, thread: r.thread, passes: r.passes, start, lang: getLang() };
@@ -252,13 +257,22 @@ function renderThreads(r) {
   }
   $('no-threads').hidden = r.threads.length > 0;
   const head = passTableHead(t);
-  const rows = passTableRows(r.passes, t);
-  const html = head + '|' + rows;
-  if (html !== lastTable) {
-    lastTable = html;
+  if (head !== lastTable) {
+    lastTable = head;
     $('passes').tHead.innerHTML = head;
-    $('passes').tBodies[0].innerHTML = rows;
   }
+  // Row by row: an edit usually changes a row or two.
+  const rows = passTableRowList(r.passes, t);
+  const body = $('passes').tBodies[0];
+  if (body.rows.length !== lastRows.length || Math.abs(rows.length - lastRows.length) > 50) {
+    body.innerHTML = rows.join('');
+  } else {
+    const n = Math.min(rows.length, lastRows.length);
+    for (let i = 0; i < n; i++) if (rows[i] !== lastRows[i]) body.rows[i].outerHTML = rows[i];
+    for (let i = lastRows.length - 1; i >= rows.length; i--) body.rows[i].remove();
+    if (rows.length > n) body.insertAdjacentHTML('beforeend', rows.slice(n).join(''));
+  }
+  lastRows = rows;
 }
 
 let lastDiags = []; // signatures of the entries the list shows
@@ -586,6 +600,7 @@ function finishSetup() {
     buildSettings();
     persist();
     lastTable = '';
+    lastRows = [];
     lastDiags = [];
     renderDiagnostics(lastDiagnostics);
     replan();
