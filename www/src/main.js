@@ -9,6 +9,7 @@ import { SceneView } from './view.js';
 import { t, label, setLang, getLang } from './i18n.js';
 import { load, save, encodeFragment, decodeFragment } from './share.js';
 import { num, esc, passTableHead, passTableRowList } from './table.js';
+import { HeldParts } from './parts.js';
 
 const $ = (id) => document.getElementById(id);
 /** Sets an element's text unless it already reads so (a new text node means a new layout). */
@@ -39,9 +40,7 @@ let pendingInput = null;
 let planQueued = false;
 let hover = null;
 let diagnosticsKey = -1; // key of the diagnostics the editor and the list show
-/** Parts of an update kept here by key: the planner sends a part only when its key changes. */
-const PARTS = ['threads', 'passes', 'side', 'tooth', 'starts'];
-const held = { keys: PARTS.map(() => -1), values: PARTS.map(() => null) };
+const held = new HeldParts(); // parts of the answers, by key: the planner sends a part only when its key changes
 
 function settingsText() {
   const s = state.settings[state.dialect] || {};
@@ -66,11 +65,11 @@ function replan() {
   const t0 = performance.now();
   let r;
   try {
-    r = core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey, new Float64Array(held.keys));
+    r = core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey, held.known());
   } catch (e) {
     // A planner failure (which must not happen) keeps the page and the last drawing.
     diagnosticsKey = -1;
-    held.keys.fill(-1);
+    held.clear();
     probe.errors.push(String(e && e.message ? e.message : e));
     showCrash();
     return;
@@ -117,23 +116,9 @@ function queuePlan() {
   queueMicrotask(replan);
 }
 
-/** Fills the parts `r` did not send (their keys are the held ones) and holds the new ones. */
-function hold(r) {
-  PARTS.forEach((part, i) => {
-    const key = r[`${part}Key`];
-    if (key === undefined) return;
-    if (key === held.keys[i]) {
-      r[part] = held.values[i];
-    } else {
-      held.keys[i] = key;
-      held.values[i] = r[part];
-    }
-  });
-}
-
 function apply(r) {
   const t0 = performance.now();
-  hold(r);
+  held.fill(r);
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
@@ -208,7 +193,7 @@ function selectThread(ti, st = 1) {
     probe.errors.push(String(e && e.message ? e.message : e));
     return;
   }
-  hold(s);
+  held.fill(s);
   result.thread = s.thread;
   result.passes = s.passes;
   result.tooth = s.tooth;

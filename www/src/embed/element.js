@@ -25,6 +25,7 @@ import { textIn, labelIn } from '../i18n.js';
 import { esc, num, passTableHead, passTableRows } from '../table.js';
 import { jsonFragment } from '../fragment.js';
 import { HERE, loadCore, startWhenVisible, forget } from './core.js';
+import { HeldParts } from '../parts.js';
 import { STYLE } from './style.js';
 import { parseViews, parseHeight, parseThread, parseSettings, settingsLines, dedent } from './attrs.js';
 
@@ -48,6 +49,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._thread = null; // chosen in the bar; null: the `thread` attribute
     this._queued = false;
     this._hover = null;
+    this._held = new HeldParts(); // parts of the planner's answers, by key
   }
 
   connectedCallback() {
@@ -238,8 +240,9 @@ export class ScrewcutPreview extends HTMLElement {
     const thread = this._thread ?? parseThread(this.getAttribute('thread'));
     let r;
     try {
-      r = this._core.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1);
+      r = this._held.fill(this._core.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
     } catch (e) {
+      this._held.clear();
       this._fail(e, true);
       return;
     }
