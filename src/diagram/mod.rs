@@ -12,6 +12,7 @@
 //! [`fingerprint`] keys the parts of a plan these read, so that unchanged
 //! scenes need not be built or sent again.
 
+pub mod band;
 pub mod editor;
 pub mod fingerprint;
 pub mod memo;

@@ -1,0 +1,155 @@
+//! Where a thread sits in the side section: its band (crest and root along
+//! the long axis), the turned work it is cut on and the lead-in and run-out
+//! zones δ1/δ2 that follow from them.
+
+use crate::motion::{Move, MoveKind, Point};
+use crate::thread::{Axis, CrestSource, Thread};
+
+use super::scene::Pt;
+
+/// Where a thread sits: its crest and root as functions of the long axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Band {
+    /// Long axis of the thread.
+    pub long: Axis,
+    /// Long-axis start and end of the first pass's cut (radius for X).
+    pub l0: f64,
+    /// See `l0`.
+    pub l1: f64,
+    /// Smallest and largest long-axis position of any pass's cut.
+    pub lo: f64,
+    /// See `lo`.
+    pub hi: f64,
+    /// Crest short-axis position at `l0` (radius for Z threads, Z for face threads).
+    pub crest0: f64,
+    /// Change of the crest from `l0` to `l1` (minus the taper R(i)).
+    pub slope_total: f64,
+    /// Radial (axial for face threads) direction in which the depth grows.
+    pub dir: f64,
+    /// Thread height (deepest pass depth).
+    pub height: f64,
+}
+
+impl Band {
+    /// The band of a thread, from its first pass, crest, taper and height.
+    pub fn of(t: &Thread) -> Option<Band> {
+        let p0 = t.passes.first()?;
+        let dir = if t.depth_dir != 0.0 {
+            t.depth_dir.signum()
+        } else if t.internal {
+            1.0
+        } else {
+            -1.0
+        };
+        let (l0, l1, crest0, slope_total) = match t.long_axis {
+            Axis::Z => (p0.from.z, p0.to.z, t.crest / 2.0, -t.taper),
+            Axis::X => (p0.from.r(), p0.to.r(), t.crest, 0.0),
+        };
+        let long = |p: Point| if t.long_axis == Axis::Z { p.z } else { p.r() };
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in &t.passes {
+            for q in [p.from, p.to] {
+                let l = long(q);
+                if l.is_finite() {
+                    lo = lo.min(l);
+                    hi = hi.max(l);
+                }
+            }
+        }
+        let b = Band { long: t.long_axis, l0, l1, lo, hi, crest0, slope_total, dir, height: t.height };
+        (l0.is_finite() && l1.is_finite() && crest0.is_finite() && lo <= hi).then_some(b)
+    }
+
+    /// Crest position at long-axis position `l`.
+    pub fn crest(&self, l: f64) -> f64 {
+        let span = self.l1 - self.l0;
+        if span.abs() < 1e-12 { self.crest0 } else { self.crest0 + self.slope_total * (l - self.l0) / span }
+    }
+
+    /// Root position (deepest pass) at `l`.
+    pub fn root(&self, l: f64) -> f64 {
+        self.crest(l) + self.dir * self.height
+    }
+
+    /// World point of a (long, short) pair.
+    pub fn pt(&self, l: f64, s: f64) -> Pt {
+        match self.long {
+            Axis::Z => [l, s],
+            Axis::X => [s, l],
+        }
+    }
+
+    /// Direction of cutting along the long axis (+1 or −1).
+    pub fn sense(&self) -> f64 {
+        if self.l1 >= self.l0 { 1.0 } else { -1.0 }
+    }
+}
+
+/// The work's extent along the thread: the turned moves that lie on the
+/// crest line and overlap the cut. `None` when the crest is not turned.
+pub fn work_extent(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)> {
+    work_extent_in(t, band, moves, &FeedIndex::new(moves))
+}
+
+/// The feed motions of a plan by their start radius, so that the work of
+/// each straight thread is found among the motions on its crest only.
+pub struct FeedIndex {
+    /// `(start radius, motion index)` of the feed motions with a finite start radius, by radius.
+    by_radius: Vec<(f64, usize)>,
+}
+
+impl FeedIndex {
+    /// Indexes the feed motions of `moves`.
+    pub fn new(moves: &[Move]) -> FeedIndex {
+        let mut by_radius: Vec<(f64, usize)> = moves
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| m.kind == MoveKind::Feed && m.from.r().is_finite())
+            .map(|(k, m)| (m.from.r(), k))
+            .collect();
+        by_radius.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        FeedIndex { by_radius }
+    }
+}
+
+/// [`work_extent`] with the feed motions indexed. A straight thread's crest
+/// is one radius, so only the motions starting within the tolerance of it
+/// are tested; a tapered one tests every feed motion.
+pub fn work_extent_in(t: &Thread, band: &Band, moves: &[Move], index: &FeedIndex) -> Option<(f64, f64)> {
+    if t.crest_source != CrestSource::Outline || band.long != Axis::Z {
+        return None;
+    }
+    let on_crest = |p: Point| {
+        let c = band.crest(p.z);
+        (p.r() - c).abs() <= 1e-4 + 1e-6 * c.abs()
+    };
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut take = |m: &Move| {
+        let (a, b) = (m.from.z.min(m.to.z), m.from.z.max(m.to.z));
+        if b - a > 1e-9 && on_crest(m.from) && on_crest(m.to) && b > band.lo && a < band.hi {
+            lo = lo.min(a);
+            hi = hi.max(b);
+        }
+    };
+    if band.slope_total == 0.0 {
+        // crest(z) is crest0 (or NaN, never on the crest): a motion on it starts within tol of crest0.
+        let tol = 1e-4 + 1e-6 * band.crest0.abs();
+        let list = &index.by_radius;
+        let first = list.partition_point(|(r, _)| *r < band.crest0 - tol);
+        for &(r, k) in &list[first..] {
+            if r > band.crest0 + tol {
+                break;
+            }
+            take(&moves[k]);
+        }
+    } else {
+        moves.iter().filter(|m| m.kind == MoveKind::Feed).for_each(take);
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// Lead-in δ1 and run-out δ2 of a thread on work spanning `lo..hi`.
+pub fn deltas(band: &Band, work: (f64, f64)) -> (f64, f64) {
+    let (lo, hi) = work;
+    if band.sense() < 0.0 { (band.l0 - hi, lo - band.l1) } else { (lo - band.l0, band.l1 - hi) }
+}
