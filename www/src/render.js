@@ -173,7 +173,19 @@ function labelText(scene, idx, tr) {
   return key ? tr(key, value) : value;
 }
 
-let screen = new Float64Array(1024);
+/** Buffers kept between draws: screen points, the table of kept paths (cleared) and each path's batch. */
+const kept = { screen: new Float64Array(1024), slots: new Int32Array(1024), batchOf: new Int32Array(512) };
+
+/** The kept buffers, grown to `coords` numbers and `count` items, the table cleared. */
+function scratch(coords, count) {
+  if (kept.screen.length < coords) kept.screen = new Float64Array(Math.max(coords, 2 * kept.screen.length));
+  if (kept.batchOf.length < count) kept.batchOf = new Int32Array(Math.max(count, 2 * kept.batchOf.length));
+  let size = 1024;
+  while (size < 2 * count) size *= 2;
+  if (kept.slots.length < size) kept.slots = new Int32Array(size);
+  else kept.slots.fill(0, 0, size);
+  return { screen: kept.screen, slots: size === kept.slots.length ? kept.slots : kept.slots.subarray(0, size), batchOf: kept.batchOf };
+}
 
 /**
  * Draws `scene` with `painter` under transform `xf`.
@@ -265,9 +277,12 @@ export function drawScene(painter, scene, xf, opts) {
   const M = 12;
   const right = opts.width + M;
   const bottom = opts.height + M;
-  // Screen points of every path, in one buffer (kept between draws); a batch lists [start, length] spans of it.
-  if (screen.length < coords.length) screen = new Float64Array(Math.max(coords.length, 2 * screen.length));
-  const buf = screen;
+  // Screen points of every path, in one buffer; a batch lists [start, length] spans of it.
+  // Kept paths are found again through an open-addressing table of item indices.
+  const tables = scratch(coords.length, count);
+  const buf = tables.screen;
+  const { slots, batchOf } = tables;
+  const mask = slots.length - 1;
   for (let i = 0; i < count; i++) {
     const o = i * STRIDE;
     const shape = items[o];
@@ -301,15 +316,23 @@ export function drawScene(painter, scene, xf, opts) {
     const key = style === 'area' ? `area:${items[o + 4]}:${items[o + 5]}:${role}` : (items[o + 1] * 8 + role) * 8 + shape;
     let b = batches.get(key);
     if (!b) {
-      b = { first: i, spans: [], seen: new Map() };
+      b = { id: order.length, first: i, spans: [] };
       batches.set(key, b);
       order.push(b);
     }
-    // A repeat has the same hash and the same points to 1/8 px; the hash only finds candidates.
-    // seen: hash → the span index of the one path with it, or −1 when several have it.
-    const same = b.seen.get(h);
-    if (same !== undefined && (same >= 0 ? samePath(buf, b.spans, same, c, n) : anySame(buf, b.spans, c, n))) continue;
-    b.seen.set(h, same === undefined ? b.spans.length : -1);
+    batchOf[i] = b.id;
+    // A repeat is a path of the same batch with the same points to 1/8 px; the hash finds candidates.
+    let slot = (h ^ Math.imul(b.id + 1, 0x9e3779b1)) & mask;
+    let repeat = false;
+    for (let j = slots[slot]; j !== 0; slot = (slot + 1) & mask, j = slots[slot]) {
+      const q = (j - 1) * STRIDE;
+      if (batchOf[j - 1] === b.id && items[q + 3] === n && samePoints(buf, items[q + 2], c, n)) {
+        repeat = true;
+        break;
+      }
+    }
+    if (repeat) continue;
+    slots[slot] = i + 1;
     b.spans.push(c, n);
   }
   for (const b of order) {
@@ -327,18 +350,10 @@ export function drawScene(painter, scene, xf, opts) {
   painter.end();
 }
 
-/** Whether the path at span index `at` of `spans` has the `n` numbers at `c` of `buf`, to 1/8 px. */
-function samePath(buf, spans, at, c, n) {
-  const s = spans[at];
-  if (spans[at + 1] !== n) return false;
-  for (let k = 0; k < n; k++) if (Math.round(buf[s + k] * 8) !== Math.round(buf[c + k] * 8)) return false;
+/** Whether the `n` numbers at `a` and at `c` of `buf` agree to 1/8 px. */
+function samePoints(buf, a, c, n) {
+  for (let k = 0; k < n; k++) if (Math.round(buf[a + k] * 8) !== Math.round(buf[c + k] * 8)) return false;
   return true;
-}
-
-/** Whether any path of `spans` has the `n` numbers at `c` of `buf`. */
-function anySame(buf, spans, c, n) {
-  for (let j = 0; j < spans.length; j += 2) if (samePath(buf, spans, j, c, n)) return true;
-  return false;
 }
 
 function arrow(p, x0, y0, x1, y1, pen) {
