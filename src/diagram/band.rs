@@ -2,9 +2,14 @@
 //! the long axis), the turned work it is cut on and the lead-in and run-out
 //! zones δ1/δ2 that follow from them.
 
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::hash::BuildHasherDefault;
+
 use crate::motion::{Move, MoveKind, Point};
 use crate::thread::{Axis, CrestSource, Thread};
 
+use super::fingerprint::KeyHasher;
 use super::scene::Pt;
 
 /// Where a thread sits: its crest and root as functions of the long axis.
@@ -92,11 +97,18 @@ pub fn work_extent(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)
 }
 
 /// The feed motions of a plan by their start radius, so that the work of
-/// each straight thread is found among the motions on its crest only.
+/// each straight thread is found among the motions on its crest only; and the
+/// work found so far, by crest and extent (threads cut again on one diameter
+/// over one length, as a program often has, look once).
 pub struct FeedIndex {
     /// `(start radius, motion index)` of the feed motions with a finite start radius, by radius.
     by_radius: Vec<(f64, usize)>,
+    /// Work of straight threads by the bits of `(crest0, lo, hi)`.
+    found: RefCell<WorkByBand>,
 }
+
+/// Work extents by the bits of `(crest0, lo, hi)`.
+type WorkByBand = HashMap<[u64; 3], Option<(f64, f64)>, BuildHasherDefault<KeyHasher>>;
 
 impl FeedIndex {
     /// Indexes the feed motions of `moves`.
@@ -108,7 +120,7 @@ impl FeedIndex {
             .map(|(k, m)| (m.from.r(), k))
             .collect();
         by_radius.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        FeedIndex { by_radius }
+        FeedIndex { by_radius, found: RefCell::default() }
     }
 }
 
@@ -133,6 +145,10 @@ pub fn work_extent_in(t: &Thread, band: &Band, moves: &[Move], index: &FeedIndex
     };
     if band.slope_total == 0.0 {
         // crest(z) is crest0 (or NaN, never on the crest): a motion on it starts within tol of crest0.
+        let key = [band.crest0.to_bits(), band.lo.to_bits(), band.hi.to_bits()];
+        if let Some(found) = index.found.borrow().get(&key) {
+            return *found;
+        }
         let tol = 1e-4 + 1e-6 * band.crest0.abs();
         let list = &index.by_radius;
         let first = list.partition_point(|(r, _)| *r < band.crest0 - tol);
@@ -142,6 +158,9 @@ pub fn work_extent_in(t: &Thread, band: &Band, moves: &[Move], index: &FeedIndex
             }
             take(&moves[k]);
         }
+        let found = (lo <= hi).then_some((lo, hi));
+        index.found.borrow_mut().insert(key, found);
+        return found;
     } else {
         moves.iter().filter(|m| m.kind == MoveKind::Feed).for_each(take);
     }

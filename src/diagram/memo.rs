@@ -238,14 +238,14 @@ fn assemble(pieces: &[&Chunk]) -> Packed {
     let mut labels = 0u32;
     for c in pieces {
         let (co, lo) = (out.coords.len() as u32, out.lines.len() as u32);
-        for r in c.packed.items.chunks_exact(STRIDE) {
-            let mut r: [u32; STRIDE] = r.try_into().unwrap_or([0; STRIDE]);
+        let first = out.items.len();
+        out.items.extend_from_slice(&c.packed.items);
+        for r in out.items[first..].chunks_exact_mut(STRIDE) {
             r[2] += co;
             r[6] += lo;
             if r[8] > 0 {
                 r[8] += labels;
             }
-            out.items.extend_from_slice(&r);
         }
         out.coords.extend_from_slice(&c.packed.coords);
         out.lines.extend_from_slice(&c.packed.lines);
