@@ -443,8 +443,18 @@ impl Interp {
 
     /// Checks that `b` has only words from `allowed` (plus G/M/S/T/F);
     /// reports each other word and returns false if there was one.
+    #[inline(always)]
     pub fn check_words(&mut self, b: &Block, allowed: &[u8], what: &str) -> bool {
+        // Inlined, the mask of a literal `allowed` folds to a constant.
         let mask = crate::dialect::letters(ALWAYS) | crate::dialect::letters(allowed);
+        if b.words.iter().all(|w| mask & (1 << (w.letter - b'A')) != 0) {
+            return true;
+        }
+        self.report_words(b, mask, what)
+    }
+
+    #[cold]
+    fn report_words(&mut self, b: &Block, mask: u32, what: &str) -> bool {
         let mut ok = true;
         for w in &b.words {
             if mask & (1 << (w.letter - b'A')) == 0 {

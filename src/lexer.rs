@@ -569,10 +569,10 @@ const POW10: [f64; 23] = [
 struct NumAcc {
     neg: bool,
     mantissa: u64,
-    int_digits: usize,
-    frac: usize,
-    point: bool,
-    overflow: bool,
+    /// Digits read, before and after the point.
+    digits: usize,
+    /// `digits` when the point was read.
+    point_at: Option<usize>,
     malformed: bool,
 }
 
@@ -582,19 +582,12 @@ impl NumAcc {
     fn push(&mut self, c: u8) -> bool {
         let d = c.wrapping_sub(b'0');
         if d < 10 {
-            if self.mantissa < 100_000_000_000_000_000 {
-                self.mantissa = self.mantissa * 10 + d as u64;
-            } else {
-                self.overflow = true;
-            }
-            if self.point {
-                self.frac += 1;
-            } else {
-                self.int_digits += 1;
-            }
+            // Wraps only past 19 digits, which `finish` refuses anyway.
+            self.mantissa = self.mantissa.wrapping_mul(10).wrapping_add(d as u64);
+            self.digits += 1;
             true
-        } else if c == b'.' && !self.point {
-            self.point = true;
+        } else if c == b'.' && self.point_at.is_none() {
+            self.point_at = Some(self.digits);
             true
         } else {
             false
@@ -604,15 +597,17 @@ impl NumAcc {
     /// The number, or why it is not one. Significant digits exclude leading
     /// zeros and trailing zeros of the fraction.
     fn finish(self, max_digits: usize) -> Result<Number, NumError> {
-        let digits = self.int_digits + self.frac;
+        let digits = self.digits;
         if self.malformed || digits == 0 {
             return Err(NumError::Malformed);
         }
-        if self.overflow {
-            return Err(NumError::TooManyDigits(digits));
-        }
+        let int_digits = self.point_at.unwrap_or(digits);
+        let frac = digits - int_digits;
         if digits > max_digits {
-            let (mut m, mut f) = (self.mantissa, self.frac);
+            if digits > 19 {
+                return Err(NumError::TooManyDigits(digits));
+            }
+            let (mut m, mut f) = (self.mantissa, frac);
             while f > 0 && m != 0 && m % 10 == 0 {
                 m /= 10;
                 f -= 1;
@@ -622,7 +617,6 @@ impl NumAcc {
                 return Err(NumError::TooManyDigits(sig));
             }
         }
-        let frac = self.frac;
         let mut value = if frac < POW10.len() {
             self.mantissa as f64 / POW10[frac]
         } else {
@@ -636,8 +630,8 @@ impl NumAcc {
         }
         Ok(Number {
             value,
-            has_point: self.point,
-            int_digits: self.int_digits.min(255) as u8,
+            has_point: self.point_at.is_some(),
+            int_digits: int_digits.min(255) as u8,
             frac_digits: frac.min(255) as u8,
         })
     }

@@ -35,6 +35,21 @@ pub fn close(a: f64, b: f64) -> bool {
 
 /// Formats a length for messages: up to four decimals, trailing zeros trimmed.
 pub fn fmt(v: f64) -> String {
+    // Integer arithmetic for the usual range: exact-decimal float formatting is slow.
+    let r = (v * 1e4).round();
+    if r.abs() < 9.0e15 {
+        let r = r as i64;
+        let (int, frac) = ((r / 10000).unsigned_abs(), (r % 10000).unsigned_abs());
+        let sign = if r < 0 { "-" } else { "" };
+        if frac == 0 {
+            return format!("{sign}{int}");
+        }
+        let mut f = format!("{frac:04}");
+        while f.ends_with('0') {
+            f.pop();
+        }
+        return format!("{sign}{int}.{f}");
+    }
     let s = format!("{:.4}", round_out(v));
     let s = s.trim_end_matches('0').trim_end_matches('.');
     if s == "-0" { "0".into() } else { s.to_string() }
@@ -51,5 +66,11 @@ mod tests {
         assert_eq!(fmt(27.42860), "27.4286");
         assert_eq!(fmt(2.0), "2");
         assert_eq!(fmt(-0.00001), "0");
+        assert_eq!(fmt(-2.5), "-2.5");
+        assert_eq!(fmt(-0.25), "-0.25");
+        assert_eq!(fmt(1090.0), "1090");
+        assert_eq!(fmt(0.0013), "0.0013");
+        assert_eq!(fmt(48.85714), "48.8571");
+        assert_eq!(fmt(1e20), "100000000000000000000");
     }
 }
