@@ -24,7 +24,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use crate::diagram::fingerprint::{PlanKeys, combine, js_key, key_of};
-use crate::diagram::memo::SideMemo;
+use crate::diagram::memo::{SideMemo, SidePieces};
 use crate::diagram::{self, Packed, Scene};
 use crate::dialect::Dialect;
 use crate::plan::Plan;
@@ -261,6 +261,28 @@ fn packed_to_js(p: &Packed) -> JsValue {
     o.into()
 }
 
+/// The side section as pieces (see [`SidePieces`]): `{view, pieces: true,
+/// bounds, focus, headCoords, headItems, order, keys, coords, items, lines,
+/// labels, ends}`, keys as JS numbers, `ends` five numbers per sent piece.
+fn pieces_to_js(p: &SidePieces) -> JsValue {
+    let o = Object::new();
+    let keys = |k: &[u64]| Float64Array::from(&k.iter().map(|k| js_key(*k)).collect::<Vec<f64>>()[..]);
+    set(&o, "view", &JsValue::from_str("side"));
+    set(&o, "pieces", &JsValue::TRUE);
+    set(&o, "bounds", &Float64Array::from(&p.head.bounds[..]).into());
+    set(&o, "focus", &Float64Array::from(&p.head.focus[..]).into());
+    set(&o, "headCoords", &Float64Array::from(&p.head.coords[..]).into());
+    set(&o, "headItems", &Uint32Array::from(&p.head.items[..]).into());
+    set(&o, "order", &keys(&p.order).into());
+    set(&o, "keys", &keys(&p.keys).into());
+    set(&o, "coords", &Float64Array::from(&p.sent.coords[..]).into());
+    set(&o, "items", &Uint32Array::from(&p.sent.items[..]).into());
+    set(&o, "lines", &Uint32Array::from(&p.sent.lines[..]).into());
+    set(&o, "labels", &JsValue::from_str(&p.sent.labels));
+    set(&o, "ends", &Uint32Array::from(&p.ends.concat()[..]).into());
+    o.into()
+}
+
 fn scene_js(scene: Option<Scene>) -> JsValue {
     scene.map_or(JsValue::NULL, |s| packed_to_js(&diagram::pack(&s)))
 }
@@ -366,8 +388,10 @@ fn thread_parts(
 /// `known_diagnostics` (the key of the list the caller already has); so is
 /// each of `threads`, `passes`, `side`, `tooth` and `starts` when its key is
 /// in `known` (`[threads, passes, side, tooth, starts]` keys; omitted: none
-/// known). `thread` and `start` choose the thread (−1: none) and start drawn
-/// in the tooth and starts views. `good` is true when the plan draws
+/// known). With `known` given, `side` comes as pieces (see `pieces_to_js`):
+/// only those the caller lacks when it holds the pieces of the last side
+/// section answered, else all; without it, as one packed scene. `thread` and
+/// `start` choose the thread (−1: none) and start drawn in the tooth and starts views. `good` is true when the plan draws
 /// something (threads or motions) and has no alarm.
 ///
 /// The program is re-read only from the last planner snapshot before the
@@ -435,7 +459,13 @@ fn answer(
     keyed(&o, known, Part::Threads, keys.all_threads, || {
         to_js(&plan.threads.iter().map(ThreadSummary::of).collect::<Vec<_>>())
     })?;
-    keyed(&o, known, Part::Side, keys.side, || Ok(packed_to_js(&memo.side(plan, &keys.threads))))?;
+    keyed(&o, known, Part::Side, keys.side, || {
+        if known.0.is_empty() {
+            return Ok(packed_to_js(&memo.side(plan, &keys.threads)));
+        }
+        let holds = memo.last().map(js_key) == known.0.get(Part::Side as usize).copied();
+        Ok(pieces_to_js(&memo.pieces(plan, &keys.threads, keys.side, holds)))
+    })?;
     thread_parts(&o, plan, &keys, pick(plan, thread), start, known)?;
     Ok(o)
 }

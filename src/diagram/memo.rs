@@ -5,7 +5,7 @@
 //! thread rebuilds that thread's pieces and the spindle axis only.
 
 use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
+use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use crate::motion::Move;
 use crate::plan::Plan;
@@ -59,7 +59,8 @@ impl Chunk {
 struct Pieces {
     old: ByKey,
     kept: ByKey,
-    built: usize,
+    /// Keys of the pieces built in this call.
+    built: Vec<u64>,
     reused: usize,
 }
 
@@ -73,7 +74,7 @@ impl Pieces {
                     c
                 }
                 None => {
-                    self.built += 1;
+                    self.built.push(key);
                     make()
                 }
             };
@@ -87,7 +88,7 @@ impl Pieces {
         let has = |k: &u64| self.kept.contains_key(k) || self.old.contains_key(k);
         if !(has(&keys.0) && has(&keys.1)) {
             let (a, b) = make();
-            self.built += 2;
+            self.built.extend([keys.0, keys.1]);
             self.old.remove(&keys.0);
             self.old.remove(&keys.1);
             self.kept.insert(keys.0, a);
@@ -96,6 +97,40 @@ impl Pieces {
         }
         (self.take(keys.0, || Chunk::of([])), self.take(keys.1, || Chunk::of([])))
     }
+
+    /// Keeps a piece built anyway (it is cheap and rare), under the key of its content.
+    fn put(&mut self, chunk: Chunk) -> u64 {
+        let key = chunk_key(&chunk.packed);
+        self.take(key, || chunk)
+    }
+}
+
+/// The key of a packed piece's content.
+fn chunk_key(p: &Packed) -> u64 {
+    let mut h = KeyHasher::default();
+    p.coords.iter().for_each(|c| h.write_u64(c.to_bits()));
+    p.items.hash(&mut h);
+    p.lines.hash(&mut h);
+    p.labels.hash(&mut h);
+    h.finish()
+}
+
+/// The side section as pieces: what the caller needs to put it together from
+/// the pieces it holds of the last answer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SidePieces {
+    /// The spindle axis alone, with the scene's bounds and focus.
+    pub head: Packed,
+    /// Keys of the pieces in drawing order (after the axis).
+    pub order: Vec<u64>,
+    /// Keys of the pieces sent, in the order of `sent`'s parts.
+    pub keys: Vec<u64>,
+    /// The pieces sent, one after the other; each item's offsets and label
+    /// number are its piece's own.
+    pub sent: Packed,
+    /// Per sent piece, where it ends in `sent`: coordinates, items (numbers),
+    /// lines, label text (UTF-16 units, as JavaScript counts) and labels.
+    pub ends: Vec<[u32; 5]>,
 }
 
 /// Pieces of the last side section, by key; and how many of the last call's pieces were built.
@@ -104,6 +139,15 @@ pub struct SideMemo {
     chunks: ByKey,
     built: usize,
     reused: usize,
+    /// The key of the last section answered as pieces ([`SideMemo::pieces`]).
+    last: Option<u64>,
+}
+
+/// One call's pieces: the head and the order, and which were built.
+struct Built {
+    head: Packed,
+    order: Vec<u64>,
+    built: Vec<u64>,
 }
 
 /// What a piece is, mixed into its key.
@@ -130,7 +174,57 @@ impl SideMemo {
     /// `thread_keys` ([`super::fingerprint::thread_key`]); pieces are reused
     /// from the last call where their keys match.
     pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Packed {
-        let mut pieces = Pieces { old: std::mem::take(&mut self.chunks), kept: ByKey::default(), built: 0, reused: 0 };
+        let b = self.build(plan, thread_keys);
+        self.last = None;
+        let pieces: Vec<&Chunk> = b.order.iter().map(|k| &self.chunks[k]).collect();
+        join(b.head, &pieces)
+    }
+
+    /// The key of the last section answered as pieces, if the last answer was pieces.
+    pub fn last(&self) -> Option<u64> {
+        self.last
+    }
+
+    /// The side section of `plan` (key `side_key`) as pieces: when the
+    /// caller `holds` the pieces of [`SideMemo::last`], only the pieces it
+    /// lacks are sent, else every piece.
+    pub fn pieces(&mut self, plan: &Plan, thread_keys: &[u64], side_key: u64, holds: bool) -> SidePieces {
+        let holds = holds && self.last.is_some();
+        let b = self.build(plan, thread_keys);
+        self.last = Some(side_key);
+        let mut keys = if holds { b.built } else { b.order.clone() };
+        let mut seen =
+            std::collections::HashSet::with_capacity_and_hasher(keys.len(), BuildHasherDefault::<KeyHasher>::default());
+        keys.retain(|k| seen.insert(*k));
+        let mut sent = Packed {
+            view: ViewKind::Side,
+            bounds: [0.0; 4],
+            focus: [0.0; 4],
+            coords: Vec::new(),
+            items: Vec::new(),
+            lines: Vec::new(),
+            labels: String::new(),
+        };
+        let mut ends = Vec::with_capacity(keys.len());
+        let (mut labels, mut units) = (0u32, 0u32);
+        for k in &keys {
+            let c = &self.chunks[k];
+            sent.coords.extend_from_slice(&c.packed.coords);
+            sent.items.extend_from_slice(&c.packed.items);
+            sent.lines.extend_from_slice(&c.packed.lines);
+            sent.labels.push_str(&c.packed.labels);
+            labels += c.labels;
+            units += c.packed.labels.encode_utf16().count() as u32;
+            let len = |v: &[_]| v.len() as u32;
+            ends.push([sent.coords.len() as u32, len(&sent.items), len(&sent.lines), units, labels]);
+        }
+        SidePieces { head: b.head, order: b.order, keys, sent, ends }
+    }
+
+    /// Builds or reuses every piece of `plan`'s side section.
+    fn build(&mut self, plan: &Plan, thread_keys: &[u64]) -> Built {
+        let mut pieces =
+            Pieces { old: std::mem::take(&mut self.chunks), kept: ByKey::default(), built: Vec::new(), reused: 0 };
         let layout = Layout::of(plan);
         let thread_key = |ti: usize| thread_keys.get(ti).copied().unwrap_or(0);
         let mut order: Vec<u64> = Vec::new();
@@ -192,22 +286,25 @@ impl SideMemo {
             }));
             i = j;
         }
-        // Pieces never kept: the passes drawn from their own points, and the note.
+        // The passes drawn from their own points, and the note: built anyway.
         let unmatched: Vec<(Item, bool)> =
             layout.unmatched(plan).into_iter().map(|(ti, pi)| (unmatched_item(plan, ti, pi), true)).collect();
-        let unmatched = (!unmatched.is_empty()).then(|| Chunk::of(unmatched));
-        let note = capped_note(plan, drawn).map(|n| Chunk::of([(n, false)]));
-        self.built = pieces.built + usize::from(unmatched.is_some()) + usize::from(note.is_some());
-        self.reused = pieces.reused;
+        if !unmatched.is_empty() {
+            order.push(pieces.put(Chunk::of(unmatched)));
+        }
         // Scene order: axis, bands, other motions, passes, unmatched passes, dimensions, note.
-        let kept = &pieces.kept;
-        let mut all: Vec<&Chunk> = order.iter().map(|k| &kept[k]).collect();
-        all.extend(unmatched.iter());
-        all.extend(fronts.iter().map(|k| &kept[k]));
-        all.extend(note.iter());
-        let out = assemble(&all);
+        order.extend(fronts);
+        if let Some(n) = capped_note(plan, drawn) {
+            order.push(pieces.put(Chunk::of([(n, false)])));
+        }
+        self.built = pieces.built.len();
+        self.reused = pieces.reused;
+        let head = {
+            let chunks: Vec<&Chunk> = order.iter().map(|k| &pieces.kept[k]).collect();
+            head(&chunks)
+        };
         self.chunks = pieces.kept;
-        out
+        Built { head, order, built: pieces.built }
     }
 }
 
@@ -216,8 +313,8 @@ fn motions<'a>(moves: &'a [Move], owner: &'a [bool], has_threads: bool) -> impl 
     moves.iter().zip(owner).filter(|(_, o)| !**o).map(move |(m, _)| motion_item(m, has_threads))
 }
 
-/// The whole scene from its pieces, the spindle axis first.
-fn assemble(pieces: &[&Chunk]) -> Packed {
+/// The spindle axis with the bounds and focus of the scene of `pieces`.
+fn head(pieces: &[&Chunk]) -> Packed {
     let (mut bounds, mut focus) = (Rect::EMPTY, Rect::EMPTY);
     for c in pieces {
         bounds.union(&c.bounds);
@@ -230,7 +327,12 @@ fn assemble(pieces: &[&Chunk]) -> Packed {
     head.bounds = bounds;
     head.focus = focus;
     head.finish();
-    let mut out = pack(&head);
+    pack(&head)
+}
+
+/// The whole scene: the head (the axis), then the pieces.
+fn join(head: Packed, pieces: &[&Chunk]) -> Packed {
+    let mut out = head;
     let n: usize = pieces.iter().map(|c| c.packed.items.len()).sum();
     out.items.reserve(n);
     out.coords.reserve(pieces.iter().map(|c| c.packed.coords.len()).sum());
@@ -287,6 +389,100 @@ mod tests {
         let got = memo.side(&plan, &keys.threads);
         assert_eq!(got, pack(&side(&plan)), "{text}");
         memo.counts()
+    }
+
+    /// What a caller holds of the pieces, and how it puts a section together (as www/src/parts.js does).
+    #[derive(Default)]
+    struct Holder {
+        key: Option<u64>,
+        pieces: HashMap<u64, (Packed, u32)>,
+    }
+
+    impl Holder {
+        /// The whole section from an answer; returns it and the number of pieces sent.
+        fn take(&mut self, a: SidePieces, side_key: u64) -> (Packed, usize) {
+            let mut fresh = HashMap::new();
+            let mut start = [0u32; 5];
+            let labels: Vec<u16> = a.sent.labels.encode_utf16().collect();
+            for (k, end) in a.keys.iter().zip(&a.ends) {
+                let r = |i: usize| start[i] as usize..end[i] as usize;
+                let piece = Packed {
+                    view: ViewKind::Side,
+                    bounds: [0.0; 4],
+                    focus: [0.0; 4],
+                    coords: a.sent.coords[r(0)].to_vec(),
+                    items: a.sent.items[r(1)].to_vec(),
+                    lines: a.sent.lines[r(2)].to_vec(),
+                    labels: String::from_utf16(&labels[r(3)]).unwrap(),
+                };
+                fresh.insert(*k, (piece, end[4] - start[4]));
+                start = *end;
+            }
+            let mut out = a.head;
+            let mut count = 0;
+            let mut kept = HashMap::new();
+            for k in &a.order {
+                let (p, n) = fresh.get(k).or_else(|| self.pieces.get(k)).cloned().expect("a piece held or sent");
+                let (co, lo) = (out.coords.len() as u32, out.lines.len() as u32);
+                for r in p.items.chunks_exact(STRIDE) {
+                    out.items.extend([r[0], r[1], r[2] + co, r[3], r[4], r[5], r[6] + lo, r[7]]);
+                    out.items.extend([if r[8] > 0 { r[8] + count } else { 0 }, r[9]]);
+                }
+                out.coords.extend_from_slice(&p.coords);
+                out.lines.extend_from_slice(&p.lines);
+                if n > 0 {
+                    if count > 0 {
+                        out.labels.push(RECORD_SEP);
+                    }
+                    out.labels.push_str(&p.labels);
+                    count += n;
+                }
+                kept.insert(*k, (p, n));
+            }
+            self.pieces = kept;
+            self.key = Some(side_key);
+            (out, a.keys.len())
+        }
+    }
+
+    /// Plans `text` and checks that the pieces `holder` gets make the whole section; the number of pieces sent.
+    fn check_pieces(memo: &mut SideMemo, holder: &mut Holder, text: &str, s: &Settings) -> usize {
+        let plan = crate::plan(text, s);
+        let keys = PlanKeys::of(&plan);
+        let holds = holder.key.is_some() && holder.key == memo.last();
+        let (got, sent) = holder.take(memo.pieces(&plan, &keys.threads, keys.side, holds), keys.side);
+        assert_eq!(got, pack(&side(&plan)), "{text}");
+        sent
+    }
+
+    #[test]
+    fn pieces_sent_and_held_make_the_whole_scene() {
+        let s = Settings::new(Dialect::Gsk980tdc);
+        let (mut memo, mut holder) = (SideMemo::new(), Holder::default());
+        let base = program(40);
+        let all = check_pieces(&mut memo, &mut holder, &base, &s);
+        assert!(all > 80, "{all}");
+        let lines: Vec<&str> = base.lines().collect();
+        let n = lines.len();
+        let edited = lines.iter().enumerate().map(|(i, l)| if i == n - 9 { format!("{l}1") } else { l.to_string() });
+        let edited: String = edited.map(|l| l + "\n").collect();
+        assert_eq!(check_pieces(&mut memo, &mut holder, &edited, &s), 3, "one thread's pieces");
+        for text in [
+            base.replacen("X29.1", "X29.1\nG00 X80", 1),
+            base[..base.len() / 2].to_string(),
+            String::new(),
+            base.clone(),
+        ] {
+            check_pieces(&mut memo, &mut holder, &text, &s);
+        }
+        // Another caller's answer in between: the first caller gets every piece again.
+        let mut other = Holder::default();
+        check_pieces(&mut memo, &mut other, include_str!("../../examples/o1006.nc"), &s);
+        assert_eq!(check_pieces(&mut memo, &mut holder, &edited, &s), all);
+        // A full section answered in between: the same.
+        memo.side(&crate::plan(&base, &s), &PlanKeys::of(&crate::plan(&base, &s)).threads);
+        assert_eq!(memo.last(), None);
+        assert_eq!(check_pieces(&mut memo, &mut holder, &base, &s), all);
     }
 
     #[test]

@@ -282,6 +282,14 @@ try {
     const px = await inked(id);
     check(`… and the ${id} canvas is drawn`, px.n > 300, `${px.n} pixels`);
   }
+  // The side section the page put together from kept and new pieces is the one a full build gives.
+  const same = await page.evaluate(() => {
+    const shown = window.__screwcut.views.side.scene;
+    const full = window.__screwcut.core.side_scene_as('packed');
+    const eq = (a, b) => a.length === b.length && a.every((v, i) => Object.is(v, b[i]));
+    return ['coords', 'items', 'lines', 'bounds', 'focus'].filter((k) => !eq(shown[k], full[k])).concat(shown.labels === full.labels ? [] : ['labels']);
+  });
+  check('… the side section from kept pieces equals a full build', same.length === 0, `differs in ${same.join(', ')}`);
 
   // ---- transfer: typed arrays vs serde-wasm-bindgen objects vs JSON ----
   const tr = await page.evaluate(() => {

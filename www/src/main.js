@@ -65,7 +65,7 @@ function replan() {
   const t0 = performance.now();
   let r;
   try {
-    r = core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey, held.known());
+    r = held.fill(core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey, held.known()));
   } catch (e) {
     // A planner failure (which must not happen) keeps the page and the last drawing.
     diagnosticsKey = -1;
@@ -118,7 +118,6 @@ function queuePlan() {
 
 function apply(r) {
   const t0 = performance.now();
-  held.fill(r);
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
