@@ -216,3 +216,38 @@ fn plan_summary_counts_without_drawing() {
     let p: Vec<PassInfo> = field(&wasm::thread_scenes(0, 1).unwrap(), "passes");
     assert!(close(p[0].depth, 1.8));
 }
+
+#[wasm_bindgen_test]
+fn the_side_section_comes_as_pieces_to_a_caller_with_keys() {
+    let text = program(30);
+    let none = Some(vec![-1.0; 5]);
+    let r = wasm::update(&text, "gsk980tdc", "", 0, 1, -1.0, none).unwrap();
+    let side = get(&r, "side");
+    assert_eq!(get(&side, "pieces").as_bool(), Some(true));
+    let order = Float64Array::from(get(&side, "order")).to_vec();
+    let keys = Float64Array::from(get(&side, "keys")).to_vec();
+    // Every distinct piece is sent to a caller that holds none; the axis comes apart.
+    let mut distinct = order.clone();
+    distinct.sort_by(f64::total_cmp);
+    distinct.dedup();
+    assert_eq!(keys.len(), distinct.len());
+    assert!(keys.len() > 60, "{} pieces", keys.len());
+    assert_eq!(Uint32Array::from(get(&side, "ends")).length() as usize, 5 * keys.len());
+    assert_eq!(Uint32Array::from(get(&side, "headItems")).length(), 10);
+    // After an edit to the last thread, only its band, dimensions and passes.
+    let late = edit_line(&text, -9, |_| "X38.0".into());
+    let r2 = again(&late, &r, 0, 1);
+    let side2 = get(&r2, "side");
+    assert_eq!(Float64Array::from(get(&side2, "keys")).length(), 3);
+    assert_eq!(Float64Array::from(get(&side2, "order")).to_vec().len(), order.len());
+    // A caller whose side section is not the last answered gets every piece.
+    let mut stale: Vec<f64> =
+        ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"].iter().map(|k| num(&r, k)).collect();
+    stale[2] = 12345.0;
+    let r3 = wasm::update(&text, "gsk980tdc", "", 0, 1, -1.0, Some(stale)).unwrap();
+    assert_eq!(Float64Array::from(get(&get(&r3, "side"), "keys")).length() as usize, keys.len());
+    // Without keys: one packed scene.
+    let full = plan(&text, "gsk980tdc", "");
+    assert!(get(&get(&full, "side"), "pieces").is_undefined());
+    assert!(scene(&get(&full, "side")).items.len() > 500);
+}
