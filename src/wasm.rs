@@ -23,9 +23,9 @@ use js_sys::{Array, Float64Array, Object, Reflect, Uint32Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-use crate::diagram::fingerprint::{PlanKeys, combine, js_key, key_of};
+use crate::diagram::fingerprint::{PlanKeys, combine, js_key, key_of, packed_key};
 use crate::diagram::memo::{SideMemo, SidePieces};
-use crate::diagram::{self, Packed, Scene};
+use crate::diagram::{self, Packed};
 use crate::dialect::Dialect;
 use crate::plan::Plan;
 use crate::planner::Planner;
@@ -283,10 +283,6 @@ fn pieces_to_js(p: &SidePieces) -> JsValue {
     o.into()
 }
 
-fn scene_js(scene: Option<Scene>) -> JsValue {
-    scene.map_or(JsValue::NULL, |s| packed_to_js(&diagram::pack(&s)))
-}
-
 /// The thread index to draw in detail: `thread` clamped to the plan, none when negative or no threads.
 fn pick(plan: &Plan, thread: i32) -> Option<usize> {
     let n = plan.threads.len();
@@ -372,10 +368,13 @@ fn thread_parts(
     let thread_key = keys.threads[t];
     let start = start.clamp(1, plan.threads[t].starts.max(1));
     keyed(o, known, Part::Passes, combine(&[thread_key, t as u64]), || to_js(&plan.threads[t].passes))?;
-    keyed(o, known, Part::Tooth, combine(&[thread_key, t as u64, u64::from(start)]), || {
-        Ok(scene_js(diagram::tooth(plan, t, start)))
-    })?;
-    keyed(o, known, Part::Starts, combine(&[thread_key, t as u64]), || Ok(scene_js(diagram::starts(plan, t))))
+    // The small scenes are keyed by what they draw: an edit that leaves one as it was redraws nothing.
+    for (part, scene) in [(Part::Tooth, diagram::tooth(plan, t, start)), (Part::Starts, diagram::starts(plan, t))] {
+        let packed = scene.map(|s| diagram::pack(&s));
+        let key = packed.as_ref().map_or(0, packed_key);
+        keyed(o, known, part, key, || Ok(packed.as_ref().map_or(JsValue::NULL, packed_to_js)))?;
+    }
+    Ok(())
 }
 
 /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines) and

@@ -18,6 +18,8 @@ use crate::motion::{ArcData, Move, Point};
 use crate::plan::Plan;
 use crate::thread::{Pass, Thread};
 
+use super::packed::Packed;
+
 /// A fast streaming hasher for content keys (not for hash tables facing untrusted keys).
 #[derive(Clone, Copy, Debug)]
 pub struct KeyHasher(u64);
@@ -218,6 +220,17 @@ pub fn moves_key(moves: &[Move]) -> u64 {
     let mut h = KeyHasher::default();
     h.write_usize(moves.len());
     moves.iter().for_each(|m| hash_move(&mut h, m));
+    h.finish()
+}
+
+/// The key of a packed scene's content (its view, bounds and focus too).
+pub fn packed_key(p: &Packed) -> u64 {
+    let mut h = KeyHasher::default();
+    h.write_u8(p.view as u8);
+    p.bounds.iter().chain(&p.focus).chain(&p.coords).for_each(|c| h.write_u64(c.to_bits()));
+    p.items.hash(&mut h);
+    p.lines.hash(&mut h);
+    p.labels.hash(&mut h);
     h.finish()
 }
 

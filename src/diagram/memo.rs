@@ -5,12 +5,12 @@
 //! thread rebuilds that thread's pieces and the spindle axis only.
 
 use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hash, Hasher};
+use std::hash::{BuildHasherDefault, Hasher};
 
 use crate::motion::Move;
 use crate::plan::Plan;
 
-use super::fingerprint::{KeyHasher, combine, hash_move};
+use super::fingerprint::{KeyHasher, combine, hash_move, packed_key};
 use super::packed::{Packed, RECORD_SEP, STRIDE, pack};
 use super::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
 use super::side::{
@@ -100,19 +100,9 @@ impl Pieces {
 
     /// Keeps a piece built anyway (it is cheap and rare), under the key of its content.
     fn put(&mut self, chunk: Chunk) -> u64 {
-        let key = chunk_key(&chunk.packed);
+        let key = packed_key(&chunk.packed);
         self.take(key, || chunk)
     }
-}
-
-/// The key of a packed piece's content.
-fn chunk_key(p: &Packed) -> u64 {
-    let mut h = KeyHasher::default();
-    p.coords.iter().for_each(|c| h.write_u64(c.to_bits()));
-    p.items.hash(&mut h);
-    p.lines.hash(&mut h);
-    p.labels.hash(&mut h);
-    h.finish()
 }
 
 /// The side section as pieces: what the caller needs to put it together from

@@ -166,6 +166,9 @@ fn parts_the_caller_has_are_not_sent_again() {
     assert_eq!(num(&r3, "threadsKey"), last);
     let passes: Vec<PassInfo> = field(&r3, "passes");
     assert!(close(passes[0].from[0], 38.0), "{:?}", passes[0].from);
+    // Another edit to that pass: its start angles stay as they were, so the starts view is not sent.
+    let later = edit_line(&late, -9, |_| "X38.05".into());
+    assert_eq!(sent(&again(&later, &r3, 29, 1)), ["threads", "passes", "side", "tooth"]);
     // A motion outside every thread: the side section alone.
     let r4 = again(&edit_line(&late, -1, |l| format!("G00 X90 Z90\n{l}")), &r3, 29, 1);
     assert_eq!(sent(&r4), ["side"]);
