@@ -37,6 +37,7 @@ use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind};
 struct Session {
     planner: Planner,
     side: SideMemo,
+    threads: ThreadsSent,
 }
 
 thread_local! {
@@ -300,53 +301,6 @@ fn diagnostics_key(plan: &Plan) -> f64 {
     js_key(key_of(&fields))
 }
 
-/// Parts of the answer that carry a key, in the order of `update`'s `known` argument.
-#[derive(Clone, Copy)]
-enum Part {
-    Threads = 0,
-    Passes = 1,
-    Side = 2,
-    Tooth = 3,
-    Starts = 4,
-}
-
-impl Part {
-    fn name(self) -> &'static str {
-        match self {
-            Part::Threads => "threads",
-            Part::Passes => "passes",
-            Part::Side => "side",
-            Part::Tooth => "tooth",
-            Part::Starts => "starts",
-        }
-    }
-}
-
-/// What the caller already has: a key per [`Part`] (NaN or a missing entry: nothing).
-struct Known(Vec<f64>);
-
-impl Known {
-    fn has(&self, part: Part, key: f64) -> bool {
-        self.0.get(part as usize) == Some(&key)
-    }
-}
-
-/// Sets `<part>` and `<part>Key` on `o`: the value from `make` unless the
-/// caller has `key`, then null (the caller keeps its own).
-fn keyed(
-    o: &Object,
-    known: &Known,
-    part: Part,
-    key: u64,
-    make: impl FnOnce() -> Result<JsValue, JsValue>,
-) -> Result<(), JsValue> {
-    let key = js_key(key);
-    let value = if known.has(part, key) { JsValue::NULL } else { make()? };
-    set(o, part.name(), &value);
-    set(o, &format!("{}Key", part.name()), &key.into());
-    Ok(())
-}
-
 /// Sets the chosen thread, its passes and its tooth and starts scenes on `o`.
 fn thread_parts(
     o: &Object,
@@ -387,7 +341,8 @@ fn thread_parts(
 /// `known_diagnostics` (the key of the list the caller already has); so is
 /// each of `threads`, `passes`, `side`, `tooth` and `starts` when its key is
 /// in `known` (`[threads, passes, side, tooth, starts]` keys; omitted: none
-/// known). With `known` given, `side` comes as pieces (see `pieces_to_js`):
+/// known). With `known` given, `threads` may come as `{changes: [[index,
+/// summary]...], length}` (to a caller holding the list last answered) and `side` as pieces (see `pieces_to_js`):
 /// only those the caller lacks when it holds the pieces of the last side
 /// section answered, else all; without it, as one packed scene. `thread` and
 /// `start` choose the thread (−1: none) and start drawn in the tooth and starts views. `good` is true when the plan draws
@@ -414,15 +369,17 @@ pub fn update(
             session.planner.set_settings(s);
             session
         }
-        None => Session { planner: Planner::new(s), side: SideMemo::new() },
+        None => Session { planner: Planner::new(s), side: SideMemo::new(), threads: ThreadsSent::default() },
     };
     session.planner.plan(text);
-    let Session { planner, side } = &mut session;
+    let Session { planner, side, threads } = &mut session;
     let out = match planner.last() {
-        Some(plan) => answer(text, plan, side, &problems, (thread, start), known_diagnostics, &known).map(|o| {
-            set(&o, "resumedAt", &planner.resumed_at().into());
-            o.into()
-        }),
+        Some(plan) => {
+            answer(text, plan, (side, threads), &problems, (thread, start), known_diagnostics, &known).map(|o| {
+                set(&o, "resumedAt", &planner.resumed_at().into());
+                o.into()
+            })
+        }
         None => Err(err("the planner kept no plan")),
     };
     SESSION.with(|c| c.set(Some(session)));
@@ -433,7 +390,7 @@ pub fn update(
 fn answer(
     text: &str,
     plan: &Plan,
-    memo: &mut SideMemo,
+    (memo, sent): (&mut SideMemo, &mut ThreadsSent),
     problems: &[SettingProblem],
     (thread, start): (i32, u32),
     known_diagnostics: f64,
@@ -456,13 +413,13 @@ fn answer(
     set(&o, "diagnostics", &diagnostics);
     let keys = PlanKeys::of(plan);
     keyed(&o, known, Part::Threads, keys.all_threads, || {
-        to_js(&plan.threads.iter().map(ThreadSummary::of).collect::<Vec<_>>())
+        sent.answer(known, keys.all_threads, &keys.threads, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
     })?;
     keyed(&o, known, Part::Side, keys.side, || {
-        if known.0.is_empty() {
+        if !known.keeps() {
             return Ok(packed_to_js(&memo.side(plan, &keys.threads)));
         }
-        let holds = memo.last().map(js_key) == known.0.get(Part::Side as usize).copied();
+        let holds = memo.last().map(js_key) == known.key(Part::Side);
         Ok(pieces_to_js(&memo.pieces(plan, &keys.threads, keys.side, holds)))
     })?;
     thread_parts(&o, plan, &keys, pick(plan, thread), start, known)?;
@@ -558,6 +515,9 @@ pub fn threads_as(format: &str) -> Result<JsValue, JsValue> {
         _ => Err(err(format!("unknown format '{format}' (objects, json)"))),
     })
 }
+
+mod parts;
+use parts::{Known, Part, ThreadsSent, keyed};
 
 /// The binding's tests (wasm-bindgen-test), run in Node and in headless
 /// Chromium by `cargo xtask test`.

@@ -262,7 +262,8 @@ try {
       }
       const rows = [...document.querySelectorAll('#passes tbody tr')].map((tr) => tr.children[2].textContent);
       const diags = [...document.querySelectorAll('#diagnostics li')].map((li) => li.textContent).join('\n');
-      return { thread: last, threads: r.threads.length, resumedAt: r.resumedAt, cuts, rows, diags, tooth: p.views.tooth.scene.labels, sideKey: r.sideKey, toothKey: r.toothKey };
+      const options = document.querySelectorAll('#thread option').length;
+      return { thread: last, threads: r.threads.length, options, crest: r.threads[last].crest, first: r.threads[0], resumedAt: r.resumedAt, cuts, rows, diags, tooth: p.views.tooth.scene.labels, sideKey: r.sideKey, toothKey: r.toothKey };
     });
   const before = await view();
   check('the cursor on the last thread chooses it', before.thread === before.threads - 1 && before.rows.at(-1) === '45.4', JSON.stringify([before.thread, before.threads, before.rows]));
@@ -273,6 +274,8 @@ try {
   await page.waitForTimeout(100);
   const after = await view();
   check('a late edit re-reads only the end of the program', after.resumedAt > 4000, `resumed at line ${after.resumedAt}`);
+  // The thread list came as its one changed entry: the crest assumed from the deepest pass moved.
+  check('… the thread list follows', after.threads === before.threads && after.options === after.threads && after.crest !== before.crest && JSON.stringify(after.first) === JSON.stringify(before.first), JSON.stringify([before.crest, after.crest, after.options]));
   check('… the pass table shows the new pass', after.rows.at(-1) === '45.41' && after.rows.length === before.rows.length, JSON.stringify(after.rows));
   check('… the side view draws its cut at the new radius', after.cuts.at(-1) === 22.705 && before.cuts.at(-1) === 22.7 && after.sideKey !== before.sideKey, JSON.stringify([before.cuts.at(-1), after.cuts.at(-1)]));
   check('… the tooth view is redrawn for it', after.toothKey !== before.toothKey && after.tooth !== before.tooth);

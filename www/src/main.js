@@ -211,17 +211,24 @@ function selectThread(ti, st = 1) {
 let lastTable = ''; // the table head shown
 let lastRows = []; // the rows shown
 let shownThreads = null; // what the selector and the table were last rendered from
+const options = new WeakMap(); // thread summary → {i, lang, html} of its option
+/** The selector's option of thread summary `th` at index `i` (kept per summary: an unchanged one is not formatted again). */
+function optionOf(th, i, lang) {
+  const o = options.get(th);
+  if (o && o.i === i && o.lang === lang) return o.html;
+  const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×`;
+  const html = `<option value="${i}">${esc(text)}</option>`;
+  options.set(th, { i, lang, html });
+  return html;
+}
+
 function renderThreads(r) {
   const shown = { threads: r.threads, thread: r.thread, passes: r.passes, start, lang: getLang() };
   if (shownThreads && Object.keys(shown).every((k) => shown[k] === shownThreads[k])) return;
   shownThreads = shown;
   const sel = $('thread');
-  const options = r.threads
-    .map((th, i) => {
-      const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×`;
-      return `<option value="${i}"${i === r.thread ? ' selected' : ''}>${esc(text)}</option>`;
-    })
-    .join('');
+  const lang = getLang();
+  const options = r.threads.map((th, i) => optionOf(th, i, lang)).join('');
   if (sel.dataset.html !== options) {
     sel.innerHTML = options;
     sel.dataset.html = options;

@@ -1,6 +1,7 @@
 // The parts of a planner answer kept by the page: `update` (src/wasm.rs)
 // sends a part (threads, passes, side, tooth, starts) only when its content
-// key differs from the one the caller says it has. The side section comes as
+// key differs from the one the caller says it has; the thread list may come
+// as the entries that changed. The side section comes as
 // pieces (each thread's band and dimensions, runs of passes, blocks of other
 // motions) of which only those the page does not hold are sent; the page
 // puts the packed scene together (src/diagram/packed.rs, src/diagram/memo.rs).
@@ -42,11 +43,21 @@ export class HeldParts {
         r[part] = this.values[i];
       } else {
         if (r[part] && r[part].pieces) r[part] = this.assemble(r[part]);
+        if (r[part] && r[part].changes) r[part] = this.patch(this.values[i], r[part]);
         this.keys[i] = key;
         this.values[i] = r[part];
       }
     });
     return r;
+  }
+
+  /** The list `held` with the entries `d.changes` (`[index, entry]`) replaced, cut or grown to `d.length`. */
+  patch(held, d) {
+    if (!Array.isArray(held)) throw new Error('a list changed entry by entry that is not held');
+    const list = held.slice(0, d.length);
+    for (const [i, entry] of d.changes) list[i] = entry;
+    if (list.length !== d.length || list.some((e) => e === undefined)) throw new Error('a list changed entry by entry has gaps');
+    return list;
   }
 
   /** The packed side section from pieces `a`: those sent and those held; holds the ones it uses. */

@@ -159,6 +159,18 @@ fn parts_the_caller_has_are_not_sent_again() {
     let late = edit_line(&text, -9, |_| "X38.0".into());
     let r2 = again(&late, &r, 0, 1);
     assert_eq!(sent(&r2), ["threads", "side"]);
+    // The thread list comes as the one entry that changed.
+    let changes = array(&get(&get(&r2, "threads"), "changes"));
+    assert_eq!((changes.len(), num(&get(&r2, "threads"), "length")), (1, 30.0));
+    let change = array(&changes[0]);
+    assert_eq!(change[0].as_f64(), Some(29.0));
+    let t: ThreadInfo = serde_wasm_bindgen::from_value(change[1].clone()).unwrap();
+    assert_eq!((t.line, t.passes), (386, 2));
+    // A caller whose list is not the one last answered gets it whole.
+    let whole = wasm::update(&late, "gsk980tdc", "", 0, 1, -1.0, Some(vec![7.0, -1.0, -1.0, -1.0, -1.0])).unwrap();
+    let list: Vec<ThreadInfo> = field(&whole, "threads");
+    assert_eq!(list.len(), 30);
+    let r2 = again(&late, &r, 0, 1);
     // Choosing the changed thread sends its parts.
     let last = num(&r2, "threadsKey");
     let r3 = again(&late, &r2, 29, 1);
