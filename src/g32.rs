@@ -55,6 +55,18 @@ pub fn read_lead(it: &mut Interp, b: &Block, what: &str) -> Option<f64> {
     }
     if let (None, Some(line), Some(lead)) = (f, it.lead_from_feed, it.lead) {
         let span = b.all(b'G').next().map_or(b.span, |w| w.span);
+        let max = if it.inch { 500.0 / 25.4 } else { 500.0 };
+        if !(lead > 0.0 && lead <= max) {
+            it.diag(
+                Code::MissingLead,
+                span,
+                format!(
+                    "{what} has no F, and the F register holds F{} from line {line}, which cannot be a lead; give the lead in this block",
+                    fmt(lead)
+                ),
+            );
+            return None;
+        }
         it.diag(
             Code::LeadFromFeed,
             span,

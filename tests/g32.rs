@@ -270,6 +270,10 @@ fn fanuc_g32_words() {
     );
     assert_eq!(plan.with_code(Code::LeadFromFeed).count(), 0);
     eq(plan.threads[0].lead, 2.0);
+    // An F0 in the register cannot be a lead: an alarm, no thread.
+    let plan = plan_with("F0\nG32 X1\n", Dialect::Fanuc0i, &[]);
+    assert!(at(&plan, Code::MissingLead, 2, 1).message.contains("F0 from line 1"));
+    assert!(plan.threads.is_empty());
     // GSK keeps them apart: the same program without a lead alarms and says why.
     let plan = gsk("G00 X40 Z5\nG01 X39 F0.2\nG32 Z-30\n");
     assert!(at(&plan, Code::MissingLead, 3, 1).message.contains("F0.2 of line 2"));
