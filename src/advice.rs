@@ -70,18 +70,32 @@ pub fn finish_manual(
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
-    let advice = s.flag(P::Advice);
-    // The outline a thread is cut on is turned before it: look at the moves
-    // since the previous thread, so the work stays linear in the program.
-    let mut window_start = 0;
-    for t in threads.iter_mut() {
-        let window = &moves[window_start.min(t.first_move)..t.first_move.min(moves.len())];
-        window_start = t.first_move;
-        if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92) {
-            continue;
-        }
-        finish_one(t, window, s, inch, advice, diags, spans);
+    for i in 0..threads.len() {
+        finish_thread(threads, i, moves, s, inch, diags, spans);
     }
+}
+
+/// Finishes thread `i` of `threads` (see [`finish_manual`]). The outline a
+/// thread is cut on is turned before it: only the moves since the previous
+/// thread are looked at, so the work stays linear in the program and a
+/// thread's result depends on nothing after its first motion.
+pub fn finish_thread(
+    threads: &mut [Thread],
+    i: usize,
+    moves: &[Move],
+    s: &Settings,
+    inch: bool,
+    diags: &mut Diagnostics,
+    spans: &dyn Fn(u32) -> Span,
+) {
+    let window_start = if i == 0 { 0 } else { threads[i - 1].first_move };
+    let t = &mut threads[i];
+    if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92) {
+        return;
+    }
+    let end = t.first_move.min(moves.len());
+    let window = &moves[window_start.min(end)..end];
+    finish_one(t, window, s, inch, s.flag(P::Advice), diags, spans);
 }
 
 /// Depths, crest, roles and advice of one block-by-block thread; `moves` is the

@@ -282,6 +282,11 @@ impl Diagnostics {
         }
     }
 
+    /// The diagnostics kept, in the order they came.
+    pub fn into_items(self) -> Vec<(Code, String, Span)> {
+        self.items
+    }
+
     /// The limit this collector keeps to.
     pub fn limit(&self) -> usize {
         self.limit

@@ -216,6 +216,11 @@ impl Interp {
         }
     }
 
+    /// How many threads were complete at `snap`.
+    pub fn threads_at(snap: &Snapshot) -> usize {
+        snap.threads
+    }
+
     /// The state now, to resume from later.
     pub fn snapshot(&self) -> Snapshot {
         Snapshot {

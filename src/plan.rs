@@ -65,8 +65,23 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
         }
         None => Vec::new(),
     };
-    let Interp { diags, moves, threads, inch, .. } = it;
-    finish(text, settings, diags, moves, threads, inch, starts)
+    finish(text, settings, Outputs::of(it), starts)
+}
+
+/// What the interpreter produced: the parts of a plan before finishing.
+pub(crate) struct Outputs {
+    pub diags: Diagnostics,
+    pub moves: Vec<Move>,
+    pub threads: Vec<Thread>,
+    pub inch: bool,
+}
+
+impl Outputs {
+    /// Takes the outputs of an interpreter that has read a whole program.
+    pub fn of(it: Interp) -> Outputs {
+        let Interp { diags, moves, threads, inch, .. } = it;
+        Outputs { diags, moves, threads, inch }
+    }
 }
 
 /// A lexer over `text`, or `None` (with an alarm in `it`) when the program is
@@ -116,24 +131,33 @@ pub(crate) fn run(it: &mut Interp, lexer: &mut Lexer, every: usize, mut checkpoi
 
 /// Turns the interpreter's outputs into a plan: depths and advice of the
 /// block-by-block threads, diagnostics positioned and sorted.
-pub(crate) fn finish(
+pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
+    let inch = out.inch;
+    finish_with(text, settings, out, starts, |threads, moves, spans, limit| {
+        let mut advice = Diagnostics::with_limit(limit);
+        crate::advice::finish_manual(threads, moves, settings, inch, &mut advice, spans);
+        advice
+    })
+}
+
+/// [`finish`] with the advice step given by the caller: `advice(threads,
+/// moves, spans, limit)` finishes the threads and returns their diagnostics.
+pub(crate) fn finish_with(
     text: &str,
     settings: &Settings,
-    mut diags: Diagnostics,
-    moves: Vec<Move>,
-    mut threads: Vec<Thread>,
-    inch: bool,
+    out: Outputs,
     starts: Vec<u32>,
+    advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Diagnostics,
 ) -> Plan {
+    let Outputs { mut diags, moves, mut threads, inch } = out;
     let index = LineIndex::from_starts(text, starts);
     let spans = |line: u32| {
         let start = index.line_start(line);
         let end = text[start..].find(['\n', '\r']).map_or(text.len(), |e| start + e);
         Span::new(start, end)
     };
-    let mut advice = Diagnostics::with_limit(diags.limit());
-    crate::advice::finish_manual(&mut threads, &moves, settings, inch, &mut advice, &spans);
-    diags.absorb(advice);
+    let found = advice(&mut threads, &moves, &spans, diags.limit());
+    diags.absorb(found);
     let diagnostics = diags.finish(text, &index);
     Plan { dialect: settings.dialect(), units: if inch { Units::Inch } else { Units::Mm }, diagnostics, moves, threads }
 }

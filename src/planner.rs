@@ -10,10 +10,12 @@
 //! the outline before each thread). The result is the plan a full re-plan
 //! would give; the tests check that for random edits.
 
-use crate::diagnostic::Diagnostics;
+use crate::advice::finish_thread;
+use crate::diagnostic::{Code, Diagnostics};
 use crate::interp::{Interp, Snapshot};
-use crate::plan::{Plan, finish, lexer_for, run};
+use crate::plan::{Outputs, Plan, finish, finish_with, lexer_for, run};
 use crate::settings::Settings;
+use crate::span::Span;
 
 /// Blocks between two snapshots.
 pub const CHECKPOINT_EVERY: usize = 256;
@@ -34,6 +36,9 @@ pub struct Planner {
     checkpoints: Vec<Checkpoint>,
     /// The interpreter's own diagnostics of the last run (before advice).
     raw_diags: Diagnostics,
+    /// Advice of each thread of the last plan, all formatted (kept for the
+    /// threads an edit leaves before its resume point).
+    advice: Vec<Vec<(Code, String, Span)>>,
     inch: bool,
     line_starts: Vec<u32>,
     plan: Option<Plan>,
@@ -48,6 +53,7 @@ impl Planner {
             text: String::new(),
             checkpoints: Vec::new(),
             raw_diags: Diagnostics::default(),
+            advice: Vec::new(),
             inch: false,
             line_starts: Vec::new(),
             plan: None,
@@ -89,9 +95,9 @@ impl Planner {
         let mut it = Interp::with_capacity(&self.settings, if resume.is_some() { 0 } else { text.len() });
         let Some(mut lexer) = lexer_for(text, &self.settings, &mut it) else {
             self.reset(text);
-            let Interp { diags, moves, threads, inch, .. } = it;
-            return self.plan.insert(finish(text, &self.settings, diags, moves, threads, inch, Vec::new()));
+            return self.plan.insert(finish(text, &self.settings, Outputs::of(it), Vec::new()));
         };
+        let mut kept_threads = 0;
         match resume {
             Some(ci) => {
                 let old = self.plan.take().expect("a plan to resume");
@@ -101,6 +107,7 @@ impl Planner {
                 self.checkpoints.truncate(ci + 1);
                 let cp = &self.checkpoints[ci];
                 it.restore(&cp.snap);
+                kept_threads = Interp::threads_at(&cp.snap);
                 lexer.seek(cp.offset, cp.line);
                 self.line_starts.truncate(cp.line as usize - 1);
                 self.resumed_at = cp.line;
@@ -108,6 +115,7 @@ impl Planner {
             None => {
                 self.checkpoints.clear();
                 self.line_starts.clear();
+                self.advice.clear();
                 self.resumed_at = 1;
             }
         }
@@ -118,10 +126,28 @@ impl Planner {
         self.line_starts.extend(lexer.take_line_starts());
         self.text.clear();
         self.text.push_str(text);
-        let Interp { diags, moves, threads, inch, .. } = it;
-        self.raw_diags = diags.clone();
+        let out = Outputs::of(it);
+        self.raw_diags = out.diags.clone();
+        let inch = out.inch;
         self.inch = inch;
-        let plan = finish(text, &self.settings, diags, moves, threads, inch, self.line_starts.clone());
+        // Threads complete before the resume point are finished already and
+        // their advice is kept; the rest are finished now, every message
+        // formatted so it can be kept for the next edit.
+        let advice = &mut self.advice;
+        advice.truncate(kept_threads);
+        let settings = &self.settings;
+        let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
+            for i in advice.len()..threads.len() {
+                let mut d = Diagnostics::with_limit(usize::MAX);
+                finish_thread(threads, i, moves, settings, inch, &mut d, spans);
+                advice.push(d.into_items());
+            }
+            let mut all = Diagnostics::with_limit(usize::MAX);
+            for (code, message, span) in advice.iter().flatten() {
+                all.push(*code, *span, message.clone());
+            }
+            all
+        });
         self.plan.insert(plan)
     }
 
@@ -131,6 +157,7 @@ impl Planner {
         self.text.clear();
         self.text.push_str(text);
         self.raw_diags = Diagnostics::default();
+        self.advice.clear();
         self.resumed_at = 1;
     }
 }

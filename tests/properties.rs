@@ -140,8 +140,13 @@ proptest! {
         base in prop::collection::vec(block(), 250..700),
         edits in prop::collection::vec((0.0f64..1.0, 0u8..3, block()), 1..6),
         d in 0u8..3,
+        few_diagnostics in any::<bool>(),
     ) {
-        let s = Settings::new(dialect(d));
+        let mut s = Settings::new(dialect(d));
+        if few_diagnostics {
+            // A small limit: which diagnostics are kept and where the rest start must match too.
+            s.set(P::LimitDiagnostics, 5.0);
+        }
         let mut planner = screwcut::planner::Planner::new(s.clone());
         let mut lines = base;
         planner.plan(&lines.join("\n"));
