@@ -1,40 +1,8 @@
-//! Fuzz target over the whole planner: the first byte picks the dialect and
-//! a setting to stress, the rest is the program (lossily decoded, as the CLI
-//! reads files). Any input must give a plan whose positions and numbers are
-//! sane — never a panic, a hang or unbounded output.
+//! Fuzz target over the whole planner (see `check.rs`).
 #![no_main]
 
-use libfuzzer_sys::fuzz_target;
-use screwcut::settings::P;
-use screwcut::{Dialect, Settings};
+mod check;
 
-fuzz_target!(|data: &[u8]| {
-    let Some((&head, rest)) = data.split_first() else { return };
-    let mut s = Settings::new(Dialect::ALL[(head % 3) as usize]);
-    // Stress a few settings that change the planner's paths.
-    match (head / 3) % 8 {
-        1 => s.set(P::No182_7, 1.0),
-        2 => s.set(P::Fanuc3401_0, 1.0),
-        3 => s.set(P::XMode, 1.0),
-        4 => s.set(P::LimitPasses, 3.0),
-        5 => s.set(P::LimitMoves, 50.0),
-        6 => s.set(P::No107, 500.0),
-        7 => s.set(P::Increment, 1.0),
-        _ => {}
-    }
-    let text = String::from_utf8_lossy(rest);
-    let plan = screwcut::plan(&text, &s);
-    assert!(plan.moves.len() <= s.int(P::LimitMoves) as usize);
-    assert!(plan.diagnostics.len() <= s.int(P::LimitDiagnostics) as usize + 1);
-    for d in &plan.diagnostics {
-        assert!(d.line >= 1 && d.column >= 1);
-        assert!(d.span.start <= d.span.end && d.span.end as usize <= text.len());
-    }
-    for m in &plan.moves {
-        assert!(m.from.x.is_finite() && m.from.z.is_finite() && m.to.x.is_finite() && m.to.z.is_finite());
-    }
-    for t in &plan.threads {
-        assert!(!t.passes.is_empty() && t.lead.is_finite() && t.lead > 0.0);
-    }
-    let _ = plan.to_json();
-});
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| check::check(data));

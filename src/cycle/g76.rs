@@ -5,7 +5,7 @@
 //! `G76 X(U) Z(W) R(i) P(k) Q(Δd) F;` — degressive depth Δd·√n, single
 //! flank infeed along the flank that leads into the cut.
 
-use super::{Geometry, Multi, depth_word, height_and_first_depth, in_range, plan_multi, runout, schedule};
+use super::{Geometry, Multi, height_and_first_depth, min_cut_and_allowance, plan_multi, runout, schedule};
 use crate::block::{Block, Word};
 use crate::diagnostic::Code;
 use crate::dialect::Dialect;
@@ -84,19 +84,12 @@ pub fn first(it: &mut Interp, b: &Block) {
             return;
         }
     }
-    if let Some(w) = b.get(b'Q').copied() {
-        let Some(v) = depth_word(it, &w, "Q(Δdmin)") else { return };
-        if !in_range(it, &w, v, 0.0, 99.9999, "Δdmin") {
-            return;
-        }
-        f.dmin = Some(v);
+    let Some((dmin, d)) = min_cut_and_allowance(it, b) else { return };
+    if dmin.is_some() {
+        f.dmin = dmin;
     }
-    if let Some(w) = b.get(b'R').copied() {
-        let v = it.length(&w);
-        if !in_range(it, &w, v, 0.0, 99.9999, "finishing allowance d") {
-            return;
-        }
-        f.d = Some(v);
+    if d.is_some() {
+        f.d = d;
     }
     it.cycle.g76 = Some(f);
 }

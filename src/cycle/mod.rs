@@ -119,6 +119,28 @@ pub fn height_and_first_depth(it: &mut Interp, b: &Block, g: &Word, what: &str) 
     ok.then_some((lead, k, dd))
 }
 
+/// The first block's Q(Δdmin) and R(d) (G76, G78), each `None` when not
+/// written; the outer `None` after an alarm.
+pub fn min_cut_and_allowance(it: &mut Interp, b: &Block) -> Option<(Option<f64>, Option<f64>)> {
+    let mut dmin = None;
+    if let Some(w) = b.get(b'Q').copied() {
+        let v = depth_word(it, &w, "Q(Δdmin)")?;
+        if !in_range(it, &w, v, 0.0, 99.9999, "Δdmin") {
+            return None;
+        }
+        dmin = Some(v);
+    }
+    let mut d = None;
+    if let Some(w) = b.get(b'R').copied() {
+        let v = it.length(&w);
+        if !in_range(it, &w, v, 0.0, 99.9999, "finishing allowance d") {
+            return None;
+        }
+        d = Some(v);
+    }
+    Some((dmin, d))
+}
+
 /// Checks `lo ≤ v ≤ hi`, reporting at `w` otherwise.
 pub fn in_range(it: &mut Interp, w: &Word, v: f64, lo: f64, hi: f64, what: &str) -> bool {
     if v >= lo - EPS && v <= hi + EPS {
