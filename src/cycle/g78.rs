@@ -102,12 +102,8 @@ pub fn first(it: &mut Interp, b: &Block) {
             return;
         }
     }
-    let Some((dmin, d)) = min_cut_and_allowance(it, b) else { return };
-    if dmin.is_some() {
-        f.dmin = dmin;
-    }
-    if d.is_some() {
-        f.d = d;
+    if !min_cut_and_allowance(it, b, &mut f.dmin, &mut f.d) {
+        return;
     }
     f.j = b.get(b'J').map(|w| w.value().abs());
     f.k = b.get(b'K').map(|w| w.value().abs());

@@ -119,26 +119,24 @@ pub fn height_and_first_depth(it: &mut Interp, b: &Block, g: &Word, what: &str) 
     ok.then_some((lead, k, dd))
 }
 
-/// The first block's Q(Δdmin) and R(d) (G76, G78), each `None` when not
-/// written; the outer `None` after an alarm.
-pub fn min_cut_and_allowance(it: &mut Interp, b: &Block) -> Option<(Option<f64>, Option<f64>)> {
-    let mut dmin = None;
+/// Reads the first block's Q(Δdmin) and R(d) (G76, G78) into `dmin` and
+/// `d` when written (they keep their value otherwise); false after an alarm.
+pub fn min_cut_and_allowance(it: &mut Interp, b: &Block, dmin: &mut Option<f64>, d: &mut Option<f64>) -> bool {
     if let Some(w) = b.get(b'Q').copied() {
-        let v = depth_word(it, &w, "Q(Δdmin)")?;
+        let Some(v) = depth_word(it, &w, "Q(Δdmin)") else { return false };
         if !in_range(it, &w, v, 0.0, 99.9999, "Δdmin") {
-            return None;
+            return false;
         }
-        dmin = Some(v);
+        *dmin = Some(v);
     }
-    let mut d = None;
     if let Some(w) = b.get(b'R').copied() {
         let v = it.length(&w);
         if !in_range(it, &w, v, 0.0, 99.9999, "finishing allowance d") {
-            return None;
+            return false;
         }
-        d = Some(v);
+        *d = Some(v);
     }
-    Some((dmin, d))
+    true
 }
 
 /// Checks `lo ≤ v ≤ hi`, reporting at `w` otherwise.

@@ -13,53 +13,14 @@
 // dialect. No console or page error may happen. Screenshots go to
 // tests/browser/screenshots/.
 
-import { chromium } from 'playwright-core';
-import fs from 'node:fs';
-import os from 'node:os';
+import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 
-const base = process.argv[2];
-if (!base) {
-  console.error('usage: node docs.test.mjs http://127.0.0.1:PORT/');
-  process.exit(2);
-}
-const here = path.dirname(fileURLToPath(import.meta.url));
-const shots = path.join(here, 'screenshots');
-fs.mkdirSync(shots, { recursive: true });
+const base = siteUrl('docs.test.mjs');
+const { check, counts } = checker();
 
-let passed = 0;
-let failed = 0;
-function check(name, ok, detail = '') {
-  if (ok) {
-    passed++;
-    console.log(`ok   ${name}`);
-  } else {
-    failed++;
-    console.log(`FAIL ${name}${detail ? `: ${detail}` : ''}`);
-  }
-}
-
-const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-docs-'));
-const context = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  viewport: { width: 1280, height: 900 },
-  args: [
-    '--headless',
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-quic',
-    '--no-first-run',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-  ],
-});
-const guard = setTimeout(() => {
-  console.log('FAIL the docs test took longer than 150 s');
-  process.exit(1);
-}, 150_000);
+const { context, close } = await launch('screwcut-docs-', { viewport: { width: 1280, height: 900 } });
+const timer = guard(150, 'the docs test');
 
 const problems = [];
 const watch = (p) => {
@@ -306,10 +267,8 @@ try {
 } catch (e) {
   check('the docs test ran to the end', false, e && e.stack ? e.stack : String(e));
 } finally {
-  clearTimeout(guard);
-  await context.close();
-  fs.rmSync(userDataDir, { recursive: true, force: true });
+  clearTimeout(timer);
+  await close();
 }
 
-console.log(`docs page: ${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish('docs page', counts);

@@ -11,33 +11,13 @@
 // across the wasm boundary as typed arrays, objects or JSON (printed, not
 // asserted). Screenshots go to tests/browser/screenshots/.
 
-import { chromium } from 'playwright-core';
+import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import { fileURLToPath } from 'node:url';
 
-const url = process.argv[2];
-if (!url) {
-  console.error('usage: node test.mjs http://127.0.0.1:PORT/');
-  process.exit(2);
-}
-const here = path.dirname(fileURLToPath(import.meta.url));
-const shots = path.join(here, 'screenshots');
-fs.mkdirSync(shots, { recursive: true });
-
-let passed = 0;
-let failed = 0;
-function check(name, ok, detail = '') {
-  if (ok) {
-    passed++;
-    console.log(`ok   ${name}`);
-  } else {
-    failed++;
-    console.log(`FAIL ${name}${detail ? `: ${detail}` : ''}`);
-  }
-}
+const url = siteUrl('test.mjs');
+const { check, counts } = checker();
 
 /** A 5,000-line program: O1006-style passes on many threads. */
 function bigProgram(lines = 5000) {
@@ -64,27 +44,8 @@ const median = (a) => {
   return s.length ? s[Math.floor(s.length / 2)] : NaN;
 };
 
-const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-chromium-'));
-const context = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  acceptDownloads: true,
-  viewport: { width: 1400, height: 900 },
-  args: [
-    '--headless',
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-quic',
-    '--no-first-run',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-  ],
-});
-const guard = setTimeout(() => {
-  console.log('FAIL the test took longer than 180 s');
-  process.exit(1);
-}, 180_000);
+const { context, close } = await launch('screwcut-chromium-', { acceptDownloads: true, viewport: { width: 1400, height: 900 } });
+const timer = guard(180, 'the test');
 
 const problems = [];
 const page = context.pages()[0] || (await context.newPage());
@@ -331,10 +292,8 @@ try {
 } catch (e) {
   check('the test ran to the end', false, e && e.stack ? e.stack : String(e));
 } finally {
-  clearTimeout(guard);
-  await context.close();
-  fs.rmSync(userDataDir, { recursive: true, force: true });
+  clearTimeout(timer);
+  await close();
 }
 
-console.log(`browser: ${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish('browser', counts);
