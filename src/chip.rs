@@ -178,9 +178,9 @@ pub fn pass_areas(angle_deg: f64, passes: &[(f64, f64)]) -> Vec<Option<f64>> {
             .iter()
             .map(|&(d, _)| {
                 let d = d.max(prev);
-                let a = tool.t * (d * d - prev * prev);
+                let a = crate::thread::v_area(angle_deg, prev, d);
                 prev = d;
-                Some(a)
+                a
             })
             .collect();
     }

@@ -92,10 +92,6 @@ pub struct Target {
     pub has_x: bool,
     /// A Z or W word was given.
     pub has_z: bool,
-    /// X was given absolutely (X rather than U).
-    pub abs_x: bool,
-    /// Z was given absolutely.
-    pub abs_z: bool,
 }
 
 /// The interpreter's state while a program is read.
@@ -397,11 +393,10 @@ impl Interp {
 
     /// The end point of the block's X/Z/U/W words from the current position.
     pub fn target(&mut self, b: &Block) -> Target {
-        let mut t = Target { p: self.pos.p, has_x: false, has_z: false, abs_x: false, abs_z: false };
+        let mut t = Target { p: self.pos.p, has_x: false, has_z: false };
         if let Some(w) = b.get(b'X') {
             t.p.x = self.x_len(w);
             t.has_x = true;
-            t.abs_x = true;
         } else if let Some(w) = b.get(b'U') {
             let d = self.x_len(w);
             if !self.pos.kx {
@@ -413,7 +408,6 @@ impl Interp {
         if let Some(w) = b.get(b'Z') {
             t.p.z = self.length(w);
             t.has_z = true;
-            t.abs_z = true;
         } else if let Some(w) = b.get(b'W') {
             let d = self.length(w);
             if !self.pos.kz {

@@ -305,7 +305,7 @@ impl Settings {
     /// Finds a setting definition by name (`No.058`, `no58`, `3401#0`, `x_mode`).
     pub fn find(name: &str) -> Option<(P, &'static Def)> {
         let n = normalize_name(name);
-        DEFS.iter().enumerate().find(|(_, d)| normalize_name(d.name) == n).map(|(i, d)| (p_from_index(i), d))
+        DEFS.iter().enumerate().find(|(_, d)| normalize_name(d.name) == n).map(|(i, d)| (ALL_P[i], d))
     }
 
     /// Applies `NAME=VALUE`.
@@ -386,10 +386,6 @@ fn dialect_index(d: Dialect) -> usize {
         Dialect::Fanuc0i => 1,
         Dialect::Renhe => 2,
     }
-}
-
-fn p_from_index(i: usize) -> P {
-    ALL_P[i]
 }
 
 #[cfg(test)]

@@ -36,13 +36,6 @@ pub struct CycleState {
     pub g92: Option<g92::Modal>,
 }
 
-impl CycleState {
-    /// Whether a G92 continuation block may follow.
-    pub fn g92_active(&self) -> bool {
-        self.g92.is_some()
-    }
-}
-
 /// G76/G78: the first block (no X/Z/U/W) stores its words, the second plans the thread.
 pub fn two_block(it: &mut Interp, b: &Block, g: G, w: Word) {
     let second = b.has(b'X') || b.has(b'Z') || b.has(b'U') || b.has(b'W');
