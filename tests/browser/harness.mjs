@@ -6,6 +6,10 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { execFileSync } from 'node:child_process';
+
+/** The system Chromium the tests drive. */
+export const CHROMIUM = '/usr/bin/chromium';
 
 /** Headless Chromium as root, without the network it must not reach. */
 export const CHROMIUM_ARGS = [
@@ -56,11 +60,25 @@ export function guard(seconds, what) {
   }, seconds * 1000);
 }
 
-/** A persistent Chromium context in a fresh profile; `close()` removes the profile. */
+/** What `chromium --version` prints, for the test log. */
+export function chromiumVersion() {
+  try {
+    return execFileSync(CHROMIUM, ['--version'], { encoding: 'utf8', timeout: 20_000, stdio: ['ignore', 'pipe', 'ignore'] }).trim();
+  } catch (e) {
+    return `unknown (${CHROMIUM} --version failed: ${e.message.split('\n')[0]})`;
+  }
+}
+
+/**
+ * A persistent Chromium context in a fresh profile; `close()` removes the
+ * profile. Prints the browser's version first, so a log says
+ * which Chromium a result came from.
+ */
 export async function launch(prefix, options = {}) {
+  console.log(`browser: ${chromiumVersion()}`);
   const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), prefix));
   const context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: '/usr/bin/chromium',
+    executablePath: CHROMIUM,
     headless: true,
     args: CHROMIUM_ARGS,
     ...options,

@@ -22,11 +22,6 @@ pub fn run(program: &str, args: &[&str], dir: Option<&Path>) -> Result {
     if status.success() { Ok(()) } else { Err(format!("{program} {} failed ({status})", args.join(" "))) }
 }
 
-/// Whether `program` can be started (found on PATH).
-pub fn have(program: &str) -> bool {
-    Command::new(program).arg("--version").output().is_ok_and(|o| o.status.success())
-}
-
 /// Output of a command, if it ran and succeeded.
 pub fn output(program: &str, args: &[&str]) -> Option<String> {
     let o = Command::new(program).args(args).output().ok()?;
@@ -62,7 +57,14 @@ pub fn ensure_wasm_bindgen() -> Result {
 
 /// Installs Debian's Chromium and ChromeDriver when they are missing.
 pub fn ensure_chromium() -> Result {
-    if Path::new("/usr/bin/chromium").exists() && Path::new("/usr/bin/chromedriver").exists() {
+    ensure_debian(&[("/usr/bin/chromium", "chromium"), ("/usr/bin/chromedriver", "chromium-driver")])
+}
+
+/// Installs the Debian packages of `wanted` (file it installs, package)
+/// whose file is missing, with apt-get (through `sudo -n` when not root).
+pub fn ensure_debian(wanted: &[(&str, &str)]) -> Result {
+    let missing: Vec<&str> = wanted.iter().filter(|(file, _)| !Path::new(file).exists()).map(|&(_, p)| p).collect();
+    if missing.is_empty() {
         return Ok(());
     }
     let sudo = output("id", &["-u"]).is_some_and(|u| u.trim() != "0");
@@ -72,12 +74,19 @@ pub fn ensure_chromium() -> Result {
     update.extend(["update", "-q"]);
     run(prog, &update, None)?;
     let mut inst: Vec<&str> = pre.to_vec();
-    inst.extend(["install", "-y", "-q", "--no-install-recommends", "chromium", "chromium-driver"]);
+    inst.extend(["install", "-y", "-q", "--no-install-recommends"]);
+    inst.extend(&missing);
     let mut cmd = Command::new(prog);
-    cmd.args(&inst).env("DEBIAN_FRONTEND", "noninteractive");
+    cmd.args(&inst).env("DEBIAN_FRONTEND", "noninteractive").stdin(std::process::Stdio::null());
     eprintln!("$ {prog} {}", inst.join(" "));
     let status = cmd.status().map_err(|e| format!("cannot run apt-get: {e}"))?;
-    if status.success() { Ok(()) } else { Err("installing chromium and chromium-driver failed".into()) }
+    if !status.success() {
+        return Err(format!("installing {} failed ({status})", missing.join(", ")));
+    }
+    match wanted.iter().find(|(file, _)| !Path::new(file).exists()) {
+        Some((file, package)) => Err(format!("{package} is installed but {file} is not there")),
+        None => Ok(()),
+    }
 }
 
 /// `npm ci` in `dir` when its node_modules is missing or older than its lock file.

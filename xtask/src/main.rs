@@ -2,8 +2,8 @@
 //!
 //! Everything a fresh machine needs is installed from here (wasm target,
 //! wasm-bindgen CLI at the version in Cargo.lock, Chromium and ChromeDriver
-//! from the system packages, npm packages), so the README's two commands work
-//! on a new clone.
+//! from the Debian packages, npm packages including the pinned binaryen),
+//! so the README's two commands work on a new clone.
 
 mod install;
 mod web;

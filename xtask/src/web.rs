@@ -4,9 +4,9 @@
 //! `www/static/`, `app.js` (the app bundled by esbuild, with the
 //! wasm-bindgen glue), `screwcut-preview.js` (the embeddable
 //! `<screwcut-preview>` element, bundled the same way without the editor),
-//! `screwcut_bg.wasm` (the core, optimised by wasm-opt when it is on PATH;
-//! shared by both bundles) and `examples/` (every file listed in
-//! `examples/index.json`). `cargo xtask dist` adds `element/`, the element
+//! `screwcut_bg.wasm` (the core, size-optimised by the binaryen pinned in
+//! `www/package.json`; shared by both bundles) and `examples/` (every file
+//! listed in `examples/index.json`). `cargo xtask dist` adds `element/`, the element
 //! as a folder a documentation site can vendor.
 
 use std::io::{BufRead, BufReader, Read, Write};
@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use crate::Result;
-use crate::install::{ensure_chromium, ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, have, root, run};
+use crate::install::{ensure_chromium, ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, output, root, run};
 
 /// Default port of `cargo xtask serve`.
 pub const DEFAULT_PORT: u16 = 8080;
@@ -52,11 +52,17 @@ pub fn dist(args: &[String]) -> Result {
         return Err(format!("dist: unknown option '{a}' (usage: cargo xtask dist)"));
     }
     let out = root().join("dist");
-    build_site(true, &out)?;
+    let opt = build_site(true, &out)?;
     let element = out.join("element");
     write_element_package(&out, &element)?;
     eprintln!("wrote the site to {} and the embeddable element to {}", out.display(), element.display());
-    Ok(())
+    eprintln!("dist: the wasm is {opt}");
+    match opt {
+        WasmOpt::Optimised { .. } => Ok(()),
+        WasmOpt::Skipped(why) => {
+            Err(format!("dist: the wasm was not size-optimised ({why}); dist/ is not the measured build"))
+        }
+    }
 }
 
 /// The files of the element's folder: the bundle and the wasm from the
@@ -132,6 +138,7 @@ pub fn wasm_tests() -> Result {
     )?;
     let node = wasm_test_run("Node", &[])?;
     ensure_chromium()?;
+    eprintln!("browser: {}", chromium_version());
     let driver = root().join("webdriver.json");
     let browser = wasm_test_run(
         "Chromium",
@@ -143,6 +150,12 @@ pub fn wasm_tests() -> Result {
     )?;
     eprintln!("wasm tests: {node} passed in Node, {browser} passed in Chromium");
     Ok(())
+}
+
+/// What `/usr/bin/chromium --version` prints, for the test log.
+pub fn chromium_version() -> String {
+    output("/usr/bin/chromium", &["--version"])
+        .map_or_else(|| "unknown (chromium --version failed)".into(), |v| v.trim().into())
 }
 
 /// `cargo test --target wasm32-unknown-unknown --lib wasm::` under
@@ -193,7 +206,9 @@ fn passed_count(line: &str) -> Option<u32> {
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
-    build_site(true, &out)?;
+    if let WasmOpt::Skipped(why) = build_site(true, &out)? {
+        return Err(format!("the wasm under test was not size-optimised as a release is ({why})"));
+    }
     let dir = root().join("tests").join("browser");
     ensure_npm(&dir)?;
     let listener = TcpListener::bind(("127.0.0.1", 0)).map_err(|e| format!("cannot listen on 127.0.0.1: {e}"))?;
@@ -206,9 +221,9 @@ pub fn browser_tests() -> Result {
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
-/// wasm-bindgen glue, wasm-opt when available, the esbuild bundle, static
-/// files and examples.
-pub fn build_site(release: bool, out: &Path) -> Result {
+/// wasm-bindgen glue, wasm-opt for a release build, the esbuild bundle,
+/// static files and examples. Says, and returns, what wasm-opt did.
+pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     ensure_wasm_target()?;
     ensure_wasm_bindgen()?;
     let root = root();
@@ -226,11 +241,9 @@ pub fn build_site(release: bool, out: &Path) -> Result {
         &["--target", "web", "--no-typescript", "--out-dir", &path_str(&pkg)?, &path_str(&wasm)?],
         None,
     )?;
-    let bg = pkg.join("screwcut_bg.wasm");
-    if release {
-        optimise(&bg)?;
-    }
     ensure_npm(&www)?;
+    let bg = pkg.join("screwcut_bg.wasm");
+    let opt = if release { optimise(&bg) } else { WasmOpt::Skipped("debug build".into()) };
     if out.exists() {
         std::fs::remove_dir_all(out).map_err(|e| format!("cannot empty {}: {e}", out.display()))?;
     }
@@ -262,22 +275,54 @@ pub fn build_site(release: bool, out: &Path) -> Result {
     copy(&examples.join("index.json"), &out.join("examples").join("index.json"))?;
     let size = |f: &str| std::fs::metadata(out.join(f)).map(|m| m.len().div_ceil(1024)).unwrap_or(0);
     eprintln!(
-        "site: {} (wasm {} KiB, app.js {} KiB, screwcut-preview.js {} KiB)",
+        "site: {} (wasm {} KiB, app.js {} KiB, screwcut-preview.js {} KiB)\nwasm: {opt}",
         out.display(),
         size("screwcut_bg.wasm"),
         size("app.js"),
         size("screwcut-preview.js")
     );
-    Ok(())
+    Ok(opt)
 }
 
-/// Runs `wasm-opt -Oz` on `wasm` in place when wasm-opt is on PATH, and
-/// keeps the result only if the wasm-bindgen glue still loads it and plans
-/// with it (old binaryen releases break the externref table).
-fn optimise(wasm: &Path) -> Result {
-    if !have("wasm-opt") {
-        eprintln!("note: wasm-opt is not on PATH, the wasm is not size-optimised (apt-get install binaryen)");
-        return Ok(());
+/// What the size optimisation of a release build did to the wasm.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum WasmOpt {
+    /// `wasm-opt -Oz` ran and its output loads and plans: version and sizes in bytes.
+    Optimised { version: String, before: u64, after: u64 },
+    /// The wasm is as wasm-bindgen wrote it, for this reason.
+    Skipped(String),
+}
+
+impl std::fmt::Display for WasmOpt {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            WasmOpt::Optimised { version, before, after } => write!(
+                f,
+                "size-optimised by {version} -Oz: {} KiB -> {} KiB",
+                before.div_ceil(1024),
+                after.div_ceil(1024)
+            ),
+            WasmOpt::Skipped(why) => write!(f, "NOT size-optimised: {why}"),
+        }
+    }
+}
+
+/// Runs `wasm-opt -Oz` on `wasm` in place with the binaryen pinned in
+/// `www/package.json` (installed by `npm ci` there), and keeps the result
+/// only if the wasm-bindgen glue still loads it and plans with it.
+///
+/// The pinned npm build is used rather than a system binaryen so that every
+/// machine ships the wasm that was measured: Debian bookworm's binaryen 108
+/// writes this module's `__wbindgen_externrefs` export against the wrong
+/// table, and the glue then fails to load it.
+fn optimise(wasm: &Path) -> WasmOpt {
+    let tool = root().join("www").join("node_modules").join(".bin").join("wasm-opt");
+    let Some(tool) = tool.to_str().filter(|_| tool.exists()) else {
+        return WasmOpt::Skipped(format!("{} is missing (npm ci in www/)", tool.display()));
+    };
+    let version = output(tool, &["--version"]).map(|v| v.trim().to_string()).unwrap_or_default();
+    if version.is_empty() {
+        return WasmOpt::Skipped(format!("{tool} --version failed"));
     }
     let tmp = wasm.with_extension("opt.wasm");
     let features = [
@@ -288,17 +333,24 @@ fn optimise(wasm: &Path) -> Result {
         "--enable-reference-types",
         "--enable-multivalue",
     ];
-    let (w, t) = (path_str(wasm)?, path_str(&tmp)?);
-    let mut args = vec!["-Oz"];
-    args.extend(features);
-    args.extend([w.as_str(), "-o", t.as_str()]);
-    let outcome = run("wasm-opt", &args, None).and_then(|()| smoke_test(&tmp));
+    let size = |p: &Path| std::fs::metadata(p).map(|m| m.len()).unwrap_or(0);
+    let before = size(wasm);
+    let outcome = (|| -> Result<u64> {
+        let (w, t) = (path_str(wasm)?, path_str(&tmp)?);
+        let mut args = vec!["-Oz"];
+        args.extend(features);
+        args.extend([w.as_str(), "-o", t.as_str()]);
+        run(tool, &args, None)?;
+        smoke_test(&tmp)?;
+        let after = size(&tmp);
+        std::fs::rename(&tmp, wasm).map_err(|e| format!("{}: {e}", wasm.display()))?;
+        Ok(after)
+    })();
     match outcome {
-        Ok(()) => std::fs::rename(&tmp, wasm).map_err(|e| format!("{}: {e}", wasm.display())),
+        Ok(after) => WasmOpt::Optimised { version, before, after },
         Err(e) => {
-            eprintln!("note: {e}; keeping the wasm as wasm-bindgen wrote it");
             let _ = std::fs::remove_file(&tmp);
-            Ok(())
+            WasmOpt::Skipped(format!("{version}: {e}"))
         }
     }
 }
