@@ -93,7 +93,7 @@ try {
     return { x: r.left + xf.tx + xf.sx * x, y: r.top + xf.ty - xf.sy * y };
   });
   await page.mouse.move(at.x, at.y);
-  await page.waitForTimeout(100);
+  await page.waitForSelector('.cm-line.cm-marked', { timeout: 5_000 }).catch(() => {});
   const hoverMarked = await page.locator('.cm-line.cm-marked').allTextContents();
   check('hovering pass 1 in the side view marks its lines', hoverMarked.some((t) => t.includes('N40 G32')), JSON.stringify(hoverMarked));
   const tipText = (await page.locator('#tip').isVisible()) ? await page.locator('#tip').textContent() : '';
@@ -118,7 +118,10 @@ try {
   await page.mouse.move(5, 5);
 
   // ---- reload: the program survives ----
-  await page.waitForTimeout(600);
+  // Saving is debounced: wait until the browser's storage holds the edit.
+  await page
+    .waitForFunction(() => Object.keys(localStorage).some((k) => (localStorage.getItem(k) || '').includes('N204 G32')), null, { timeout: 5_000 })
+    .catch(() => {});
   await page.reload();
   await ready();
   await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr').length > 0);
