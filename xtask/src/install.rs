@@ -45,14 +45,20 @@ pub fn ensure_wasm_target() -> Result {
     run("rustup", &["target", "add", "wasm32-unknown-unknown"], None)
 }
 
-/// Installs wasm-bindgen-cli at exactly the version of the `wasm-bindgen` crate in Cargo.lock.
+/// Installs wasm-bindgen-cli at exactly the version of the `wasm-bindgen`
+/// crate in Cargo.lock, unless both `wasm-bindgen` and
+/// `wasm-bindgen-test-runner` already answer with that version. `--force`,
+/// because cargo's record of installed crates outlives deleted binaries.
 pub fn ensure_wasm_bindgen() -> Result {
     let want = locked_version("wasm-bindgen")?;
-    let have = output("wasm-bindgen", &["--version"]).unwrap_or_default();
-    if have.split_whitespace().nth(1) == Some(want.as_str()) {
+    let at = |program: &str| output(program, &["--version"]).unwrap_or_default();
+    let ok = ["wasm-bindgen", "wasm-bindgen-test-runner"]
+        .iter()
+        .all(|p| at(p).split_whitespace().nth(1) == Some(want.as_str()));
+    if ok {
         return Ok(());
     }
-    run("cargo", &["install", "wasm-bindgen-cli", "--version", &want], None)
+    run("cargo", &["install", "wasm-bindgen-cli", "--version", &want, "--force"], None)
 }
 
 /// Installs Debian's Chromium and ChromeDriver when they are missing.
