@@ -76,10 +76,14 @@ pub fn ensure_debian(wanted: &[(&str, &str)]) -> Result {
     let sudo = output("id", &["-u"]).is_some_and(|u| u.trim() != "0");
     let apt: Vec<&str> = if sudo { vec!["sudo", "-n", "apt-get"] } else { vec!["apt-get"] };
     let (prog, pre) = apt.split_first().expect("non-empty");
+    // Another apt run (an unattended upgrade, a second job) holds the lock for a while: wait for it.
+    let lock = ["-o", "DPkg::Lock::Timeout=600"];
     let mut update: Vec<&str> = pre.to_vec();
+    update.extend(lock);
     update.extend(["update", "-q"]);
     run(prog, &update, None)?;
     let mut inst: Vec<&str> = pre.to_vec();
+    inst.extend(lock);
     inst.extend(["install", "-y", "-q", "--no-install-recommends"]);
     inst.extend(&missing);
     let mut cmd = Command::new(prog);
