@@ -176,6 +176,10 @@ impl std::fmt::Display for Code {
     }
 }
 
+/// A finding before it is placed at a span: its code and message. Pure
+/// planning steps return these; the caller knows where they belong.
+pub type Finding = (Code, String);
+
 /// One finding about the program, positioned at a span of the source.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Diagnostic {

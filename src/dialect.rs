@@ -1,5 +1,6 @@
-//! Controller dialects. Each keeps its own words, G codes, alarms and
-//! parameters; nothing in one dialect leaks into another.
+//! The dialects screwcut reads: names and titles. What each controller does
+//! with a program — words, G codes, unit rules, parameters, alarms — is in
+//! its own module under [`crate::controller`].
 
 use serde::Serialize;
 
@@ -15,50 +16,44 @@ pub enum Dialect {
     Renhe,
 }
 
+/// Name, title and accepted spellings of each dialect, in [`Dialect::ALL`] order.
+const NAMES: [(&str, &str, &[&str]); 3] = [
+    ("gsk980tdc", "GSK980TDc", &["gsk", "gsk980", "gsk980tdi"]),
+    ("fanuc0i", "Fanuc 0i-TF", &["fanuc", "fanuc0it", "fanuc0itf"]),
+    ("renhe", "Renhe", &[]),
+];
+
 impl Dialect {
     /// Every dialect.
     pub const ALL: [Dialect; 3] = [Dialect::Gsk980tdc, Dialect::Fanuc0i, Dialect::Renhe];
 
+    /// Position in [`Dialect::ALL`].
+    pub const fn index(self) -> usize {
+        self as usize
+    }
+
     /// The name used on the command line and in JSON.
     pub fn name(self) -> &'static str {
-        match self {
-            Dialect::Gsk980tdc => "gsk980tdc",
-            Dialect::Fanuc0i => "fanuc0i",
-            Dialect::Renhe => "renhe",
-        }
+        NAMES[self.index()].0
     }
 
     /// A display title.
     pub fn title(self) -> &'static str {
-        match self {
-            Dialect::Gsk980tdc => "GSK980TDc",
-            Dialect::Fanuc0i => "Fanuc 0i-TF",
-            Dialect::Renhe => "Renhe",
-        }
+        NAMES[self.index()].1
     }
 
     /// Parses a dialect name (case-insensitive; a few common spellings).
     pub fn parse(s: &str) -> Option<Dialect> {
         let s = s.trim().to_ascii_lowercase().replace(['-', '_', ' '], "");
-        match s.as_str() {
-            "gsk980tdc" | "gsk" | "gsk980" | "gsk980tdi" => Some(Dialect::Gsk980tdc),
-            "fanuc0i" | "fanuc" | "fanuc0it" | "fanuc0itf" => Some(Dialect::Fanuc0i),
-            "renhe" => Some(Dialect::Renhe),
-            _ => None,
-        }
+        Dialect::ALL.into_iter().find(|d| {
+            let (name, _, aliases) = NAMES[d.index()];
+            name == s || aliases.contains(&s.as_str())
+        })
     }
 
-    /// Whether `letter` (uppercase ASCII) is an address of this dialect.
-    pub fn has_address(self, letter: u8) -> bool {
-        const GSK: u32 = letters(b"ACDEFGHIJKLMNOPQRSTUWXZ"); // no B, V, Y on a two-axis lathe
-        const FANUC: u32 = letters(b"ABCDEFGHIJKLMNOPQRSTUWXZ"); // 0i-TF, two axes, G-code system A
-        const RENHE: u32 = letters(b"FGIKLMNOPQRSTUWXZ");
-        let set = match self {
-            Dialect::Gsk980tdc => GSK,
-            Dialect::Fanuc0i => FANUC,
-            Dialect::Renhe => RENHE,
-        };
-        letter.is_ascii_uppercase() && set & (1 << (letter - b'A')) != 0
+    /// The names of every dialect, for messages: `gsk980tdc, fanuc0i, renhe`.
+    pub fn names() -> String {
+        NAMES.iter().map(|n| n.0).collect::<Vec<_>>().join(", ")
     }
 }
 
@@ -76,5 +71,22 @@ pub const fn letters(s: &[u8]) -> u32 {
 impl std::fmt::Display for Dialect {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for d in Dialect::ALL {
+            assert_eq!(Dialect::parse(d.name()), Some(d));
+            assert_eq!(Dialect::ALL[d.index()], d);
+        }
+        assert_eq!(Dialect::parse(" Fanuc-0i "), Some(Dialect::Fanuc0i));
+        assert_eq!(Dialect::parse("GSK"), Some(Dialect::Gsk980tdc));
+        assert_eq!(Dialect::parse("haas"), None);
+        assert_eq!(Dialect::names(), "gsk980tdc, fanuc0i, renhe");
     }
 }

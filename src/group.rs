@@ -1,62 +1,24 @@
-//! Grouping of block-by-block thread cuts (G32, Renhe G32/G33) into threads.
+//! Grouping of block-by-block thread cuts (G32, Renhe G32/G33) and G92
+//! passes into threads, from the interpreter's events.
 //!
 //! The textbook pattern cuts each pass with four blocks — infeed (G00 X),
 //! cut (G32), retract (G00 X), return (G00 Z) — and repeats it deeper. Each
-//! run of G32 blocks (a continuous thread) is one [`Chain`]; consecutive
+//! run of thread pieces (a continuous thread) is one [`Chain`]; consecutive
 //! chains that cut the same helix become one [`Thread`] whose passes carry
-//! the lines of their four blocks.
+//! the lines and the motions of their blocks. The grouper is a state
+//! machine over events: it never reads the interpreter.
 
-use crate::diagnostic::Code;
-use crate::interp::{Interp, Target};
-use crate::motion::MoveKind;
-use crate::motion::Point;
+use std::ops::Range;
+
+use crate::diagnostic::{Code, Diagnostics};
+use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
-use crate::settings::P;
+use crate::settings::{P, Settings};
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, Role, Source, Thread, ThreadKind};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Thread};
 
-/// One straight piece of a continuous thread.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Seg {
-    /// Start of the synchronised cut.
-    pub from: Point,
-    /// End of the synchronised cut (run-out excluded).
-    pub to: Point,
-    /// End of the run-out, when the block has one.
-    pub runout_to: Option<Point>,
-    /// Shape of this piece.
-    pub kind: ThreadKind,
-    /// Long axis of this piece.
-    pub long: Axis,
-}
-
-impl Seg {
-    /// Travel along the long axis (radial for X).
-    pub fn long_travel(&self) -> f64 {
-        match self.long {
-            Axis::Z => self.to.z - self.from.z,
-            Axis::X => (self.to.x - self.from.x) / 2.0,
-        }
-    }
-
-    /// Long-axis coordinate of a point (radius for X).
-    pub fn long_of(&self, p: Point) -> f64 {
-        match self.long {
-            Axis::Z => p.z,
-            Axis::X => p.r(),
-        }
-    }
-
-    /// Short-axis coordinate of a point (radius for X).
-    pub fn short_of(&self, p: Point) -> f64 {
-        match self.long {
-            Axis::Z => p.r(),
-            Axis::X => p.z,
-        }
-    }
-}
-
-/// A continuous thread cut: consecutive thread blocks without a wait for the one-rev signal.
+/// A continuous thread cut: consecutive thread blocks without a wait for
+/// the one-rev signal (or one start of a G92 pass).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Chain {
     /// Command family.
@@ -75,6 +37,10 @@ pub struct Chain {
     pub span: Span,
     /// Index in the plan's moves of the chain's first motion.
     pub first_move: usize,
+    /// Tool angle in force when it was cut.
+    pub tool_angle: f64,
+    /// Its motions in the plan's moves.
+    pub moves: PassMoves,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -85,94 +51,156 @@ enum After {
     Return,
 }
 
-/// Grouping state kept by the interpreter.
-#[derive(Clone, Debug, Default)]
+/// The infeed rapid last seen on one axis: its line and its motion, if it moved.
+type Infeed1 = Option<(u32, Option<usize>)>;
+
+/// Grouping state between events.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Grouper {
     /// The continuous cut in progress.
-    pub chain: Option<Chain>,
+    chain: Option<Chain>,
     cuts: Vec<Chain>,
     after: After,
-    /// Line of the last rapid that moved X (the infeed of a Z thread) and that moved Z (of a face thread).
-    infeed_line: [Option<u32>; 2],
+    /// The last rapid that moved X (the infeed of a Z thread) and that moved Z (of a face thread).
+    infeed: [Infeed1; 2],
 }
 
-/// Notes a rapid: after a cut the first rapid on its short axis is its
-/// retract and the next rapid on its long axis its return; otherwise the
-/// last rapid on a short axis is the next cut's infeed (X for a thread along
-/// Z, Z for a face thread).
-pub fn after_rapid(it: &mut Interp, t: &Target, line: u32) {
-    let g = &mut it.grouper;
-    let mut consumed = false;
-    let long_z = g.cuts.last().is_none_or(|c| c.segs[0].long == Axis::Z);
-    let (on_short, on_long) = if long_z { (t.has_x, t.has_z) } else { (t.has_z, t.has_x) };
-    match g.after {
-        After::Retract if on_short || on_long => {
-            if let Some(last) = g.cuts.last_mut() {
-                last.lines.push(line);
+impl Grouper {
+    /// A rapid with axis words `x`, `z` on `line` (its motion's index, if it
+    /// moved): after a cut the first rapid on the cut's short axis is its
+    /// retract and the next rapid on its long axis its return; otherwise
+    /// the last rapid on a short axis is the next cut's infeed (X for a
+    /// thread along Z, Z for a face thread).
+    pub fn rapid(&mut self, x: bool, z: bool, line: u32, mv: Option<usize>) {
+        let long_z = self.cuts.last().is_none_or(|c| c.segs[0].long == Axis::Z);
+        let (on_short, on_long) = if long_z { (x, z) } else { (z, x) };
+        let consumed = match self.after {
+            After::Retract if on_short || on_long => {
+                self.after = if on_short && !on_long { After::Return } else { After::Nothing };
+                true
             }
-            g.after = if on_short && !on_long { After::Return } else { After::Nothing };
-            consumed = true;
-        }
-        After::Return if on_long && !on_short => {
-            if let Some(last) = g.cuts.last_mut() {
-                last.lines.push(line);
+            After::Return if on_long && !on_short => {
+                self.after = After::Nothing;
+                true
             }
-            g.after = After::Nothing;
-            consumed = true;
+            After::Return => {
+                self.after = After::Nothing;
+                false
+            }
+            _ => false,
+        };
+        if consumed {
+            if let Some(last) = self.cuts.last_mut() {
+                last.lines.push(line);
+                if let Some(i) = mv {
+                    last.moves.retract.end = i + 1;
+                }
+            }
+            return;
         }
-        After::Return => g.after = After::Nothing,
-        _ => {}
+        if x {
+            self.infeed[0] = Some((line, mv));
+        }
+        if z {
+            self.infeed[1] = Some((line, mv));
+        }
     }
-    if !consumed {
-        if t.has_x {
-            g.infeed_line[0] = Some(line);
+
+    /// A thread piece whose motions are `moves` (the cut, then its run-out):
+    /// it continues the continuous thread being cut, or starts one.
+    pub fn piece(&mut self, p: Piece, moves: Range<usize>) {
+        match &mut self.chain {
+            Some(c) => {
+                c.segs.push(p.seg);
+                c.lines.push(p.line);
+                c.moves.cut.end = moves.end;
+                c.moves.retract = moves.end..moves.end;
+            }
+            None => {
+                let at = moves.start;
+                self.chain = Some(Chain {
+                    source: p.source,
+                    lead: p.lead,
+                    segs: vec![p.seg],
+                    angle: p.angle,
+                    lines: vec![p.line],
+                    approach: p.approach,
+                    span: p.span,
+                    first_move: at,
+                    tool_angle: p.tool_angle,
+                    moves: PassMoves { approach: at..at, cut: moves.clone(), retract: moves.end..moves.end },
+                });
+            }
         }
-        if t.has_z {
-            g.infeed_line[1] = Some(line);
+    }
+
+    /// Whether a continuous thread is being cut.
+    pub fn in_chain(&self) -> bool {
+        self.chain.is_some()
+    }
+
+    /// The continuous thread being cut ends: it joins the current thread or
+    /// starts a new one (completed threads go to `out`).
+    pub fn end_chain(&mut self, s: &Settings, out: &mut Vec<Thread>, diags: &mut Diagnostics) {
+        if let Some(chain) = self.chain.take() {
+            self.add(chain, s, out, diags);
         }
+    }
+
+    /// Adds a finished chain: it joins the current thread or starts a new one.
+    pub fn add(&mut self, mut chain: Chain, s: &Settings, out: &mut Vec<Thread>, diags: &mut Diagnostics) {
+        // Block-by-block passes own their infeed, retract and return; a G92 block is all of its pass.
+        let blockwise = chain.source != Source::G92;
+        let short = if chain.segs[0].long == Axis::Z { 0 } else { 1 };
+        let infeed = self.infeed[short];
+        self.infeed = [None, None];
+        if let (Some((line, mv)), true) = (infeed, blockwise) {
+            chain.lines.insert(0, line);
+            if let Some(i) = mv.filter(|i| *i < chain.moves.cut.start) {
+                chain.moves.approach = i..chain.moves.cut.start.min(i + 1);
+            }
+        }
+        let max_infeed = s.get(P::GroupMaxInfeed);
+        if let Some(last) = self.cuts.last() {
+            if !same_thread(last, &chain, max_infeed) {
+                self.close(s, out, diags);
+            }
+        }
+        self.cuts.push(chain);
+        self.after = if blockwise { After::Retract } else { After::Nothing };
+    }
+
+    /// Closes the thread being grouped, if any, into `out`.
+    pub fn close(&mut self, s: &Settings, out: &mut Vec<Thread>, diags: &mut Diagnostics) {
+        let cuts = std::mem::take(&mut self.cuts);
+        self.after = After::Nothing;
+        if cuts.is_empty() {
+            return;
+        }
+        let limit = s.int(P::LimitStarts).max(1) as usize;
+        let thread = build(&cuts);
+        if thread.starts as usize > limit {
+            too_many_starts(&cuts, thread.starts, limit, diags);
+        }
+        out.push(thread);
     }
 }
 
-/// Adds a finished chain: it joins the current thread or starts a new one.
-pub fn add_chain(it: &mut Interp, mut chain: Chain) {
-    // Block-by-block passes own their infeed, retract and return; a G92 block is all of its pass.
-    let blockwise = chain.source != Source::G92;
-    let short = if chain.segs[0].long == Axis::Z { 0 } else { 1 };
-    let infeed = it.grouper.infeed_line[short];
-    it.grouper.infeed_line = [None, None];
-    if let (Some(l), true) = (infeed, blockwise) {
-        chain.lines.insert(0, l);
-    }
-    let max_infeed = it.s.get(P::GroupMaxInfeed);
-    if let Some(last) = it.grouper.cuts.last() {
-        if !same_thread(last, &chain, max_infeed) {
-            close(it);
-        }
-    }
-    it.grouper.cuts.push(chain);
-    it.grouper.after = if blockwise { After::Retract } else { After::Nothing };
-}
-
-/// Emits one block-by-block thread piece — the synchronised cut from
-/// `from` to `to`, then the run-out to `runout_to` — moves the tool there,
-/// and adds the piece to the continuous thread being cut (or starts one).
-#[allow(clippy::too_many_arguments)]
-pub fn cut_piece(it: &mut Interp, source: Source, lead: f64, angle: f64, seg: Seg, end: Point, line: u32, span: Span) {
-    let first_move = it.moves.len();
-    it.emit(MoveKind::Thread, seg.from, seg.to, line, None, span);
-    if let Some(o) = seg.runout_to {
-        it.emit(MoveKind::Runout, seg.to, o, line, None, span);
-    }
-    let approach = it.last_x.0;
-    it.arrive(seg.runout_to.unwrap_or(end), true, true, line);
-    match &mut it.grouper.chain {
-        Some(c) => {
-            c.segs.push(seg);
-            c.lines.push(line);
-        }
-        None => {
-            it.grouper.chain =
-                Some(Chain { source, lead, segs: vec![seg], angle, lines: vec![line], approach, span, first_move });
+/// Reports the chain that brought the starts over `limit`.
+#[cold]
+fn too_many_starts(cuts: &[Chain], starts: u32, limit: usize, diags: &mut Diagnostics) {
+    let mut seen: Vec<f64> = Vec::new();
+    for c in cuts {
+        if !seen.iter().any(|a| (a - c.angle).abs() < 1e-6) {
+            seen.push(c.angle);
+            if seen.len() > limit {
+                diags.push(
+                    Code::TooManyStarts,
+                    c.span,
+                    format!("{starts} starts (distinct start angles Q): at most {limit} (setting limits.starts)"),
+                );
+                return;
+            }
         }
     }
 }
@@ -202,45 +230,44 @@ fn minmax(a: f64, b: f64) -> (f64, f64) {
     if a <= b { (a, b) } else { (b, a) }
 }
 
-/// Closes the thread being grouped, if any, and adds it to the plan.
-pub fn close(it: &mut Interp) {
-    let cuts = std::mem::take(&mut it.grouper.cuts);
-    it.grouper.after = After::Nothing;
-    if cuts.is_empty() {
-        return;
-    }
-    let angle = match it.dialect {
-        crate::dialect::Dialect::Gsk980tdc => it.s.get(P::No058),
-        crate::dialect::Dialect::Fanuc0i => it.s.get(P::Fanuc5143),
-        crate::dialect::Dialect::Renhe => 60.0,
-    };
-    let limit = it.s.int(P::LimitStarts).max(1) as usize;
-    let thread = build(&cuts, angle);
-    if thread.starts as usize > limit {
-        // The chain that brought the first start over the limit.
-        let mut seen: Vec<f64> = Vec::new();
-        for c in &cuts {
-            if !seen.iter().any(|a| (a - c.angle).abs() < 1e-6) {
-                seen.push(c.angle);
-                if seen.len() > limit {
-                    it.diag(
-                        Code::TooManyStarts,
-                        c.span,
-                        format!(
-                            "{} starts (distinct start angles Q): at most {limit} (setting limits.starts)",
-                            thread.starts
-                        ),
-                    );
-                    break;
-                }
+/// The pass a chain cuts, as start `start` (1-based) of its thread.
+fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
+    let first = c.segs[0];
+    let last = *c.segs.last().unwrap_or(&first);
+    let mut segments = Vec::new();
+    if c.segs.len() > 1 {
+        segments.push(first.from);
+        for (i, s) in c.segs.iter().enumerate() {
+            segments.push(s.to);
+            if let (Some(r), true) = (s.runout_to, i + 1 < c.segs.len()) {
+                segments.push(r);
             }
         }
     }
-    it.threads.push(thread);
+    let mut lines = c.lines.clone();
+    lines.sort_unstable();
+    lines.dedup();
+    Pass {
+        start,
+        index,
+        from: first.from,
+        to: last.to,
+        depth: 0.0,
+        infeed: 0.0,
+        role: Role::Rough,
+        lines,
+        segments,
+        runout_to: last.runout_to,
+        screw_in_from: None,
+        shift: 0.0,
+        angle: c.angle,
+        area: None,
+        moves: c.moves.clone(),
+    }
 }
 
 /// Builds a thread from its chains: starts from distinct start angles, passes in order.
-fn build(cuts: &[Chain], tool_angle: f64) -> Thread {
+fn build(cuts: &[Chain]) -> Thread {
     let mut angles: Vec<f64> = Vec::new();
     for c in cuts {
         if !angles.iter().any(|a| (a - c.angle).abs() < 1e-6) {
@@ -253,66 +280,36 @@ fn build(cuts: &[Chain], tool_angle: f64) -> Thread {
     for c in cuts {
         let si = angles.iter().position(|a| (a - c.angle).abs() < 1e-6).unwrap_or(0);
         counts[si] += 1;
-        let first = c.segs[0];
-        let last = *c.segs.last().unwrap_or(&first);
-        let mut segments = Vec::new();
-        if c.segs.len() > 1 {
-            segments.push(first.from);
-            for (i, s) in c.segs.iter().enumerate() {
-                segments.push(s.to);
-                if let (Some(r), true) = (s.runout_to, i + 1 < c.segs.len()) {
-                    segments.push(r);
-                }
-            }
-        }
-        let mut lines = c.lines.clone();
-        lines.sort_unstable();
-        lines.dedup();
-        passes.push(Pass {
-            start: si as u32 + 1,
-            index: counts[si],
-            from: first.from,
-            to: last.to,
-            depth: 0.0,
-            infeed: 0.0,
-            role: Role::Rough,
-            lines,
-            segments,
-            runout_to: last.runout_to,
-            screw_in_from: None,
-            shift: 0.0,
-            angle: c.angle,
-            area: None,
-        });
+        passes.push(pass_of(c, si as u32 + 1, counts[si]));
     }
     let c0 = &cuts[0];
     let main =
         *c0.segs.iter().max_by(|a, b| a.long_travel().abs().total_cmp(&b.long_travel().abs())).unwrap_or(&c0.segs[0]);
     let depth_dir = depth_direction(cuts, &main);
-    let lead = c0.lead;
     let starts = angles.len() as u32;
     let line = cuts.iter().flat_map(|c| c.lines.iter().copied()).min().unwrap_or(0);
     let end_line = cuts.iter().flat_map(|c| c.lines.iter().copied()).max().unwrap_or(0);
     let p0 = &passes[0];
+    let taper = match main.long {
+        Axis::Z => p0.from.r() - p0.to.r(),
+        Axis::X => 0.0,
+    };
     Thread {
         line,
         end_line,
         source: c0.source,
         kind: main.kind,
         long_axis: main.long,
-        lead,
-        pitch: lead / starts as f64,
+        lead: c0.lead,
+        pitch: c0.lead / starts as f64,
         starts,
         internal: main.long == Axis::Z && depth_dir > 0.0,
         infeed: Infeed::Programmed,
-        tool_angle,
+        tool_angle: c0.tool_angle,
         crest: 0.0,
         crest_source: CrestSource::Assumed,
         height: 0.0,
-        taper: match main.long {
-            Axis::Z => p0.from.r() - p0.to.r(),
-            Axis::X => 0.0,
-        },
+        taper,
         passes,
         depth_dir,
         first_move: cuts.iter().map(|c| c.first_move).min().unwrap_or(0),

@@ -5,8 +5,8 @@
 //! it is marked so the interpreter skips it.
 
 use crate::block::{Block, BlockKind, Number, Word};
+use crate::controller::Rules;
 use crate::diagnostic::{Code, Diagnostics};
-use crate::dialect::Dialect;
 use crate::span::Span;
 
 /// Limits the lexer enforces (from the settings).
@@ -108,17 +108,17 @@ pub struct Lexer<'a> {
     text: &'a str,
     pos: usize,
     line: u32,
-    dialect: Dialect,
+    rules: &'static Rules,
     limits: LexLimits,
     chars: Vec<Ch>,
     starts: Vec<u32>,
 }
 
 impl<'a> Lexer<'a> {
-    /// A lexer over `text` for `dialect`.
-    pub fn new(text: &'a str, dialect: Dialect, limits: LexLimits) -> Lexer<'a> {
+    /// A lexer over `text` for the words of a controller (its `rules`).
+    pub fn new(text: &'a str, rules: &'static Rules, limits: LexLimits) -> Lexer<'a> {
         let pos = if text.starts_with('\u{FEFF}') { 3 } else { 0 };
-        Lexer { text, pos, line: 0, dialect, limits, chars: Vec::with_capacity(128), starts: Vec::new() }
+        Lexer { text, pos, line: 0, rules, limits, chars: Vec::with_capacity(128), starts: Vec::new() }
     }
 
     /// Lines read so far.
@@ -182,7 +182,7 @@ impl<'a> Lexer<'a> {
                 return;
             }
             let src = Ascii { bytes: line.as_bytes(), base };
-            LineLexer::new(src, self.text, self.dialect, self.limits).run(block, diags);
+            LineLexer::new(src, self.text, self.rules, self.limits).run(block, diags);
             return;
         }
         // Decode once into folded characters.
@@ -209,7 +209,7 @@ impl<'a> Lexer<'a> {
         }
         self.chars.push(Ch { b: 0, folded: false, at: (base + line.len()) as u32 });
         let chars = std::mem::take(&mut self.chars);
-        LineLexer::new(&chars[..], self.text, self.dialect, self.limits).run(block, diags);
+        LineLexer::new(&chars[..], self.text, self.rules, self.limits).run(block, diags);
         self.chars = chars;
     }
 }
@@ -218,15 +218,15 @@ struct LineLexer<'c, S: Src> {
     src: S,
     i: usize,
     text: &'c str,
-    dialect: Dialect,
+    rules: &'static Rules,
     limits: LexLimits,
     first_fold: Option<usize>,
     last_fold: Option<usize>,
 }
 
 impl<'c, S: Src> LineLexer<'c, S> {
-    fn new(src: S, text: &'c str, dialect: Dialect, limits: LexLimits) -> Self {
-        LineLexer { src, i: 0, text, dialect, limits, first_fold: None, last_fold: None }
+    fn new(src: S, text: &'c str, rules: &'static Rules, limits: LexLimits) -> Self {
+        LineLexer { src, i: 0, text, rules, limits, first_fold: None, last_fold: None }
     }
 
     #[inline]
@@ -455,7 +455,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
     fn word(&mut self, letter: u8, block: &mut Block, diags: &mut Diagnostics) {
         let start = self.i;
         self.bump();
-        let known = self.dialect.has_address(letter);
+        let known = self.rules.has_address(letter);
         while matches!(self.peek(), b' ' | b'\t') {
             self.bump();
         }
@@ -481,7 +481,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
             diags.push(
                 Code::UnknownAddress,
                 self.span(start, start + 1),
-                format!("'{}' is not an address of the {} controller", letter as char, self.dialect.title()),
+                format!("'{}' is not an address of the {} controller", letter as char, self.rules.title()),
             );
             block.has_error = true;
             return;
@@ -659,7 +659,8 @@ mod tests {
     use super::*;
 
     fn lex(text: &str) -> (Vec<Block>, Vec<crate::diagnostic::Diagnostic>) {
-        let mut lx = Lexer::new(text, Dialect::Gsk980tdc, LexLimits::default());
+        let mut lx =
+            Lexer::new(text, &crate::controller::of(crate::dialect::Dialect::Gsk980tdc).rules, LexLimits::default());
         let mut d = Diagnostics::with_limit(100);
         let mut out = Vec::new();
         let mut b = Block::default();

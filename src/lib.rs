@@ -1,9 +1,10 @@
 //! screwcut: an interpreter and pass planner for CNC lathe thread-cutting
 //! G-code (GSK980TDc, Fanuc 0i, Renhe).
 //!
-//! Data flows one way: text → [`block`]s ([`lexer`]) → motions and thread
-//! passes ([`interp`], [`g32`], [`renhe`], [`cycle`], [`group`],
-//! [`advice`]) → [`plan::Plan`]. The core is free of wasm and the DOM; the
+//! Data flows one way: text → [`block`]s ([`lexer`]) → events ([`interp`],
+//! reading each block through its [`controller`]) → motions and threads with
+//! the motions of each pass ([`assemble`]: [`group`], [`cycle`]) → depths
+//! and advice ([`advice`]) → [`plan::Plan`] → scenes ([`diagram`]). The core is free of wasm and the DOM; the
 //! browser binding lives in `wasm` and is compiled only for wasm32.
 //!
 //! ```
@@ -14,14 +15,17 @@
 //! ```
 
 pub mod advice;
+pub mod assemble;
 pub mod block;
 pub mod chip;
+pub mod controller;
 pub mod cycle;
 pub mod diagnostic;
 pub mod diagram;
 pub mod dialect;
-pub mod g32;
+pub mod event;
 pub mod gcode;
+pub mod geom;
 pub mod group;
 pub mod interp;
 pub mod lexer;
@@ -29,9 +33,9 @@ pub mod motion;
 pub mod num;
 pub mod plan;
 pub mod planner;
-pub mod renhe;
 pub mod settings;
 pub mod span;
+pub mod state;
 pub mod thread;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -1,11 +1,14 @@
 //! Points and motions in program coordinates (X as a diameter, Z).
 
+use glam::DVec2;
 use serde::{Serialize, Serializer};
 
 use crate::num::round_out;
 use crate::span::Span;
 
-/// A point of the X–Z plane in program units; `x` is a **diameter**.
+/// A point of the X–Z plane in program units, as the plan reports it: `x`
+/// is a **diameter**, as the controller programs it. Geometry is computed
+/// on glam's `DVec2` in true coordinates, (Z, radius): [`Point::zr`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Point {
     /// Diameter.
@@ -20,6 +23,16 @@ impl Point {
         Point { x, z }
     }
 
+    /// The point in true geometry: (Z, radius).
+    pub fn zr(self) -> DVec2 {
+        DVec2::new(self.z, self.x / 2.0)
+    }
+
+    /// The point at true coordinates (Z, radius).
+    pub fn from_zr(v: DVec2) -> Point {
+        Point { x: 2.0 * v.y, z: v.x }
+    }
+
     /// Radius (half the diameter).
     pub fn r(self) -> f64 {
         self.x / 2.0
@@ -27,7 +40,7 @@ impl Point {
 
     /// Moves by a radial `dr` and an axial `dz`.
     pub fn offset_r(self, dr: f64, dz: f64) -> Point {
-        Point { x: self.x + 2.0 * dr, z: self.z + dz }
+        Point::from_zr(self.zr() + DVec2::new(dz, dr))
     }
 
     /// Linear interpolation towards `o` by `t`.
@@ -37,7 +50,7 @@ impl Point {
 
     /// Euclidean distance in true geometry (radial, axial).
     pub fn dist(self, o: Point) -> f64 {
-        ((self.r() - o.r()).powi(2) + (self.z - o.z).powi(2)).sqrt()
+        self.zr().distance(o.zr())
     }
 
     /// Whether both coordinates are finite.

@@ -1,16 +1,24 @@
 //! The plan of a program: diagnostics, motions and threads. This is what the
 //! CLI prints and what the wasm binding returns.
+//!
+//! Reading a program is a pipeline: the lexer gives blocks, the interpreter
+//! turns each block into events ([`crate::interp`]), the assembler turns
+//! events into motions and threads ([`crate::assemble`]), and the advice
+//! step finishes the threads ([`crate::advice`]).
 
 use serde::Serialize;
 
+use crate::assemble::{Assembler, Mark};
 use crate::block::Block;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
 use crate::dialect::Dialect;
+use crate::event::Event;
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
 use crate::motion::Move;
 use crate::settings::{P, Settings};
 use crate::span::{LineIndex, Span};
+use crate::state::Modal;
 use crate::thread::Thread;
 
 /// Program units.
@@ -57,18 +65,103 @@ impl Plan {
 
 /// Plans `text` with `settings` (which also carry the dialect).
 pub fn plan(text: &str, settings: &Settings) -> Plan {
-    let mut it = Interp::with_capacity(settings, text.len());
-    let starts = match lexer_for(text, settings, &mut it) {
+    let mut r = Reading::new(settings, text.len());
+    let starts = match lexer_for(text, settings, &mut r.diags) {
         Some(mut lexer) => {
-            run(&mut it, &mut lexer, usize::MAX, |_, _, _| {});
+            r.run(&mut lexer, usize::MAX, |_, _, _| {});
             lexer.take_line_starts()
         }
         None => Vec::new(),
     };
-    finish(text, settings, Outputs::of(it), starts)
+    finish(text, settings, r.outputs(), starts)
 }
 
-/// What the interpreter produced: the parts of a plan before finishing.
+/// A program being read: the interpreter, the plan being assembled and
+/// the diagnostics.
+pub(crate) struct Reading {
+    pub it: Interp,
+    pub asm: Assembler,
+    pub diags: Diagnostics,
+    events: Vec<Event>,
+}
+
+/// Where a reading was at a block boundary: the modal state (a clone) and
+/// how far the outputs went.
+#[derive(Clone, Debug)]
+pub struct Snapshot {
+    modal: Modal,
+    plan: Mark,
+    diags: (usize, usize, Option<Span>),
+}
+
+impl Snapshot {
+    /// How many threads were complete.
+    pub fn threads(&self) -> usize {
+        self.plan.threads
+    }
+}
+
+impl Reading {
+    /// A reading of a program of about `bytes` bytes.
+    pub fn new(settings: &Settings, bytes: usize) -> Reading {
+        Reading {
+            it: Interp::new(settings),
+            asm: Assembler::new(settings, bytes),
+            diags: Diagnostics::with_limit(settings.int(P::LimitDiagnostics).max(1) as usize),
+            events: Vec::new(),
+        }
+    }
+
+    /// Where the reading is now.
+    pub fn snapshot(&self) -> Snapshot {
+        let d = &self.diags;
+        Snapshot { modal: self.it.m.clone(), plan: self.asm.mark(), diags: (d.len(), d.dropped(), d.first_dropped()) }
+    }
+
+    /// Goes back to a snapshot taken earlier in the same reading.
+    pub fn restore(&mut self, snap: &Snapshot) {
+        self.it.m = snap.modal.clone();
+        self.asm.restore(&snap.plan);
+        self.diags.truncate(snap.diags.0, snap.diags.1, snap.diags.2);
+    }
+
+    /// Reads one block.
+    pub fn block(&mut self, b: &Block) {
+        self.it.step(b, &mut self.events, &mut self.diags);
+        self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
+    }
+
+    /// Reads blocks from `lexer` to the end of the program, calling
+    /// `checkpoint(offset, line, reading)` before every `every`-th block
+    /// (the byte offset and 1-based line of the block about to be read),
+    /// then closes what is still open.
+    pub fn run(&mut self, lexer: &mut Lexer, every: usize, mut checkpoint: impl FnMut(usize, u32, &Reading)) {
+        let mut block = Block::default();
+        let mut count = 0usize;
+        loop {
+            if count > 0 && count % every == 0 {
+                checkpoint(lexer.offset(), lexer.line() + 1, self);
+            }
+            if !lexer.next_block(&mut block, &mut self.diags) {
+                break;
+            }
+            self.block(&block);
+            count += 1;
+            if self.asm.stopped() {
+                break;
+            }
+        }
+        self.it.finish(&mut self.events, &mut self.diags);
+        self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
+    }
+
+    /// The outputs, the reading done.
+    pub fn outputs(self) -> Outputs {
+        Outputs { diags: self.diags, moves: self.asm.moves, threads: self.asm.threads, inch: self.it.m.inch }
+    }
+}
+
+/// What a reading produced: the parts of a plan before finishing.
 pub(crate) struct Outputs {
     pub diags: Diagnostics,
     pub moves: Vec<Move>,
@@ -76,20 +169,12 @@ pub(crate) struct Outputs {
     pub inch: bool,
 }
 
-impl Outputs {
-    /// Takes the outputs of an interpreter that has read a whole program.
-    pub fn of(it: Interp) -> Outputs {
-        let Interp { diags, moves, threads, inch, .. } = it;
-        Outputs { diags, moves, threads, inch }
-    }
-}
-
-/// A lexer over `text`, or `None` (with an alarm in `it`) when the program is
-/// larger than `limits.program_bytes`.
-pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, it: &mut Interp) -> Option<Lexer<'t>> {
+/// A lexer over `text`, or `None` (with an alarm in `diags`) when the
+/// program is larger than `limits.program_bytes`.
+pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diagnostics) -> Option<Lexer<'t>> {
     let limit = settings.get(P::LimitProgramBytes) as usize;
     if text.len() > limit {
-        it.diag(
+        diags.push(
             Code::ProgramTooLarge,
             Span::new(0, 0),
             format!(
@@ -103,34 +188,11 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, it: &mut Interp)
         block_chars: settings.int(P::LimitBlockChars).max(1) as usize,
         digits: settings.int(P::LimitDigits).clamp(1, 17) as usize,
     };
-    Some(Lexer::new(text, settings.dialect(), limits))
+    Some(Lexer::new(text, &crate::controller::of(settings.dialect()).rules, limits))
 }
 
-/// Reads blocks from `lexer` to the end of the program with `it`, calling
-/// `checkpoint(offset, line, it)` before every `every`-th block (the byte
-/// offset and 1-based line of the block about to be read), then closes
-/// what is still open.
-pub(crate) fn run(it: &mut Interp, lexer: &mut Lexer, every: usize, mut checkpoint: impl FnMut(usize, u32, &Interp)) {
-    let mut block = Block::default();
-    let mut count = 0usize;
-    loop {
-        if count > 0 && count % every == 0 {
-            checkpoint(lexer.offset(), lexer.line() + 1, it);
-        }
-        if !lexer.next_block(&mut block, &mut it.diags) {
-            break;
-        }
-        it.block(&block);
-        count += 1;
-        if it.stopped() {
-            break;
-        }
-    }
-    it.finish();
-}
-
-/// Turns the interpreter's outputs into a plan: depths and advice of the
-/// block-by-block threads, diagnostics positioned and sorted.
+/// Turns the outputs into a plan: depths and advice of the block-by-block
+/// threads, diagnostics positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
     let inch = out.inch;
     finish_with(text, settings, out, starts, |threads, moves, spans, limit| {

@@ -12,8 +12,7 @@
 
 use crate::advice::finish_thread;
 use crate::diagnostic::{Code, Diagnostics};
-use crate::interp::{Interp, Snapshot};
-use crate::plan::{Outputs, Plan, finish, finish_with, lexer_for, run};
+use crate::plan::{Plan, Reading, Snapshot, finish, finish_with, lexer_for};
 use crate::settings::Settings;
 use crate::span::Span;
 
@@ -25,7 +24,7 @@ struct Checkpoint {
     offset: usize,
     /// Its 1-based line.
     line: u32,
-    /// The interpreter before it.
+    /// The reading before it.
     snap: Snapshot,
 }
 
@@ -92,22 +91,22 @@ impl Planner {
             Some(_) => self.checkpoints.iter().rposition(|c| c.offset <= changed_at),
             None => None,
         };
-        let mut it = Interp::with_capacity(&self.settings, if resume.is_some() { 0 } else { text.len() });
-        let Some(mut lexer) = lexer_for(text, &self.settings, &mut it) else {
+        let mut r = Reading::new(&self.settings, if resume.is_some() { 0 } else { text.len() });
+        let Some(mut lexer) = lexer_for(text, &self.settings, &mut r.diags) else {
             self.reset(text);
-            return self.plan.insert(finish(text, &self.settings, Outputs::of(it), Vec::new()));
+            return self.plan.insert(finish(text, &self.settings, r.outputs(), Vec::new()));
         };
         let mut kept_threads = 0;
         match resume {
             Some(ci) => {
                 let old = self.plan.take().expect("a plan to resume");
-                it.moves = old.moves;
-                it.threads = old.threads;
-                it.diags = std::mem::take(&mut self.raw_diags);
+                r.asm.moves = old.moves;
+                r.asm.threads = old.threads;
+                r.diags = std::mem::take(&mut self.raw_diags);
                 self.checkpoints.truncate(ci + 1);
                 let cp = &self.checkpoints[ci];
-                it.restore(&cp.snap);
-                kept_threads = Interp::threads_at(&cp.snap);
+                r.restore(&cp.snap);
+                kept_threads = cp.snap.threads();
                 lexer.seek(cp.offset, cp.line);
                 self.line_starts.truncate(cp.line as usize - 1);
                 self.resumed_at = cp.line;
@@ -120,13 +119,13 @@ impl Planner {
             }
         }
         let checkpoints = &mut self.checkpoints;
-        run(&mut it, &mut lexer, CHECKPOINT_EVERY, |offset, line, it| {
-            checkpoints.push(Checkpoint { offset, line, snap: it.snapshot() });
+        r.run(&mut lexer, CHECKPOINT_EVERY, |offset, line, r| {
+            checkpoints.push(Checkpoint { offset, line, snap: r.snapshot() });
         });
         self.line_starts.extend(lexer.take_line_starts());
         self.text.clear();
         self.text.push_str(text);
-        let out = Outputs::of(it);
+        let out = r.outputs();
         self.raw_diags = out.diags.clone();
         let inch = out.inch;
         self.inch = inch;

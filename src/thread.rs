@@ -1,6 +1,8 @@
 //! Threads and their passes: what the planner produces for every thread in
 //! the program, whether cut block by block (G32/G33) or by a cycle.
 
+use std::ops::Range;
+
 use serde::Serialize;
 
 use crate::motion::Point;
@@ -90,6 +92,40 @@ pub enum CrestSource {
     Assumed,
 }
 
+/// The motions of one pass, as index ranges into the plan's `moves`: the
+/// rapids that bring the tool to the cut, the cut itself (screw-in, thread
+/// segments, run-out) and the rapids that take it back (retract, return).
+/// Serialised as `[start, end)` pairs.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct PassMoves {
+    /// Approach (infeed) rapids before the cut.
+    #[serde(serialize_with = "ser_range")]
+    pub approach: Range<usize>,
+    /// Screw-in, thread and run-out motions.
+    #[serde(serialize_with = "ser_range")]
+    pub cut: Range<usize>,
+    /// Retract and return rapids after the cut.
+    #[serde(serialize_with = "ser_range")]
+    pub retract: Range<usize>,
+}
+
+impl PassMoves {
+    /// Every motion of the pass, approach to return.
+    pub fn all(&self) -> Range<usize> {
+        self.approach.start..self.retract.end
+    }
+
+    /// The ranges moved by `d` motions (a plan cut at a snapshot and read on).
+    pub fn shifted(&self, d: isize) -> PassMoves {
+        let s = |r: &Range<usize>| r.start.saturating_add_signed(d)..r.end.saturating_add_signed(d);
+        PassMoves { approach: s(&self.approach), cut: s(&self.cut), retract: s(&self.retract) }
+    }
+}
+
+fn ser_range<S: serde::Serializer>(r: &Range<usize>, s: S) -> Result<S::Ok, S::Error> {
+    [r.start, r.end].serialize(s)
+}
+
 /// One spindle-synchronised pass of a thread.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Pass {
@@ -129,6 +165,8 @@ pub struct Pass {
     /// Area of the thread space this pass removes (program units²), when the tool angle is known.
     #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
     pub area: Option<f64>,
+    /// The pass's motions in the plan's `moves`.
+    pub moves: PassMoves,
 }
 
 /// A thread: every pass that cuts the same helix (or helices, when multi-start).

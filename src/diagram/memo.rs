@@ -250,7 +250,7 @@ impl SideMemo {
             order.push(pieces.take(h.finish(), || Chunk::of(motions(moves, owner, has_threads))));
         }
         // Runs of passes of one thread, in cutting order.
-        let paths: Vec<_> = layout.paths.iter().filter(|p| p.tail.end <= drawn).collect();
+        let paths: Vec<_> = layout.paths.iter().filter(|p| p.end() <= drawn).collect();
         let mut i = 0;
         while i < paths.len() {
             let mut j = i + 1;
@@ -266,7 +266,7 @@ impl SideMemo {
                 for r in [&p.lead_in, &p.cut, &p.tail] {
                     h.write_usize(r.end - r.start);
                 }
-                plan.moves[p.lead_in.start..p.tail.end].iter().for_each(|m| hash_move(&mut h, m));
+                p.indices().for_each(|k| hash_move(&mut h, &plan.moves[k]));
             }
             let run = &paths[i..j];
             order.push(pieces.take(h.finish(), || {

@@ -17,7 +17,6 @@ pub mod editor;
 pub mod fingerprint;
 pub mod memo;
 pub mod packed;
-pub mod paths;
 pub mod scene;
 pub mod side;
 pub mod starts;

@@ -6,12 +6,13 @@
 //! the work is known, and dimensions of the major and minor diameters, the
 //! lead, the pitch of multi-start threads, the threaded length and the taper.
 
+use std::ops::Range;
+
 use crate::motion::{Move, MoveKind, Point};
 use crate::plan::Plan;
 use crate::thread::{Axis, CrestSource, Pass, Thread};
 
 pub use super::band::{Band, FeedIndex, deltas, work_extent, work_extent_in};
-use super::paths::{PassPath, pass_paths};
 use super::scene::{Anchor, Glyph, Item, Label, Pt, Rect, Scene, Shape, Style, ViewKind, num};
 
 /// Most motions drawn; a larger plan is drawn up to here, with a note.
@@ -65,6 +66,57 @@ pub fn arc_points(m: &Move) -> Vec<Pt> {
     pts
 }
 
+/// The motions of one pass, as ranges of `plan.moves` (each pass carries
+/// them: [`crate::thread::PassMoves`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PassPath {
+    /// Index of the thread in `plan.threads`.
+    pub thread: usize,
+    /// Index of the pass in the thread's `passes`.
+    pub pass: usize,
+    /// Rapids before the cut.
+    pub lead_in: Range<usize>,
+    /// Screw-in, thread segments and run-out.
+    pub cut: Range<usize>,
+    /// Rapids after the cut.
+    pub tail: Range<usize>,
+}
+
+impl PassPath {
+    /// The motion indices of the pass, approach to return.
+    pub fn indices(&self) -> impl Iterator<Item = usize> + '_ {
+        self.lead_in.clone().chain(self.cut.clone()).chain(self.tail.clone())
+    }
+
+    /// One past the pass's last motion.
+    pub fn end(&self) -> usize {
+        self.tail.end.max(self.cut.end)
+    }
+}
+
+/// The passes whose cut is among the plan's motions, in cutting order.
+/// (A plan cut short by the move limit may have passes without motions:
+/// those are drawn from their own points.)
+pub fn pass_paths(plan: &Plan) -> Vec<PassPath> {
+    let mut found: Vec<PassPath> = Vec::new();
+    for (thread, t) in plan.threads.iter().enumerate() {
+        for (pass, p) in t.passes.iter().enumerate() {
+            let m = &p.moves;
+            if !m.cut.is_empty() && m.retract.end <= plan.moves.len() {
+                found.push(PassPath {
+                    thread,
+                    pass,
+                    lead_in: m.approach.clone(),
+                    cut: m.cut.clone(),
+                    tail: m.retract.clone(),
+                });
+            }
+        }
+    }
+    found.sort_by_key(|p| p.cut.start);
+    found
+}
+
 /// What the side section is drawn from besides the plan: the motions of each
 /// pass, which motions are drawn and which belong to a pass, and the feed index.
 pub struct Layout {
@@ -87,7 +139,7 @@ impl Layout {
         let drawn = plan.moves.len().min(MAX_MOVES_DRAWN);
         let mut owner = vec![false; drawn];
         for p in &paths {
-            for k in p.lead_in.start..p.tail.end {
+            for k in p.indices() {
                 if let Some(o) = owner.get_mut(k) {
                     *o = true;
                 }
@@ -109,7 +161,7 @@ impl Layout {
             })
             .collect();
         let mut found = vec![false; base.last().map_or(0, |b| b + plan.threads.last().map_or(0, |t| t.passes.len()))];
-        for p in self.paths.iter().filter(|p| p.tail.end <= self.drawn) {
+        for p in self.paths.iter().filter(|p| p.end() <= self.drawn) {
             found[base[p.thread] + p.pass] = true;
         }
         let mut out = Vec::new();
@@ -211,7 +263,7 @@ pub fn side(plan: &Plan) -> Scene {
     if let Some(note) = capped_note(plan, drawn) {
         front.push((note, false));
     }
-    for p in layout.paths.iter().filter(|p| p.tail.end <= drawn) {
+    for p in layout.paths.iter().filter(|p| p.end() <= drawn) {
         pass_items(plan, p, &mut scene);
     }
     for (ti, pi) in layout.unmatched(plan) {
@@ -252,7 +304,7 @@ fn pass_points(p: &Pass) -> Vec<Pt> {
 /// The items of one matched pass: its rapids, cut, run-out and screw-in.
 pub fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
     let pass = &plan.threads[p.thread].passes[p.pass];
-    for k in p.lead_in.start..p.tail.end {
+    for k in p.indices() {
         let m = &plan.moves[k];
         let style = match m.kind {
             MoveKind::Rapid => Style::Rapid,

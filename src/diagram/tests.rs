@@ -1,15 +1,15 @@
 //! Scene tests on real programs and on a cycle-shaped plan.
 
 use super::packed::{STRIDE, pack};
-use super::paths::pass_paths;
 use super::scene::{Item, Scene, Shape, Style};
+use super::side::pass_paths;
 use super::side::{Band, FeedIndex, deltas, work_extent, work_extent_in};
 use super::starts::{RULER_LEN, RULER_X, starts_of};
 use super::tooth::cuts;
 use super::*;
 use crate::motion::{Move, MoveKind, Point};
 use crate::plan::{Plan, Units, plan_default};
-use crate::thread::{Axis, CrestSource, Infeed, Pass, Role, Source, Thread, ThreadKind};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Thread, ThreadKind};
 use crate::{Dialect, Settings};
 
 const O1006: &str = include_str!("../../examples/o1006.nc");
@@ -162,17 +162,19 @@ fn cycle_plan() -> Plan {
             let to = Point::new(x, 20.0 + shift + dz);
             let run = Point::new(x + 2.0, 17.0 + shift + dz);
             let seq = [
-                (MoveKind::Rapid, a, Point::new(screw.x, a.z)),
-                (MoveKind::Rapid, Point::new(screw.x, a.z), screw),
+                (MoveKind::Rapid, a, screw),
                 (MoveKind::ScrewIn, screw, from),
                 (MoveKind::Thread, from, to),
                 (MoveKind::Runout, to, run),
                 (MoveKind::Rapid, run, Point::new(a.x, run.z)),
                 (MoveKind::Rapid, Point::new(a.x, run.z), a),
             ];
+            let base = moves.len();
             for (kind, f, t) in seq {
                 moves.push(Move { kind, from: f, to: t, line, ..Move::default() });
             }
+            let pass_moves =
+                PassMoves { approach: base..base + 1, cut: base + 1..base + 4, retract: base + 4..base + 6 };
             passes.push(Pass {
                 start,
                 index: i as u32 + 1,
@@ -188,6 +190,7 @@ fn cycle_plan() -> Plan {
                 shift,
                 angle: 180.0 * (start - 1) as f64,
                 area: crate::thread::v_area(60.0, prev, d),
+                moves: pass_moves,
             });
             prev = d;
         }
@@ -216,20 +219,17 @@ fn cycle_plan() -> Plan {
 }
 
 #[test]
-fn cycle_passes_split_their_shared_line_into_paths() {
+fn cycle_passes_are_drawn_from_their_own_motions() {
     let plan = cycle_plan();
     let paths = pass_paths(&plan);
     assert_eq!(paths.len(), 8);
     for (k, p) in paths.iter().enumerate() {
         assert_eq!((p.thread, p.pass), (0, k));
-        let base = 1 + 7 * k;
-        // The first pass takes both rapids from A; later passes only the last one.
-        // (pass 1 also takes the approach to A: line 2 is the cycle's first block).
-        let lead_start = if k == 0 { 0 } else { base + 1 };
-        assert_eq!(p.lead_in, lead_start..base + 2, "pass {k}");
-        assert_eq!(p.cut, base + 2..base + 5, "pass {k}");
-        let tail_end = if k == 7 { base + 7 } else { base + 8 };
-        assert_eq!(p.tail, base + 5..tail_end, "pass {k}");
+        let base = 1 + 6 * k;
+        assert_eq!(
+            (p.lead_in.clone(), p.cut.clone(), p.tail.clone()),
+            (base..base + 1, base + 1..base + 4, base + 4..base + 6)
+        );
     }
     let scene = side(&plan);
     let styles: Vec<Style> = scene.of_pass(0, 1).map(|i| i.style).collect();
@@ -240,7 +240,6 @@ fn cycle_passes_split_their_shared_line_into_paths() {
             Style::ScrewIn,
             Style::Cut,
             Style::Runout,
-            Style::Rapid,
             Style::Rapid,
             Style::Rapid,
             Style::Runout,

@@ -9,63 +9,64 @@
 //! a shoulder) or spiral (`G30 U W`: X retracts U, a diameter, over the
 //! last W of the thread).
 
+use super::reader::g_span;
+use super::{Command, Controller, Reader, Rules, basic_g_code, g32};
 use crate::block::{Block, Word};
+use crate::cycle::{classify, split_runout};
 use crate::diagnostic::Code;
-use crate::g32::{classify, split_runout};
-use crate::group::{Seg, cut_piece};
-use crate::interp::Interp;
+use crate::dialect::{Dialect, letters};
+use crate::event::Seg;
+use crate::gcode::{G, Group};
 use crate::num::fmt;
 use crate::settings::P;
+use crate::span::Span;
+use crate::state::{Motion, Tail};
 use crate::thread::{Axis, Source};
 
-/// The G30 run-out mode.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub enum Tail {
-    /// Standard run-out (G30 alone, or no G30).
-    #[default]
-    Standard,
-    /// No run-out (`G30 U0 W0`).
-    None,
-    /// Spiral tail: retract `u` (diameter) over the last `w` of Z.
-    Spiral {
-        /// Diameter retract.
-        u: f64,
-        /// Axial length.
-        w: f64,
+/// The Renhe controller.
+pub static CONTROLLER: Controller = Controller {
+    rules: Rules {
+        dialect: Dialect::Renhe,
+        addresses: letters(b"FGIKLMNOPQRSTUWXZ"),
+        increments_without_point: None,
+        shared_f_register: false,
     },
+    g_code,
+    command,
+    tool_angle: None,
+};
+
+fn g_code(code10: i64) -> Option<(Group, G)> {
+    match code10 {
+        300 => Some((Group::RunoutMode, G::RenheRunout)),
+        320 => Some((Group::Motion, G::RenheInch)),
+        330 => Some((Group::Motion, G::RenheMetric)),
+        _ => basic_g_code(code10),
+    }
 }
 
-/// Renhe modal state.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct RenheState {
-    /// The G30 mode.
-    pub tail: Tail,
-    /// Direction (−1/+1) and line of the last G00/G01 move in X.
-    pub last_x_feed: Option<(f64, u32)>,
-    /// Last spindle advice given (S, pitch), to say it once.
-    warned: Option<(u64, u64)>,
-}
-
-/// Notes a G00/G01 X move (the run-out goes the other way).
-pub fn note_x_feed(it: &mut Interp, dx: f64, line: u32) {
-    if dx.abs() > 1e-12 {
-        it.renhe.last_x_feed = Some((dx.signum(), line));
+fn command(r: &mut Reader, b: &Block, c: Command) {
+    match c {
+        Command::Motion(Motion::RenheInch) => thread_block(r, b, true),
+        Command::Motion(Motion::RenheMetric) => thread_block(r, b, false),
+        Command::OneShot(G::RenheRunout, w) => g30(r, b, w),
+        _ => {}
     }
 }
 
 /// G30: sets the run-out mode.
-pub fn g30(it: &mut Interp, b: &Block, w: Word) {
-    if !it.check_words(b, b"UW", "G30") {
+fn g30(r: &mut Reader, b: &Block, w: &Word) {
+    if !r.check_words(b, b"UW", "G30") {
         return;
     }
     let u = b.get(b'U').map(|w| w.value());
     let wv = b.get(b'W').map(|w| w.value());
-    it.renhe.tail = match (u, wv) {
+    r.m.tail = match (u, wv) {
         (None, None) => Tail::Standard,
         (Some(u), Some(wv)) if u == 0.0 && wv == 0.0 => Tail::None,
         (Some(u), Some(wv)) => Tail::Spiral { u: u.abs(), w: wv.abs() },
         _ => {
-            it.diag(
+            r.diag(
                 Code::MissingWord,
                 w.span,
                 "G30 takes both U and W (a spiral tail), U0 W0 (no tail) or neither (standard)",
@@ -79,23 +80,22 @@ pub fn g30(it: &mut Interp, b: &Block, w: Word) {
 /// (0.25–12 mm); G32 F is threads per inch (3–33), the digit after the point
 /// being the denominator of a fraction (F11.2 = 11½) unless `renhe.inch_f` is
 /// `decimal`.
-fn lead(it: &mut Interp, b: &Block, inch: bool) -> Option<f64> {
+fn lead(r: &mut Reader, b: &Block, inch: bool) -> Option<f64> {
     let name = if inch { "G32" } else { "G33" };
     let Some(f) = b.get(b'F').copied() else {
-        if it.lead.is_none() {
-            let span = b.all(b'G').next().map_or(b.span, |w| w.span);
-            it.diag(
+        if r.m.lead.is_none() {
+            r.diag(
                 Code::MissingLead,
-                span,
+                g_span(b),
                 format!("{name} without F: give the {}", if inch { "threads per inch" } else { "pitch" }),
             );
         }
-        return it.lead;
+        return r.m.lead;
     };
     let lead = if inch {
-        let tpi = if it.s.int(P::RenheInchF) == 0 { fraction_tpi(&f) } else { Some(f.value()) };
+        let tpi = if r.s.int(P::RenheInchF) == 0 { fraction_tpi(&f) } else { Some(f.value()) };
         let Some(tpi) = tpi.filter(|t| (3.0..=33.0).contains(t)) else {
-            it.diag(
+            r.diag(
                 Code::ValueOutOfRange,
                 f.span,
                 format!(
@@ -109,12 +109,12 @@ fn lead(it: &mut Interp, b: &Block, inch: bool) -> Option<f64> {
     } else {
         let p = f.value();
         if !(0.25..=12.0).contains(&p) {
-            it.diag(Code::ValueOutOfRange, f.span, format!("{}: G33 takes a pitch of 0.25..12 mm", f.display()));
+            r.diag(Code::ValueOutOfRange, f.span, format!("{}: G33 takes a pitch of 0.25..12 mm", f.display()));
             return None;
         }
         p
     };
-    it.lead = Some(lead);
+    r.m.lead = Some(lead);
     Some(lead)
 }
 
@@ -134,14 +134,12 @@ fn fraction_tpi(f: &Word) -> Option<f64> {
     }
 }
 
-/// A Renhe G32 (inch, `inch`) or G33 (metric) block.
-pub fn thread_block(it: &mut Interp, b: &Block, inch: bool) {
-    let name = if inch { "G32" } else { "G33" };
-    let g_span = b.all(b'G').next().map_or(b.span, |w| w.span);
+/// E18-03 and the words of a thread block: incremental U and W only.
+fn incremental_only(r: &mut Reader, b: &Block, name: &str) -> bool {
     let mut abs = false;
     for l in [b'X', b'Z'] {
         if let Some(w) = b.get(l) {
-            it.diag(
+            r.diag(
                 Code::E18_03,
                 w.span,
                 format!(
@@ -153,81 +151,94 @@ pub fn thread_block(it: &mut Interp, b: &Block, inch: bool) {
             abs = true;
         }
     }
-    if abs || !it.check_words(b, b"UW", name) {
-        it.end_thread_chain();
+    !abs && r.check_words(b, b"UW", name)
+}
+
+/// A Renhe G32 (inch, `inch`) or G33 (metric) block.
+fn thread_block(r: &mut Reader, b: &Block, inch: bool) {
+    let name = if inch { "G32" } else { "G33" };
+    let g_span = g_span(b);
+    if !incremental_only(r, b, name) {
+        r.end_chain();
         return;
     }
-    let Some(lead) = lead(it, b, inch) else {
-        it.end_thread_chain();
+    let Some(lead) = lead(r, b, inch) else {
+        r.end_chain();
         return;
     };
     let u = b.get(b'U').map_or(0.0, |w| w.value());
     let w = b.get(b'W').map_or(0.0, |w| w.value());
     if !(w.abs() > u.abs() && w.abs() > 4.0) {
         let span = b.get(b'W').or(b.get(b'U')).map_or(g_span, |w| w.span);
-        it.diag(
+        r.diag(
             Code::E18_04,
             span,
             format!("E18-04: the thread length |W| = {} must exceed |U| = {} and 4 mm", fmt(w.abs()), fmt(u.abs())),
         );
-        it.end_thread_chain();
+        r.end_chain();
         return;
     }
-    let Some((dir, _)) = it.renhe.last_x_feed else {
-        it.diag(
+    let Some((dir, _)) = r.m.last_x_feed else {
+        r.diag(
             Code::E18_05,
             g_span,
             format!("E18-05: {name} needs an X feed (G00 or G01 with U/X) before it to set the run-out direction"),
         );
-        it.end_thread_chain();
+        r.end_chain();
         return;
     };
-    spindle_advice(it, lead, g_span);
-    let start = it.current(b.span);
+    spindle_advice(r, lead, g_span);
+    let start = r.current(b.span);
     let end = start.offset_r(u / 2.0, w);
     let Some((kind, long)) = classify(start, end) else { return };
-    // The run-out retracts opposite to the last X feed.
-    let out = -dir;
-    let runout = match it.renhe.tail {
-        Tail::None => None,
+    let (to, runout_to) = match tail(r, w, g_span) {
+        // The run-out retracts opposite to the last X feed.
+        Some((j, k)) => {
+            let (c, o) = split_runout(start, end, Axis::Z, -dir * j, k);
+            (c, Some(o))
+        }
+        None => (end, None),
+    };
+    let seg = Seg { from: start, to, runout_to, kind, long };
+    g32::piece(r, Source::Renhe, lead, 0.0, seg, end, b, 60.0);
+}
+
+/// The tail (radial J, axial K) of the G30 mode for a thread of length `w`; none
+/// (and an alarm) when it is longer than the thread.
+fn tail(r: &mut Reader, w: f64, span: Span) -> Option<(f64, f64)> {
+    let (j, k) = match r.m.tail {
+        Tail::None => return None,
         Tail::Standard => {
-            let j = it.s.get(P::RenheRunout);
-            let k = j / it.s.get(P::RenheRunoutAngle).to_radians().tan();
-            Some((j, k))
+            let j = r.s.get(P::RenheRunout);
+            (j, j / r.s.get(P::RenheRunoutAngle).to_radians().tan())
         }
-        Tail::Spiral { u, w } => Some((u / 2.0, w)),
+        Tail::Spiral { u, w } => (u / 2.0, w),
     };
-    let (cut_end, tail_end) = match runout {
-        Some((j, k)) if j > 0.0 && k > 0.0 => {
-            if k > w.abs() + 1e-9 {
-                it.diag(
-                    Code::RunoutTooLong,
-                    g_span,
-                    format!("the tail is {} long, more than the thread's |W| = {}", fmt(k), fmt(w.abs())),
-                );
-                (end, None)
-            } else {
-                let (c, o) = split_runout(start, end, Axis::Z, out * j, k);
-                (c, Some(o))
-            }
-        }
-        _ => (end, None),
-    };
-    let seg = Seg { from: start, to: cut_end, runout_to: tail_end, kind, long };
-    cut_piece(it, Source::Renhe, lead, 0.0, seg, end, b.line, b.span);
+    if !(j > 0.0 && k > 0.0) {
+        return None;
+    }
+    if k > w.abs() + 1e-9 {
+        r.diag(
+            Code::RunoutTooLong,
+            span,
+            format!("the tail is {} long, more than the thread's |W| = {}", fmt(k), fmt(w.abs())),
+        );
+        return None;
+    }
+    Some((j, k))
 }
 
 /// The manual's spindle advice n ≤ 2300/t − 60 (t: pitch in mm).
-fn spindle_advice(it: &mut Interp, pitch: f64, span: crate::span::Span) {
-    let Some(s) = it.spindle.filter(|s| *s > 0.0 && !it.css) else { return };
+fn spindle_advice(r: &mut Reader, pitch: f64, span: Span) {
+    let Some(s) = r.m.spindle.filter(|s| *s > 0.0 && !r.m.css) else { return };
     let max = 2300.0 / pitch - 60.0;
     if s > max {
         let key = (s.to_bits(), pitch.to_bits());
-        if it.renhe.warned == Some(key) {
+        if r.m.spindle_warned == Some(key) {
             return;
         }
-        it.renhe.warned = Some(key);
-        it.diag(
+        r.m.spindle_warned = Some(key);
+        r.diag(
             Code::SpindleSpeed,
             span,
             format!(
@@ -244,7 +255,6 @@ fn spindle_advice(it: &mut Interp, pitch: f64, span: crate::span::Span) {
 mod tests {
     use super::*;
     use crate::block::Number;
-    use crate::span::Span;
 
     fn f(v: f64, frac_digits: u8) -> Word {
         Word {

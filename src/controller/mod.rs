@@ -1,0 +1,132 @@
+//! The controllers, one module each: what their words mean, their G codes,
+//! unit rules, parameters and alarms. Each is a [`Controller`] table; the
+//! interpreter reads every block through the table of the dialect in force
+//! and nothing outside these modules asks which dialect it is.
+//!
+//! GSK980TDc and Fanuc 0i share the G32, G92 and G76 readers ([`g32`],
+//! [`g92`], [`g76`]), which take the differences as data ([`ThreadRules`]);
+//! G78 is GSK's own, Renhe's G30/G32/G33 are Renhe's.
+
+pub mod fanuc0i;
+pub mod g32;
+pub mod g76;
+pub mod g92;
+pub mod gsk980tdc;
+pub mod reader;
+pub mod renhe;
+pub mod words;
+
+pub use reader::{Reader, Rules};
+
+use crate::block::{Block, Word};
+use crate::dialect::Dialect;
+use crate::gcode::{G, Group};
+use crate::settings::P;
+use crate::state::Motion;
+
+/// A controller: its rules and the commands it reads itself.
+pub struct Controller {
+    /// Unit rules and addresses.
+    pub rules: Rules,
+    /// Modal group and meaning of a G code (the number × 10: G12.1 is 121).
+    pub g_code: fn(i64) -> Option<(Group, G)>,
+    /// Reads a thread or cycle block of this controller.
+    pub command: fn(&mut Reader, &Block, Command),
+    /// The parameter holding the tool angle of threads cut block by block
+    /// (`None`: 60°).
+    pub tool_angle: Option<P>,
+}
+
+/// A block the interpreter hands to its controller.
+#[derive(Clone, Copy, Debug)]
+pub enum Command<'b> {
+    /// A block with axis words in a thread motion mode (G32, G92, Renhe G32/G33).
+    Motion(Motion),
+    /// A one-shot thread or cycle code (G76, G78, Renhe G30) and its word.
+    OneShot(G, &'b Word),
+}
+
+/// Every controller, in [`Dialect::ALL`] order.
+const ALL: [&Controller; 3] = [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER];
+
+/// The controller of a dialect.
+pub fn of(d: Dialect) -> &'static Controller {
+    ALL[d.index()]
+}
+
+impl Controller {
+    /// The tool angle of threads cut block by block, as the program has it now.
+    pub fn tool_angle(&self, r: &Reader) -> f64 {
+        self.tool_angle.map_or(60.0, |p| r.param(p))
+    }
+}
+
+/// G codes every controller reads alike: G00–G03, G04.
+pub fn basic_g_code(code10: i64) -> Option<(Group, G)> {
+    Some(match code10 {
+        0 => (Group::Motion, G::Rapid),
+        10 => (Group::Motion, G::Linear),
+        20 => (Group::Motion, G::ArcCw),
+        30 => (Group::Motion, G::ArcCcw),
+        40 => (Group::OneShot, G::Dwell),
+        _ => return None,
+    })
+}
+
+/// G codes GSK980TDc and Fanuc 0i-TF read alike (their own are added by each).
+pub fn lathe_g_code(code10: i64) -> Option<(Group, G)> {
+    use G::*;
+    use Group::*;
+    if let Some(found) = basic_g_code(code10) {
+        return Some(found);
+    }
+    let ns = |what, returns| NotSimulated { what, returns };
+    Some(match code10 {
+        200 => (Units, Inch),
+        210 => (Units, Metric),
+        280 => (OneShot, RefReturn),
+        320 => (Motion, Thread),
+        340 => (Motion, ns("G34 variable-lead thread", false)),
+        400 => (NoseComp, CompOff),
+        410 | 420 => (NoseComp, CompOn),
+        500 => (OneShot, SetCoord),
+        650 => (OneShot, ns("G65 macro call", true)),
+        700 => (OneShot, ns("G70 finishing cycle", true)),
+        710 => (OneShot, ns("G71 stock removal in turning", true)),
+        720 => (OneShot, ns("G72 stock removal in facing", true)),
+        730 => (OneShot, ns("G73 pattern repeating", true)),
+        740 => (OneShot, ns("G74 face grooving / peck drilling", true)),
+        750 => (OneShot, ns("G75 grooving cycle", true)),
+        760 => (OneShot, G76),
+        900 => (Motion, G90),
+        920 => (Motion, G92),
+        940 => (Motion, G94),
+        960 => (Group::Css, G::Css),
+        970 => (Group::Css, CssOff),
+        980 => (FeedMode, PerMinute),
+        990 => (FeedMode, PerRev),
+        300 => (OneShot, ns("G30 second reference return", false)),
+        310 => (OneShot, ns("G31 skip", false)),
+        71 | 121 | 131 => (Setup, ns("polar / cylindrical interpolation", false)),
+        _ => return None,
+    })
+}
+
+/// How the shared G32/G92/G76 readers differ between GSK980TDc and Fanuc 0i.
+#[derive(Debug)]
+pub struct ThreadRules {
+    /// Words G32 takes (besides G, M, S, T, F).
+    pub g32_words: &'static [u8],
+    /// `I` gives the lead in threads per inch.
+    pub tpi_word: bool,
+    /// G32 takes a `J`/`K` run-out, modal across consecutive thread blocks.
+    pub g32_runout: bool,
+    /// Unit of the start angle `Q`.
+    pub angle: words::Unit,
+    /// Unit of the cycle depths `P(k)`, `Q(Δd)`, `Q(Δdmin)`.
+    pub depth: words::Unit,
+    /// The G92 form.
+    pub g92: g92::Form,
+    /// The G76 form.
+    pub g76: g76::Form,
+}

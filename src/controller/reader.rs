@@ -1,0 +1,306 @@
+//! Reading one block: the modal state, the settings and the controller's
+//! unit rules, with the events and diagnostics the block gives. Controller
+//! modules and the interpreter read words through a [`Reader`]; none of
+//! them sees the plan being built.
+
+use crate::block::{Block, Word};
+use crate::diagnostic::{Code, Diagnostics};
+use crate::dialect::{Dialect, letters};
+use crate::event::Event;
+use crate::motion::{Move, MoveKind, Point};
+use crate::num::{EPS, fmt};
+use crate::settings::{P, Settings};
+use crate::span::Span;
+use crate::state::{Modal, Position, Target, once};
+
+/// How a controller reads numbers and registers: the data its word helpers need.
+#[derive(Debug)]
+pub struct Rules {
+    /// The dialect.
+    pub dialect: Dialect,
+    /// Letters that are addresses of this controller (bit 0 = A).
+    pub addresses: u32,
+    /// A length without a decimal point is in least input increments unless
+    /// this parameter (DPI, "calculator input") is set; `None`: always a whole unit.
+    pub increments_without_point: Option<P>,
+    /// One F register serves feed and thread lead (a feed's F becomes the lead).
+    pub shared_f_register: bool,
+}
+
+impl Rules {
+    /// Whether `letter` (uppercase ASCII) is an address of this controller.
+    pub fn has_address(&self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.addresses & (1 << (letter - b'A')) != 0
+    }
+
+    /// The controller's display title.
+    pub fn title(&self) -> &'static str {
+        self.dialect.title()
+    }
+}
+
+/// Letters every block may carry besides its command's own words.
+const ALWAYS: &[u8] = b"GMSTF";
+
+/// One block's view of the reading: state to change, settings and rules to
+/// read by, events and diagnostics to give.
+pub struct Reader<'a> {
+    /// The modal state.
+    pub m: &'a mut Modal,
+    /// Settings in force.
+    pub s: &'a Settings,
+    /// The controller's unit rules.
+    pub rules: &'static Rules,
+    /// Events of the block.
+    pub events: &'a mut Vec<Event>,
+    /// Diagnostics.
+    pub diags: &'a mut Diagnostics,
+}
+
+impl Reader<'_> {
+    /// Records a diagnostic.
+    pub fn diag(&mut self, code: Code, span: Span, msg: impl Into<String>) {
+        self.diags.push(code, span, msg);
+    }
+
+    /// A parameter's value in force (as the program rewrote it, else the setting).
+    pub fn param(&self, p: P) -> f64 {
+        self.m.param(self.s, p)
+    }
+
+    /// Gives an event.
+    pub fn emit(&mut self, e: Event) {
+        self.events.push(e);
+    }
+
+    /// Ends the continuous thread being cut, if any.
+    pub fn end_chain(&mut self) {
+        if self.m.chain {
+            self.m.chain = false;
+            self.events.push(Event::Break);
+        }
+    }
+
+    /// Ends the continuous thread and closes the threads being grouped.
+    pub fn close(&mut self) {
+        self.end_chain();
+        self.events.push(Event::Close);
+    }
+
+    /// The current position, assuming `start.x`/`start.z` for unknown axes (reported once).
+    pub fn current(&mut self, span: Span) -> Point {
+        let pos = &mut self.m.pos;
+        if !(pos.kx && pos.kz) {
+            let mut which = Vec::new();
+            if !pos.kx {
+                pos.p.x = self.s.get(P::StartX);
+                pos.kx = true;
+                which.push(format!("X{}", fmt(pos.p.x)));
+            }
+            if !pos.kz {
+                pos.p.z = self.s.get(P::StartZ);
+                pos.kz = true;
+                which.push(format!("Z{}", fmt(pos.p.z)));
+            }
+            if self.m.first(once::START) {
+                self.diag(
+                    Code::StartAssumed,
+                    span,
+                    format!(
+                        "tool position unknown (no absolute X/Z or G50 before this block): start taken as {} (settings start.x, start.z)",
+                        which.join(" ")
+                    ),
+                );
+            }
+        }
+        self.m.pos.p
+    }
+
+    /// Reads a length word in program units, by the controller's decimal-point rule.
+    pub fn length(&mut self, w: &Word) -> f64 {
+        let increments = self.rules.increments_without_point.is_some_and(|dpi| !self.s.flag(dpi));
+        if !increments || w.num.has_point {
+            return w.value();
+        }
+        let inch = self.m.inch;
+        let v = w.value() * self.s.length_increment(inch);
+        let unit = if inch { "in" } else { "mm" };
+        self.diags.push_with(Code::NoDecimalPoint, w.span, || {
+            format!(
+                "{} has no decimal point: with parameter 3401#0 (DPI) = 0 it means {} {unit}, not {} {unit}; write {}{}. if you meant {}",
+                w.display(),
+                fmt(v),
+                fmt(w.value()),
+                w.letter(),
+                fmt(w.value()),
+                fmt(w.value())
+            )
+        });
+        v
+    }
+
+    /// Reads an X/U word as a diameter (radius programming doubles it).
+    pub fn x_len(&mut self, w: &Word) -> f64 {
+        let v = self.length(w);
+        if self.s.radius_x() { 2.0 * v } else { v }
+    }
+
+    /// Whether `X`/`Z` and `U`/`W` conflict in `b`; reports and returns true when they do.
+    pub fn axis_conflict(&mut self, b: &Block) -> bool {
+        let mut bad = false;
+        for (abs, inc) in [(b'X', b'U'), (b'Z', b'W')] {
+            if let (Some(a), Some(i)) = (b.get(abs), b.get(inc)) {
+                self.diag(
+                    Code::AxisConflict,
+                    a.span.cover(i.span),
+                    format!(
+                        "{} and {} in one block: give the axis once, absolute or incremental",
+                        a.display(),
+                        i.display()
+                    ),
+                );
+                bad = true;
+            }
+        }
+        bad
+    }
+
+    /// The end point of the block's X/Z/U/W words from the current position.
+    pub fn target(&mut self, b: &Block) -> Target {
+        let mut t = Target { p: self.m.pos.p, has_x: false, has_z: false };
+        if let Some(w) = b.get(b'X') {
+            t.p.x = self.x_len(w);
+            t.has_x = true;
+        } else if let Some(w) = b.get(b'U') {
+            let d = self.x_len(w);
+            if !self.m.pos.kx {
+                self.current(w.span);
+            }
+            t.p.x = self.m.pos.p.x + d;
+            t.has_x = true;
+        }
+        if let Some(w) = b.get(b'Z') {
+            t.p.z = self.length(w);
+            t.has_z = true;
+        } else if let Some(w) = b.get(b'W') {
+            let d = self.length(w);
+            if !self.m.pos.kz {
+                self.current(w.span);
+            }
+            t.p.z = self.m.pos.p.z + d;
+            t.has_z = true;
+        }
+        t
+    }
+
+    /// The motion to `t` from the current position, when it is known and moves.
+    pub fn motion_to(&self, kind: MoveKind, t: &Target, line: u32, span: Span) -> Option<Move> {
+        let from = self.m.pos;
+        let to = t.p;
+        let moves = (to.x - from.p.x).abs() > EPS || (to.z - from.p.z).abs() > EPS;
+        (from.kx && from.kz && moves && from.p.is_finite() && to.is_finite()).then_some(Move {
+            kind,
+            from: from.p,
+            to,
+            line,
+            span,
+            arc: None,
+        })
+    }
+
+    /// Moves the tool to `t` with a motion of `kind`.
+    pub fn go(&mut self, kind: MoveKind, t: &Target, line: u32, span: Span) {
+        if let Some(mv) = self.motion_to(kind, t, line, span) {
+            self.events.push(Event::Motion(mv));
+        }
+        self.arrive_at(t, line);
+    }
+
+    /// A G00 block's rapid to `t`: its motion (if the tool moves) and its
+    /// axis words, which tell an infeed from a retract or a return.
+    pub fn rapid(&mut self, t: &Target, line: u32, span: Span) {
+        let mv = self.motion_to(MoveKind::Rapid, t, line, span);
+        self.events.push(Event::Rapid { mv, x: t.has_x, z: t.has_z, line });
+        self.arrive_at(t, line);
+    }
+
+    fn arrive_at(&mut self, t: &Target, line: u32) {
+        let (kx, kz) = (t.has_x || self.m.pos.kx, t.has_z || self.m.pos.kz);
+        self.arrive(t.p, kx, kz, line);
+    }
+
+    /// Sets the position after a motion; tracks the direction of X motion.
+    pub fn arrive(&mut self, to: Point, kx: bool, kz: bool, line: u32) {
+        if self.m.pos.kx && kx {
+            let dx = to.x - self.m.pos.p.x;
+            if dx.abs() > EPS {
+                self.m.last_x = (dx.signum(), line);
+            }
+        }
+        self.m.pos = Position { p: to, kx, kz };
+    }
+
+    /// Checks that `b` has only words from `allowed` (plus G/M/S/T/F);
+    /// reports each other word and returns false if there was one.
+    #[inline(always)]
+    pub fn check_words(&mut self, b: &Block, allowed: &[u8], what: &str) -> bool {
+        // Inlined, the mask of a literal `allowed` folds to a constant.
+        let mask = letters(ALWAYS) | letters(allowed);
+        if b.words.iter().all(|w| mask & (1 << (w.letter - b'A')) != 0) {
+            return true;
+        }
+        self.report_words(b, mask, what)
+    }
+
+    #[cold]
+    fn report_words(&mut self, b: &Block, mask: u32, what: &str) -> bool {
+        let mut ok = true;
+        for w in &b.words {
+            if mask & (1 << (w.letter - b'A')) == 0 {
+                self.diag(Code::UnexpectedWord, w.span, format!("{what} does not take {}", w.display()));
+                ok = false;
+            }
+        }
+        ok
+    }
+
+    /// Sets the feed register from a non-thread block's F. With one F
+    /// register the same value is then the lead a following G32 uses.
+    pub fn set_feed(&mut self, v: f64, line: u32) {
+        self.m.feed = Some(v);
+        self.m.feed_line = line;
+        if self.rules.shared_f_register {
+            self.m.lead = Some(v);
+            self.m.lead_from_feed = Some(line);
+        }
+    }
+
+    /// Checks `lo ≤ v ≤ hi`, reporting at `w` otherwise.
+    pub fn in_range(&mut self, w: &Word, v: f64, lo: f64, hi: f64, what: &str) -> bool {
+        if v >= lo - EPS && v <= hi + EPS {
+            return true;
+        }
+        self.diag(
+            Code::ValueOutOfRange,
+            w.span,
+            format!("{}: {what} {} is outside {}..{}", w.display(), fmt(v), fmt(lo), fmt(hi)),
+        );
+        false
+    }
+}
+
+/// Span of the block's first G word, else of the block.
+pub fn g_span(b: &Block) -> Span {
+    b.all(b'G').next().map_or(b.span, |w| w.span)
+}
+
+/// Span of the block's axis words (for alarms about the motion itself).
+pub fn axis_span(b: &Block) -> Span {
+    let mut span: Option<Span> = None;
+    for w in &b.words {
+        if matches!(w.letter, b'X' | b'Z' | b'U' | b'W') {
+            span = Some(span.map_or(w.span, |s| s.cover(w.span)));
+        }
+    }
+    span.unwrap_or(b.span)
+}
