@@ -1,6 +1,6 @@
 //! The dialects screwcut reads: names and titles. What each controller does
 //! with a program — words, G codes, unit rules, parameters, alarms — is in
-//! its own module under [`crate::controller`].
+//! its own module under `controller`.
 
 use serde::Serialize;
 

@@ -1,5 +1,5 @@
 //! The G codes screwcut knows: their modal group and what they do. Which
-//! numbers a controller gives them is in its module ([`crate::controller`]).
+//! numbers a controller gives them is in its own module (`controller`).
 
 /// Modal group of a G code (numbering as on Fanuc/GSK where it exists).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -237,7 +237,7 @@ pub fn packed_key(p: &Packed) -> u64 {
 }
 
 /// The keys of a plan's drawn parts: each thread's, and the side section's
-/// (every motion and thread: all that [`super::side()`] reads).
+/// (every motion and thread: all that the side section reads).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PlanKeys {
     /// One key per thread, in plan order.

@@ -5,9 +5,9 @@
 //! lines, thread and pass it comes from, so that hovering a drawing
 //! highlights the program and the editor cursor highlights the drawing.
 //!
-//! - [`side()`]: the side section of the whole program ([`side`]).
-//! - [`tooth()`]: one thread space of one thread at large scale ([`tooth`]).
-//! - [`starts()`]: the start angles and axial offsets of one thread ([`starts`]).
+//! - [`side()`]: the side section of the whole program ([`side`](mod@side)).
+//! - [`tooth()`]: one thread space of one thread at large scale ([`tooth`](mod@tooth)).
+//! - [`starts()`]: the start angles and axial offsets of one thread ([`starts`](mod@starts)).
 //!
 //! [`fingerprint`] keys the parts of a plan these read, so that unchanged
 //! scenes need not be built or sent again.
