@@ -10,6 +10,7 @@
 //! acceleration clearances.
 
 use crate::diagnostic::{Code, Diagnostics};
+use crate::geom::Frame;
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::{EPS, fmt};
 use crate::settings::{P, Settings};
@@ -37,27 +38,6 @@ struct Piece {
     idx: usize,
     from: Point,
     to: Point,
-}
-
-fn short_of(long: Axis, p: Point) -> f64 {
-    match long {
-        Axis::Z => p.r(),
-        Axis::X => p.z,
-    }
-}
-
-fn long_of(long: Axis, p: Point) -> f64 {
-    match long {
-        Axis::Z => p.z,
-        Axis::X => p.r(),
-    }
-}
-
-/// Short-axis value of the line through `a`, `b` at long-axis position `l`.
-fn line_at(long: Axis, a: Point, b: Point, l: f64) -> f64 {
-    let (la, lb) = (long_of(long, a), long_of(long, b));
-    let (sa, sb) = (short_of(long, a), short_of(long, b));
-    if (lb - la).abs() < EPS { sa } else { sa + (sb - sa) * (l - la) / (lb - la) }
 }
 
 /// Fills depths, crest, roles and areas of the block-by-block threads and
@@ -117,15 +97,15 @@ fn finish_one(
     let deepest = t
         .passes
         .iter()
-        .max_by(|a, b| (short_of(long, a.from) * dir).total_cmp(&(short_of(long, b.from) * dir)))
+        .max_by(|a, b| (Frame(long).short(a.from) * dir).total_cmp(&(Frame(long).short(b.from) * dir)))
         .cloned()
         .expect("a thread has passes");
     let outline = outline_crest(t, moves, &deepest, h);
     let crest_at = |p: Point| -> f64 {
-        let l = long_of(long, p);
+        let l = Frame(long).long(p);
         match &outline {
-            Some(o) => line_at(long, o.from, o.to, l),
-            None => line_at(long, deepest.from, deepest.to, l) - dir * h,
+            Some(o) => Frame(long).line_at(o.from, o.to, l),
+            None => Frame(long).line_at(deepest.from, deepest.to, l) - dir * h,
         }
     };
     t.crest_source = if outline.is_some() { CrestSource::Outline } else { CrestSource::Assumed };
@@ -138,7 +118,7 @@ fn finish_one(
     let mut prev: Vec<f64> = vec![0.0; t.starts as usize];
     let mut max_depth = 0.0f64;
     for p in t.passes.iter_mut() {
-        let d = (short_of(long, p.from) - crest_at(p.from)) * dir;
+        let d = (Frame(long).short(p.from) - crest_at(p.from)) * dir;
         let si = p.start as usize - 1;
         p.depth = d;
         p.infeed = d - prev[si];
@@ -243,7 +223,7 @@ fn outline_crest(t: &Thread, moves: &[Move], deepest: &crate::thread::Pass, h: f
     let dir = t.depth_dir;
     let p0 = &t.passes[0];
     let (lo, hi) = {
-        let (a, b) = (long_of(long, p0.from), long_of(long, p0.to));
+        let (a, b) = (Frame(long).long(p0.from), Frame(long).long(p0.to));
         if a <= b { (a, b) } else { (b, a) }
     };
     let mut best: Option<(f64, Piece)> = None;
@@ -251,14 +231,14 @@ fn outline_crest(t: &Thread, moves: &[Move], deepest: &crate::thread::Pass, h: f
         if m.kind != MoveKind::Feed {
             continue;
         }
-        let (a, b) = (long_of(long, m.from), long_of(long, m.to));
+        let (a, b) = (Frame(long).long(m.from), Frame(long).long(m.to));
         let (ma, mb) = if a <= b { (a, b) } else { (b, a) };
         // Must run along the thread (not a facing move) and overlap it.
         if mb - ma < EPS || mb.min(hi) - ma.max(lo) < EPS {
             continue;
         }
         let mid = (ma.max(lo) + mb.min(hi)) / 2.0;
-        let v = line_at(long, m.from, m.to, mid);
+        let v = Frame(long).line_at(m.from, m.to, mid);
         // The crest is the outermost surface against the depth direction.
         let score = -v * dir;
         if best.as_ref().is_none_or(|(s, _)| score > *s) {
@@ -267,10 +247,10 @@ fn outline_crest(t: &Thread, moves: &[Move], deepest: &crate::thread::Pass, h: f
     }
     let (_, piece) = best?;
     // Plausible only if the first pass is below it and the deepest within twice the standard depth.
-    let c_first = line_at(long, piece.from, piece.to, long_of(long, p0.from));
-    let d_first = (short_of(long, p0.from) - c_first) * dir;
-    let c_deep = line_at(long, piece.from, piece.to, long_of(long, deepest.from));
-    let d_deep = (short_of(long, deepest.from) - c_deep) * dir;
+    let c_first = Frame(long).line_at(piece.from, piece.to, Frame(long).long(p0.from));
+    let d_first = (Frame(long).short(p0.from) - c_first) * dir;
+    let c_deep = Frame(long).line_at(piece.from, piece.to, Frame(long).long(deepest.from));
+    let d_deep = (Frame(long).short(deepest.from) - c_deep) * dir;
     if d_first < -EPS || d_deep > 2.0 * h + EPS {
         return None;
     }
@@ -289,7 +269,7 @@ fn clearance(
 ) {
     let long = t.long_axis;
     let dir = t.depth_dir;
-    let deep = |p: Point| short_of(long, p) * dir;
+    let deep = |p: Point| Frame(long).short(p) * dir;
     let above = |m: &Move| (deep(m.from) <= deep(deepest.from) + EPS) && (deep(m.to) <= deep(deepest.from) + EPS);
     // Extend the crest piece through contiguous turning moves the thread passes through.
     let (mut first, mut last) = (crest.idx, crest.idx);
@@ -311,12 +291,12 @@ fn clearance(
     let mut hi = f64::NEG_INFINITY;
     for m in &moves[first..=last] {
         for p in [m.from, m.to] {
-            lo = lo.min(long_of(long, p));
-            hi = hi.max(long_of(long, p));
+            lo = lo.min(Frame(long).long(p));
+            hi = hi.max(Frame(long).long(p));
         }
     }
     let p0 = &t.passes[0];
-    let (a, b) = (long_of(long, p0.from), long_of(long, p0.to));
+    let (a, b) = (Frame(long).long(p0.from), Frame(long).long(p0.to));
     let toward_minus = b < a;
     let (d1, d2) = if toward_minus { (a - hi, lo - b) } else { (lo - a, b - hi) };
     if d1 * mm < 2.0 - 1e-9 {

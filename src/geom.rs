@@ -25,18 +25,20 @@ impl Frame {
 
     /// (long, short) of a point.
     pub fn of(self, p: Point) -> DVec2 {
-        let v = p.zr();
-        match self.0 {
-            Axis::Z => v,
-            Axis::X => DVec2::new(v.y, v.x),
-        }
+        // The swap of a face thread's frame is its own inverse.
+        self.zr(p.zr())
     }
 
     /// The point at (long, short).
     pub fn point(self, v: DVec2) -> Point {
+        Point::from_zr(self.zr(v))
+    }
+
+    /// True coordinates (Z, radius) of the frame coordinates `v` = (long, short).
+    pub fn zr(self, v: DVec2) -> DVec2 {
         match self.0 {
-            Axis::Z => Point::from_zr(v),
-            Axis::X => Point::from_zr(DVec2::new(v.y, v.x)),
+            Axis::Z => v,
+            Axis::X => DVec2::new(v.y, v.x),
         }
     }
 

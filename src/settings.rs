@@ -27,12 +27,12 @@ pub enum Kind {
 pub struct Def {
     /// Canonical name (`No.058`, `3401#0`, `x_mode`).
     pub name: &'static str,
-    /// Dialects the setting belongs to (empty: all).
+    /// The controllers that have this parameter (empty: a previewer setting of every dialect).
     pub dialects: &'static [Dialect],
     /// Value type.
     pub kind: Kind,
-    /// Default for GSK980TDc, Fanuc 0i, Renhe.
-    pub defaults: [f64; 3],
+    /// Default value.
+    pub default: f64,
     /// Smallest accepted value.
     pub min: f64,
     /// Largest accepted value.
@@ -69,13 +69,13 @@ const fn d(
     name: &'static str,
     dialects: &'static [Dialect],
     kind: Kind,
-    defaults: [f64; 3],
+    default: f64,
     range: (f64, f64),
     unit: &'static str,
     help: &'static str,
     help_zh: &'static str,
 ) -> Def {
-    Def { name, dialects, kind, defaults, min: range.0, max: range.1, unit, help, help_zh }
+    Def { name, dialects, kind, default, min: range.0, max: range.1, unit, help, help_zh }
 }
 
 /// Choices of `x_mode`.
@@ -90,126 +90,126 @@ pub const FLANK_SIDES: &[&str] = &["minus-z", "plus-z"];
 pub const RENHE_INCH_F: &[&str] = &["fraction", "decimal"];
 
 params! {
-    XMode: d("x_mode", ALL, Kind::Choice(X_MODES), [0.0; 3], (0.0, 1.0), "",
+    XMode: d("x_mode", ALL, Kind::Choice(X_MODES), 0.0, (0.0, 1.0), "",
         "X and U are programmed as a diameter (0) or a radius (1). GSK and Fanuc parameter DIA; default diameter.",
         "X、U 按直径(0)或半径(1)编程，默认直径编程。");
-    Increment: d("increment", ALL, Kind::Choice(INCREMENTS), [0.0; 3], (0.0, 1.0), "",
+    Increment: d("increment", ALL, Kind::Choice(INCREMENTS), 0.0, (0.0, 1.0), "",
         "Least input increment: IS-B (0.001 mm, 0.0001 in, 0.001°) or IS-C (0.0001 mm, 0.00001 in, 0.0001°).",
         "最小输入增量：IS-B(0.001mm) 或 IS-C(0.0001mm)。");
-    BlockDelete: d("block_delete", ALL, Kind::Bool, [0.0; 3], (0.0, 1.0), "",
+    BlockDelete: d("block_delete", ALL, Kind::Bool, 0.0, (0.0, 1.0), "",
         "Block delete switch: 1 skips blocks that start with '/'.",
         "程序段选跳开关：1 时跳过以 / 开头的程序段。");
-    StartX: d("start.x", ALL, Kind::Float, [0.0; 3], (-1.0e6, 1.0e6), "diameter",
+    StartX: d("start.x", ALL, Kind::Float, 0.0, (-1.0e6, 1.0e6), "diameter",
         "X (diameter) assumed for an incremental move made before any absolute X or G50.",
         "在指定绝对 X 或 G50 之前的增量移动所假定的起点 X(直径)。");
-    StartZ: d("start.z", ALL, Kind::Float, [0.0; 3], (-1.0e6, 1.0e6), "",
+    StartZ: d("start.z", ALL, Kind::Float, 0.0, (-1.0e6, 1.0e6), "",
         "Z assumed for an incremental move made before any absolute Z or G50.",
         "在指定绝对 Z 或 G50 之前的增量移动所假定的起点 Z。");
-    ArcTolerance: d("arc.tolerance", ALL, Kind::Float, [0.01; 3], (0.0, 10.0), "program unit",
+    ArcTolerance: d("arc.tolerance", ALL, Kind::Float, 0.01, (0.0, 10.0), "program unit",
         "Largest difference between the start and end radius of an I/K arc before an alarm (Fanuc parameter 3410).",
         "圆弧起点、终点半径差的允许值。");
     // ---- GSK980TDc ----
-    No019: d("No.019", GSK, Kind::Int, [10.0, 10.0, 10.0], (0.0, 255.0), "0.1 lead",
+    No019: d("No.019", GSK, Kind::Int, 10.0, (0.0, 255.0), "0.1 lead",
         "Thread run-out (chamfer) width used when G78/G92/G76 give no J/K, in tenths of a lead; the run-out is at 45° (J = K).",
         "螺纹退尾宽度(0.1 导程)：G78/G92/G76 未指定 J、K 时按此参数退尾，J = K。");
-    No057: d("No.057", GSK, Kind::Int, [1.0; 3], (1.0, 99.0), "passes",
+    No057: d("No.057", GSK, Kind::Int, 1.0, (1.0, 99.0), "passes",
         "G76 finishing pass count m when the first G76 block gives none.",
         "G76 精车次数 m 的默认值。");
-    No058: d("No.058", GSK, Kind::Int, [60.0; 3], (0.0, 99.0), "°",
+    No058: d("No.058", GSK, Kind::Int, 60.0, (0.0, 99.0), "°",
         "Tool (thread) angle a for G76/G78 when P gives none.",
         "G76/G78 未输入 a 时的螺纹牙角度。");
-    No059: d("No.059", GSK, Kind::Int, [100.0; 3], (0.0, 999999.0), "increment",
+    No059: d("No.059", GSK, Kind::Int, 100.0, (0.0, 999999.0), "increment",
         "Minimum roughing cut Δdmin (radius) for G76/G78 when Q gives none, in least input increments.",
         "G76/G78 最小切削量 Δdmin(半径，最小输入增量)。");
-    No060: d("No.060", GSK, Kind::Int, [100.0; 3], (0.0, 999999.0), "increment",
+    No060: d("No.060", GSK, Kind::Int, 100.0, (0.0, 999999.0), "increment",
         "Finishing allowance d (radius) for G76/G78 when R gives none, in least input increments.",
         "G76/G78 精车余量 d(半径，最小输入增量)。");
-    No061: d("No.061", GSK, Kind::Int, [1.0; 3], (0.0, 1.0), "",
+    No061: d("No.061", GSK, Kind::Int, 1.0, (0.0, 1.0), "",
         "G78 depth mode m when P gives none: 0 equal depth, 1 degressive (Δd·√n).",
         "G78 切深方式：0 等距离进刀，1 递减式进刀。");
-    No062: d("No.062", GSK, Kind::Int, [0.0; 3], (0.0, 3.0), "",
+    No062: d("No.062", GSK, Kind::Int, 0.0, (0.0, 3.0), "",
         "G78 infeed mode r when P gives none: 0 radial (thread middle), 1 left flank, 2 right flank, 3 alternating.",
         "G78 切入方式：0 中线，1 左边，2 右边，3 交错。");
-    No107: d("No.107", GSK, Kind::Float, [0.0; 3], (0.0, 30000.0), "mm/min",
+    No107: d("No.107", GSK, Kind::Float, 0.0, (0.0, 30000.0), "mm/min",
         "G32 run-out: 0 = the run-out angle follows J/K; otherwise the short axis retracts at this speed and the angle follows from it and the thread feed (lead × S).",
         "0：退尾角度与 J、K 比值匹配；非 0：短轴以此速度退尾，角度由螺纹切削速度决定。");
-    No182_7: d("NO182.7", GSK, Kind::Bool, [0.0; 3], (0.0, 1.0), "",
+    No182_7: d("NO182.7", GSK, Kind::Bool, 0.0, (0.0, 1.0), "",
         "Unit of G32 Q (start angle) and G76/G78 P(k), Q(Δd), Q(Δdmin): 0 = least input increment (Q180 is 0.18°), 1 = mm and degrees.",
         "G32 起始角 Q 及 G76/G78 P(k)、Q(Δd)、Q(Δdmin) 的单位：0 最小输入增量，1 mm/度。");
-    G78MissingDigits: d("g78.missing_p_digits", GSK, Kind::Choice(MISSING_DIGITS), [0.0; 3], (0.0, 1.0), "",
+    G78MissingDigits: d("g78.missing_p_digits", GSK, Kind::Choice(MISSING_DIGITS), 0.0, (0.0, 1.0), "",
         "G78 P(m)(r)(a) shorter than four digits: the missing leading digits take their parameter (No.061, No.062) or read as 0.",
         "G78 P 少于四位时，未写出的位取参数值(parameter)或 0(zero)。");
-    G78DefaultD: d("g78.default_d", GSK, Kind::Int, [1.0; 3], (0.0, 99.0), "passes",
+    G78DefaultD: d("g78.default_d", GSK, Kind::Int, 1.0, (0.0, 99.0), "passes",
         "G78 finishing pass count when D is omitted.",
         "G78 省略 D 时的精车次数。");
-    FlankR1Side: d("flank.r1_side", GSK, Kind::Choice(FLANK_SIDES), [0.0; 3], (0.0, 1.0), "",
+    FlankR1Side: d("flank.r1_side", GSK, Kind::Choice(FLANK_SIDES), 0.0, (0.0, 1.0), "",
         "Which flank G78 r = 1 (left flank) feeds along in the drawing: the −Z side (default) or the +Z side.",
         "G78 r=1(左边切入)在图中对应 −Z 侧(默认)或 +Z 侧。");
-    ScrewInLeads: d("screw_in.leads", GSK, Kind::Float, [1.0; 3], (0.0, 100.0), "leads",
+    ScrewInLeads: d("screw_in.leads", GSK, Kind::Float, 1.0, (0.0, 100.0), "leads",
         "Length over which a G78 screw-in E ramps from E above the pass to its depth, in leads.",
         "G78 旋进 E 的斜入长度(导程数)。");
     // ---- Fanuc 0i ----
-    Fanuc3401_0: d("3401#0", FANUC, Kind::Bool, [0.0; 3], (0.0, 1.0), "",
+    Fanuc3401_0: d("3401#0", FANUC, Kind::Bool, 0.0, (0.0, 1.0), "",
         "DPI: 0 = a number without a decimal point is in least input increments (X75 = 0.075 mm); 1 = calculator input (X75 = 75 mm).",
         "DPI：0 无小数点的数按最小输入增量(X75 = 0.075mm)；1 计算器输入。");
-    Fanuc5130: d("5130", FANUC, Kind::Int, [10.0; 3], (0.0, 127.0), "0.1 lead",
+    Fanuc5130: d("5130", FANUC, Kind::Int, 10.0, (0.0, 127.0), "0.1 lead",
         "G92/G76 thread chamfer (run-out) length in tenths of a lead; G76's r digits override it.",
         "G92/G76 螺纹倒角量(0.1 导程)。");
-    Fanuc5131: d("5131", FANUC, Kind::Float, [45.0; 3], (1.0, 89.0), "°",
+    Fanuc5131: d("5131", FANUC, Kind::Float, 45.0, (1.0, 89.0), "°",
         "G92/G76 thread chamfer angle.",
         "G92/G76 螺纹倒角角度。");
-    Fanuc5140: d("5140", FANUC, Kind::Int, [100.0; 3], (0.0, 999999.0), "increment",
+    Fanuc5140: d("5140", FANUC, Kind::Int, 100.0, (0.0, 999999.0), "increment",
         "G76 minimum cut Δdmin when the first block is omitted, in least input increments.",
         "G76 最小切深(最小输入增量)。");
-    Fanuc5141: d("5141", FANUC, Kind::Int, [100.0; 3], (0.0, 999999.0), "increment",
+    Fanuc5141: d("5141", FANUC, Kind::Int, 100.0, (0.0, 999999.0), "increment",
         "G76 finishing allowance d when the first block is omitted, in least input increments.",
         "G76 精车余量(最小输入增量)。");
-    Fanuc5142: d("5142", FANUC, Kind::Int, [1.0; 3], (1.0, 99.0), "passes",
+    Fanuc5142: d("5142", FANUC, Kind::Int, 1.0, (1.0, 99.0), "passes",
         "G76 finishing pass count m when the first block is omitted.",
         "G76 精车次数。");
-    Fanuc5143: d("5143", FANUC, Kind::Int, [60.0; 3], (0.0, 99.0), "°",
+    Fanuc5143: d("5143", FANUC, Kind::Int, 60.0, (0.0, 99.0), "°",
         "G76 tool angle a when the first block is omitted.",
         "G76 刀尖角度。");
     // ---- Renhe ----
-    RenheRunout: d("renhe.runout", RENHE, Kind::Float, [1.2; 3], (0.0, 100.0), "mm",
+    RenheRunout: d("renhe.runout", RENHE, Kind::Float, 1.2, (0.0, 100.0), "mm",
         "Standard run-out (G30 alone or no G30): radial retract at the end of a thread.",
         "标准退尾(无 G30 或 G30 无参数)的径向退尾量。");
-    RenheRunoutAngle: d("renhe.runout_angle", RENHE, Kind::Float, [45.0; 3], (1.0, 89.0), "°",
+    RenheRunoutAngle: d("renhe.runout_angle", RENHE, Kind::Float, 45.0, (1.0, 89.0), "°",
         "Angle of the standard run-out to the thread axis.",
         "标准退尾角度。");
-    RenheInchF: d("renhe.inch_f", RENHE, Kind::Choice(RENHE_INCH_F), [0.0; 3], (0.0, 1.0), "",
+    RenheInchF: d("renhe.inch_f", RENHE, Kind::Choice(RENHE_INCH_F), 0.0, (0.0, 1.0), "",
         "How G32 F is read: 'fraction' (F11.2 = 11 1/2 TPI, the digit after the point is the denominator) or 'decimal' (F11.2 = 11.2 TPI).",
         "G32 F 的读法：fraction(F11.2 = 11½ 牙/英寸) 或 decimal。");
     // ---- textbook advice ----
-    DepthFactor: d("textbook.depth_factor", ALL, Kind::Float, [1.3; 3], (0.0, 10.0), "× pitch",
+    DepthFactor: d("textbook.depth_factor", ALL, Kind::Float, 1.3, (0.0, 10.0), "× pitch",
         "Diameter depth of a 60° thread as a multiple of the pitch (d = D − 1.3·P); used to assume the crest diameter of a manual G32 thread whose major diameter the program does not turn.",
         "螺纹牙深系数(直径)：d = D − 1.3P。");
-    Advice: d("textbook.advice", ALL, Kind::Bool, [1.0; 3], (0.0, 1.0), "",
+    Advice: d("textbook.advice", ALL, Kind::Bool, 1.0, (0.0, 1.0), "",
         "Emit the textbook's advice (depth 1.3·P, table 4-3 infeeds, δ1/δ2 clearances).",
         "输出教材建议(牙深、表 4-3、δ1/δ2)。");
-    GroupMaxInfeed: d("group.max_infeed", ALL, Kind::Float, [1.0; 3], (0.0, 100.0), "leads",
+    GroupMaxInfeed: d("group.max_infeed", ALL, Kind::Float, 1.0, (0.0, 100.0), "leads",
         "Two consecutive G32 cuts belong to the same thread when their starts differ by at most this many leads (radially) and their lengths overlap.",
         "相邻两次 G32 切削起点径向差不超过此值(导程)时视为同一螺纹。");
     // ---- limits ----
-    LimitPasses: d("limits.passes_per_start", ALL, Kind::Int, [999.0; 3], (1.0, 1.0e6), "passes",
+    LimitPasses: d("limits.passes_per_start", ALL, Kind::Int, 999.0, (1.0, 1.0e6), "passes",
         "Most passes one start of a cycle may plan before an alarm.",
         "每头最多走刀次数。");
-    LimitStarts: d("limits.starts", ALL, Kind::Int, [65535.0; 3], (1.0, 65535.0), "starts",
+    LimitStarts: d("limits.starts", ALL, Kind::Int, 65535.0, (1.0, 65535.0), "starts",
         "Most starts a thread may have.",
         "最多螺纹头数。");
-    LimitMoves: d("limits.moves", ALL, Kind::Int, [10.0e6; 3], (1.0, 1.0e8), "moves",
+    LimitMoves: d("limits.moves", ALL, Kind::Int, 10.0e6, (1.0, 1.0e8), "moves",
         "Most motions a plan may hold before an alarm.",
         "最多运动段数。");
-    LimitBlockChars: d("limits.block_chars", ALL, Kind::Int, [256.0; 3], (8.0, 100000.0), "characters",
+    LimitBlockChars: d("limits.block_chars", ALL, Kind::Int, 256.0, (8.0, 100000.0), "characters",
         "Longest block accepted.",
         "程序段最大字符数。");
-    LimitDigits: d("limits.digits", ALL, Kind::Int, [8.0; 3], (1.0, 17.0), "digits",
+    LimitDigits: d("limits.digits", ALL, Kind::Int, 8.0, (1.0, 17.0), "digits",
         "Most significant digits in one number.",
         "数值最大有效位数。");
-    LimitProgramBytes: d("limits.program_bytes", ALL, Kind::Int, [64.0 * 1048576.0; 3], (1.0, 1.0e9), "bytes",
+    LimitProgramBytes: d("limits.program_bytes", ALL, Kind::Int, 64.0 * 1048576.0, (1.0, 1.0e9), "bytes",
         "Largest program accepted.",
         "程序最大字节数。");
-    LimitDiagnostics: d("limits.diagnostics", ALL, Kind::Int, [1000.0; 3], (1.0, 1.0e6), "diagnostics",
+    LimitDiagnostics: d("limits.diagnostics", ALL, Kind::Int, 1000.0, (1.0, 1.0e6), "diagnostics",
         "Most diagnostics reported; the rest are counted.",
         "最多报告的诊断数。");
 }
@@ -273,8 +273,7 @@ fn normalize_name(name: &str) -> String {
 impl Settings {
     /// The defaults of `dialect`.
     pub fn new(dialect: Dialect) -> Settings {
-        let i = dialect_index(dialect);
-        Settings { dialect, values: DEFS.iter().map(|d| d.defaults[i]).collect() }
+        Settings { dialect, values: DEFS.iter().map(|d| d.default).collect() }
     }
 
     /// The dialect these settings are for.
@@ -377,14 +376,6 @@ impl Settings {
     /// Whether X is programmed as a radius.
     pub fn radius_x(&self) -> bool {
         self.int(P::XMode) == 1
-    }
-}
-
-fn dialect_index(d: Dialect) -> usize {
-    match d {
-        Dialect::Gsk980tdc => 0,
-        Dialect::Fanuc0i => 1,
-        Dialect::Renhe => 2,
     }
 }
 

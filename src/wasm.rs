@@ -70,7 +70,7 @@ fn set(obj: &Object, key: &str, value: &JsValue) {
 }
 
 fn dialect(name: &str) -> Result<Dialect, JsValue> {
-    Dialect::parse(name).ok_or_else(|| err(format!("unknown dialect '{name}' (gsk980tdc, fanuc0i, renhe)")))
+    Dialect::parse(name).ok_or_else(|| err(format!("unknown dialect '{name}' ({})", Dialect::names())))
 }
 
 /// A dialect for the selector.

@@ -44,7 +44,7 @@ enum Command {
 }
 
 fn parse_dialect(s: &str) -> Result<Dialect, String> {
-    Dialect::parse(s).ok_or_else(|| format!("unknown dialect '{s}' (gsk980tdc, fanuc0i, renhe)"))
+    Dialect::parse(s).ok_or_else(|| format!("unknown dialect '{s}' ({})", Dialect::names()))
 }
 
 fn main() -> ExitCode {

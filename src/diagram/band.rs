@@ -6,6 +6,9 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::BuildHasherDefault;
 
+use glam::DVec2;
+
+use crate::geom::Frame;
 use crate::motion::{Move, MoveKind, Point};
 use crate::thread::{Axis, CrestSource, Thread};
 
@@ -46,15 +49,17 @@ impl Band {
         } else {
             -1.0
         };
-        let (l0, l1, crest0, slope_total) = match t.long_axis {
-            Axis::Z => (p0.from.z, p0.to.z, t.crest / 2.0, -t.taper),
-            Axis::X => (p0.from.r(), p0.to.r(), t.crest, 0.0),
+        let frame = Frame(t.long_axis);
+        let (l0, l1) = (frame.long(p0.from), frame.long(p0.to));
+        // The crest is a diameter for a thread along Z, a Z for a face thread.
+        let (crest0, slope_total) = match t.long_axis {
+            Axis::Z => (t.crest / 2.0, -t.taper),
+            Axis::X => (t.crest, 0.0),
         };
-        let long = |p: Point| if t.long_axis == Axis::Z { p.z } else { p.r() };
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for p in &t.passes {
             for q in [p.from, p.to] {
-                let l = long(q);
+                let l = frame.long(q);
                 if l.is_finite() {
                     lo = lo.min(l);
                     hi = hi.max(l);
@@ -78,10 +83,7 @@ impl Band {
 
     /// World point of a (long, short) pair.
     pub fn pt(&self, l: f64, s: f64) -> Pt {
-        match self.long {
-            Axis::Z => [l, s],
-            Axis::X => [s, l],
-        }
+        Frame(self.long).zr(DVec2::new(l, s)).to_array()
     }
 
     /// Direction of cutting along the long axis (+1 or −1).
