@@ -140,6 +140,8 @@ codes! {
     DecimalPointIgnored = "decimal-point-ignored", Warning;
     /// The cycle's start point is not outside the thread.
     StartInsideThread = "start-inside-thread", Warning;
+    /// A taper R(i) of the opposite sign to U that is larger than |U/2|: the cut would start beyond the start point.
+    TaperBeyondStart = "taper-beyond-start", Error;
     // ---- Renhe ----
     /// Renhe: absolute X or Z in a G32/G33 thread block.
     E18_03 = "E18-03", Error;

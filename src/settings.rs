@@ -48,6 +48,7 @@ pub struct Def {
 const GSK: &[Dialect] = &[Dialect::Gsk980tdc];
 const FANUC: &[Dialect] = &[Dialect::Fanuc0i];
 const RENHE: &[Dialect] = &[Dialect::Renhe];
+const CYCLES: &[Dialect] = &[Dialect::Gsk980tdc, Dialect::Fanuc0i];
 const ALL: &[Dialect] = &[];
 
 macro_rules! params {
@@ -86,6 +87,12 @@ pub const INCREMENTS: &[&str] = &["is-b", "is-c"];
 pub const MISSING_DIGITS: &[&str] = &["parameter", "zero"];
 /// Choices of `flank.r1_side`.
 pub const FLANK_SIDES: &[&str] = &["minus-z", "plus-z"];
+/// Choices of `cycle.dmin_rule`.
+pub const DMIN_RULES: &[&str] = &["previous", "printed"];
+/// Choices of `cycle.finish_rule`.
+pub const FINISH_RULES: &[&str] = &["steps", "split"];
+/// Choices of `g78.flank_anchor`.
+pub const FLANK_ANCHORS: &[&str] = &["start", "thread"];
 /// Choices of `renhe.inch_f`.
 pub const RENHE_INCH_F: &[&str] = &["fraction", "decimal"];
 
@@ -112,12 +119,12 @@ params! {
     No019: d("No.019", GSK, Kind::Int, 10.0, (0.0, 255.0), "0.1 lead",
         "Thread run-out (chamfer) width used when G78/G92/G76 give no J/K, in tenths of a lead; the run-out is at 45° (J = K).",
         "螺纹退尾宽度(0.1 导程)：G78/G92/G76 未指定 J、K 时按此参数退尾，J = K。");
-    No057: d("No.057", GSK, Kind::Int, 1.0, (1.0, 99.0), "passes",
-        "G76 finishing pass count m when the first G76 block gives none.",
-        "G76 精车次数 m 的默认值。");
+    No057: d("No.057", GSK, Kind::Int, 1.0, (0.0, 99.0), "passes",
+        "G76 finishing pass count m (00–99) when the first G76 block gives none; a G76 first block rewrites it. m = 00 still runs the finishing pass once (steps ⑨–⑩ of the manual run ⑨, then repeat it while fewer than m).",
+        "G76 精车次数 m(00~99)；G76 第一段会改写此参数。m = 00 时仍执行一次精车。");
     No058: d("No.058", GSK, Kind::Int, 60.0, (0.0, 99.0), "°",
-        "Tool (thread) angle a for G76/G78 when P gives none.",
-        "G76/G78 未输入 a 时的螺纹牙角度。");
+        "Tool (thread) angle a for G76/G78 when P gives none, and the tool angle of G32 threads (chip areas, tooth view); a G76 first block rewrites it.",
+        "G76/G78 未输入 a 时的螺纹牙角度，也是 G32 螺纹的刀尖角；G76 第一段会改写此参数。");
     No059: d("No.059", GSK, Kind::Int, 100.0, (0.0, 999999.0), "increment",
         "Minimum roughing cut Δdmin (radius) for G76/G78 when Q gives none, in least input increments.",
         "G76/G78 最小切削量 Δdmin(半径，最小输入增量)。");
@@ -148,6 +155,15 @@ params! {
     ScrewInLeads: d("screw_in.leads", GSK, Kind::Float, 1.0, (0.0, 100.0), "leads",
         "Length over which a G78 screw-in E ramps from E above the pass to its depth, in leads.",
         "G78 旋进 E 的斜入长度(导程数)。");
+    G78FlankAnchor: d("g78.flank_anchor", GSK, Kind::Choice(FLANK_ANCHORS), 0.0, (0.0, 1.0), "",
+        "Where a G78 single-flank infeed (r = 1 or 2) puts its passes: 'start' = depth 0 at the start point's Z and each pass starts depth·tan(a/2) further along its flank, as G76 does; 'thread' = the finished thread at the start point's Z and each pass (k − depth)·tan(a/2) off it. Either way every pass ends on the programmed end. Alternating infeed keeps the finished thread at the start point's Z.",
+        "G78 单侧切入(r = 1、2)的走刀位置：start 牙顶(切深 0)在起点 Z，与 G76 相同；thread 成品螺纹在起点 Z。每次走刀都终止于编程终点。");
+    DminRule: d("cycle.dmin_rule", CYCLES, Kind::Choice(DMIN_RULES), 0.0, (0.0, 1.0), "",
+        "When a degressive cut Δd(√n − √(n−1)) is below Δdmin (G76, G78 m = 1): 'previous' = the pass cuts Δdmin below the previous pass (the manual's words: Δdmin is the cut of the pass); 'printed' = the depth is √(n−1)·Δd + Δdmin as the formula is printed. The two differ from the second clamped pass on.",
+        "递减式切削量小于 Δdmin 时：previous 本次切深 = 上次切深 + Δdmin；printed 按手册公式 √(n−1)·Δd + Δdmin。");
+    FinishRule: d("cycle.finish_rule", CYCLES, Kind::Choice(FINISH_RULES), 0.0, (0.0, 1.0), "",
+        "Finishing passes of G76/G78: 'steps' = the first removes the allowance d at full depth and the others are spring passes (steps ⑨–⑩ of the manual); 'split' = each of the m passes removes d/m (the P(m) sentence of the same manual).",
+        "精车：steps 第一次切除精车余量 d，其余为光刀；split 每次切除 d/m。");
     // ---- Fanuc 0i ----
     Fanuc3401_0: d("3401#0", FANUC, Kind::Bool, 0.0, (0.0, 1.0), "",
         "DPI: 0 = a number without a decimal point is in least input increments (X75 = 0.075 mm); 1 = calculator input (X75 = 75 mm).",

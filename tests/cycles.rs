@@ -61,10 +61,24 @@ fn g78_degressive_radial() {
 
 /// Equal depth (m = 0), left flank (r = 1, the −Z flank), a = 60, Δd 0.4,
 /// k 1.3, d 0.1: 0.4, 0.8, 1.2 (= k − d), finishing 1.3. The tip runs on the
-/// −Z flank: shift = −(k − h)·tan 30°: −0.9·t, −0.5·t, −0.1·t, 0.
+/// −Z flank: its shift from the finished thread's middle is −(k − h)·tan 30°:
+/// −0.9·t, −0.5·t, −0.1·t, 0 (the tooth view draws these).
+///
+/// Where the passes sit along Z follows G76's definitions (GSK980TDc manual
+/// §3.21.7, "Relevant definitions" and steps ①–②: depth 0 at the start
+/// point's Z, each pass cuts parallel to C→D up to the line D→E), setting
+/// `g78.flank_anchor`:
+/// - `start` (default): depth 0 at A's Z, the tip walks down the −Z flank,
+///   which moves it +Z as it deepens: pass h starts at Z5 + h·t
+///   (5.230940, 5.461880, 5.692820, 5.750555);
+/// - `thread`: the finished thread at A's Z: pass h starts at Z5 − (k − h)·t.
+///
+/// Either way every pass ends on the programmed end: the run-out (No.019 =
+/// 10: 2 mm) starts at Z−28 — no pass overruns it.
 #[test]
 fn g78_equal_left_flank() {
-    let plan = gsk("G00 X35 Z5\nG78 P0160 Q50 R0.1 D1\nG78 X27.4 Z-30 P1300 Q400 F2\n");
+    let src = "G00 X35 Z5\nG78 P0160 Q50 R0.1 D1\nG78 X27.4 Z-30 P1300 Q400 F2\n";
+    let plan = gsk(src);
     no_alarm(&plan);
     let t = &plan.threads[0];
     assert_eq!(t.infeed, Infeed::Left);
@@ -72,15 +86,18 @@ fn g78_equal_left_flank() {
     let want = [-0.9 * TAN30, -0.5 * TAN30, -0.1 * TAN30, 0.0];
     for (p, s) in t.passes.iter().zip(want) {
         eq(p.shift, s);
+        pt(p.from, 27.4 + 2.0 * (1.3 - p.depth), 5.0 + p.depth * TAN30);
+        pt(p.to, 27.4 + 2.0 * (1.3 - p.depth), -28.0);
+    }
+    assert!((t.passes[3].from.z - 5.750555).abs() < 1e-6);
+    let plan = plan_with(src, Dialect::Gsk980tdc, &["g78.flank_anchor=thread"]);
+    for (p, s) in plan.threads[0].passes.iter().zip(want) {
+        eq(p.shift, s);
         pt(p.from, 27.4 + 2.0 * (1.3 - p.depth), 5.0 + s);
-        pt(p.to, 27.4 + 2.0 * (1.3 - p.depth), -28.0 + s);
+        pt(p.to, 27.4 + 2.0 * (1.3 - p.depth), -28.0);
     }
     // flank.r1_side = plus-z puts the left flank on the +Z side.
-    let plan = plan_with(
-        "G00 X35 Z5\nG78 P0160 Q50 R0.1 D1\nG78 X27.4 Z-30 P1300 Q400 F2\n",
-        Dialect::Gsk980tdc,
-        &["flank.r1_side=plus-z"],
-    );
+    let plan = plan_with(src, Dialect::Gsk980tdc, &["flank.r1_side=plus-z"]);
     eq(plan.threads[0].passes[0].shift, 0.9 * TAN30);
 }
 
@@ -212,9 +229,15 @@ fn g78_internal() {
 
 /// Fanuc's G76 example (P011060 Q100 R0.2; X60.64 Z25 P3680 Q1800 F6):
 /// depths 1.8, 1.8√2, 1.8√3, then 3.6 ≥ k − d = 3.48 → 3.48, finishing 3.68.
-/// X = 60.64 + 2·(3.68 − h). Single flank infeed towards the cut (−Z): the
-/// shallower passes sit (3.68 − h)·tan 30° towards +Z. Chamfer r = 10: one
-/// lead (6) at 45° (parameter 5131): the cut ends at Z31 + shift, the run-out at X + 12, Z25 + shift.
+/// X = 60.64 + 2·(3.68 − h). Single flank infeed towards the cut (−Z).
+/// GSK980TDc manual §3.21.7 (the same cycle): depth 0 at B, on A's Z; "the
+/// tool traverses in X and Z direction and its direction is the same that
+/// of A→D", so pass h starts h·tan 30° towards −Z: Z130 − h·t (128.960770,
+/// 128.530306, 128.200000, 127.990821, 127.875351); "the tool cuts threads
+/// paralleling with C→D to the intersection of D→E": every pass ends on the
+/// programmed end. Chamfer r = 10: one lead (6) at 45° (parameter 5131): the
+/// cut ends at Z31, the run-out at X + 12, Z25, for every pass. The shift
+/// from the finished thread's middle (tooth view) is (3.68 − h)·tan 30°.
 #[test]
 fn g76_fanuc_example() {
     let plan = plan_with(include_str!("../examples/g76-fanuc.nc"), Dialect::Fanuc0i, &[]);
@@ -223,13 +246,14 @@ fn g76_fanuc_example() {
     assert_eq!((t.source, t.infeed), (Source::G76, Infeed::Right));
     assert_eq!(depths(&plan), vec![1.8, 2.545584, 3.117691, 3.48, 3.68]);
     let xs = [64.4, 62.908831, 61.764617, 61.04, 60.64];
-    for (p, x) in t.passes.iter().zip(xs) {
-        let s = (3.68 - p.depth) * TAN30;
-        eq(p.shift, s);
-        assert!((p.from.x - x).abs() < 1e-6 && (p.from.z - (130.0 + s)).abs() < 1e-9);
-        assert!((p.to.z - (31.0 + s)).abs() < 1e-9);
+    let zs = [128.960770, 128.530306, 128.2, 127.990821, 127.875351];
+    for ((p, x), z) in t.passes.iter().zip(xs).zip(zs) {
+        eq(p.shift, (3.68 - p.depth) * TAN30);
+        assert!((p.from.x - x).abs() < 1e-6 && (p.from.z - (130.0 - p.depth * TAN30)).abs() < 1e-9);
+        assert!((p.from.z - z).abs() < 1e-6, "{} vs {z}", p.from.z);
+        assert!((p.to.z - 31.0).abs() < 1e-9 && (p.to.x - x).abs() < 1e-6);
         let r = p.runout_to.unwrap();
-        assert!((r.x - (p.to.x + 12.0)).abs() < 1e-9 && (r.z - (25.0 + s)).abs() < 1e-9);
+        assert!((r.x - (p.to.x + 12.0)).abs() < 1e-9 && (r.z - 25.0).abs() < 1e-9);
         assert_eq!(p.lines, vec![3, 4]);
     }
     assert_eq!(t.passes[4].role, Role::Finish);

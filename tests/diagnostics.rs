@@ -117,6 +117,7 @@ const CASES: &[Case] = &[
     ),
     (Code::DecimalPointIgnored, G, &[], "G00 X35 Z5\nG78 X27.4 Z-30 P1.3 Q400 F2\n", 2, 16, "0.0013 mm"),
     (Code::StartInsideThread, G, &[], "G00 X29 Z5\nG78 X27.4 Z-30 P1300 Q400 F2\n", 2, 1, "X30"),
+    (Code::TaperBeyondStart, G, &[], "G00 X50 Z5\nG92 X43.2 Z-30 R5 F2\n", 2, 1, "|R| > |U/2|"),
     (Code::E18_03, R, &[], "G00 X40 Z5\nG00 U-10\nG33 Z-40 F1.5\n", 3, 5, "incremental"),
     (Code::E18_04, R, &[], "G00 X40 Z5\nG00 U-10\nG33 W-3 F1\n", 3, 5, "4 mm"),
     (Code::E18_05, R, &[], "G00 X40 Z5\nG33 W-40 F1.5\n", 2, 1, "X feed"),

@@ -43,6 +43,8 @@ static THREADS: ThreadRules = ThreadRules {
         d: P::Fanuc5141,
         angles: Some(&[80, 60, 55, 30, 29, 0]),
         chamfer_angle: Some(P::Fanuc5131),
+        m_min: 1,
+        rewrites_depths: true,
     },
 };
 

@@ -7,7 +7,7 @@
 
 use super::{Reader, ThreadRules, words};
 use crate::block::{Block, Word};
-use crate::cycle::{Geometry, Multi, runout, schedule};
+use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
 use crate::diagnostic::Code;
 use crate::event::Event;
 use crate::num::fmt;
@@ -34,6 +34,10 @@ pub struct Form {
     pub angles: Option<&'static [u32]>,
     /// Parameter of the chamfer angle (`None`: 45°).
     pub chamfer_angle: Option<P>,
+    /// The smallest finishing count m the first block takes (GSK 00, Fanuc 01).
+    pub m_min: u32,
+    /// The first block rewrites the Δdmin and d parameters too, not only m, r and a.
+    pub rewrites_depths: bool,
 }
 
 /// The first block's values as the parameters give them.
@@ -76,8 +80,12 @@ fn first(r: &mut Reader, t: &ThreadRules, b: &Block) {
         f.m = v / 10000;
         f.r = (v / 100) % 100;
         f.a = v % 100;
-        if f.m == 0 {
-            r.diag(Code::ValueOutOfRange, w.span, format!("{}: the finishing count m must be 01..99", w.display()));
+        if f.m < form.m_min {
+            r.diag(
+                Code::ValueOutOfRange,
+                w.span,
+                format!("{}: the finishing count m must be {:02}..99", w.display(), form.m_min),
+            );
             return;
         }
         if let Some(angles) = form.angles.filter(|a| !a.contains(&f.a)) {
@@ -99,6 +107,20 @@ fn first(r: &mut Reader, t: &ThreadRules, b: &Block) {
     }
     if !words::min_cut_and_allowance(r, t, b, &mut f.dmin, &mut f.d) {
         return;
+    }
+    // The values rewrite their parameters for the rest of the program
+    // (GSK980TDc §3.21.7: "the system parameter №057 value is rewritten to m", №019 to r, №058 to a).
+    r.m.rewrite(form.m, f.m as f64);
+    r.m.rewrite(form.r, f.r as f64);
+    r.m.rewrite(form.a, f.a as f64);
+    if form.rewrites_depths {
+        let inc = r.s.length_increment(r.m.inch);
+        if let Some(v) = f.dmin {
+            r.m.rewrite(form.dmin, (v / inc).round());
+        }
+        if let Some(v) = f.d {
+            r.m.rewrite(form.d, (v / inc).round());
+        }
     }
     r.m.cycle.g76 = Some(f);
 }
@@ -155,10 +177,13 @@ fn second(r: &mut Reader, t: &ThreadRules, b: &Block, g: &Word) {
             allowance: d,
             mode: schedule::DepthMode::Degressive,
             finish: f.m.max(1),
+            dmin_rule: words::dmin_rule(r),
+            finish_rule: words::finish_rule(r),
         },
         infeed,
         angle: f.a as f64,
         left_side: -1.0,
+        anchor: Anchor::Start,
     };
     r.emit(Event::Multi(Box::new(multi)));
     r.arrive(start, true, true, b.line);

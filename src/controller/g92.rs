@@ -3,8 +3,8 @@
 //! From the start point A: rapid in X to the pass, thread cut to Z (taper
 //! R), run-out, rapid retract in X to A's diameter, rapid back to A's Z.
 //! Modal: following blocks with X (or U) cut further passes. GSK adds J/K
-//! run-out (as G78) and L starts; Fanuc chamfers by parameters 5130/5131
-//! and takes a start angle Q.
+//! run-out (as G78) and L starts, modal as the cycle is; Fanuc chamfers by
+//! parameters 5130/5131 and takes a start angle Q.
 
 use super::reader::g_span;
 use super::{Reader, ThreadRules, words};
@@ -76,11 +76,11 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
         Ok(g) => g,
         Err((code, msg)) => return r.diag(code, g_span, msg),
     };
-    // A further pass without Z/W keeps the run-out and starts of the block before it.
-    let carried = if target.has_z { None } else { modal };
-    let j = b.get(b'J').map(|w| w.value()).or(carried.and_then(|m| m.j));
-    let k = b.get(b'K').map(|w| w.value()).or(carried.and_then(|m| m.k));
-    let mut starts = carried.map_or(1, |m| m.starts);
+    // J, K and L are modal: every later pass block keeps them, with or
+    // without Z, until they are given again (GSK980TDc §3.21.6; GSK988TA G92).
+    let j = b.get(b'J').map(|w| w.value()).or(modal.and_then(|m| m.j));
+    let k = b.get(b'K').map(|w| w.value()).or(modal.and_then(|m| m.k));
+    let mut starts = modal.map_or(1, |m| m.starts);
     let mut angle = 0.0;
     match t.g92 {
         Form::RunoutAndStarts { runout: p, .. } => {
@@ -101,7 +101,7 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
         }
     }
     r.m.cycle.g92 = Some(G92Modal { z, r: taper, j, k, starts });
-    if let Err((code, msg)) = geom.check_ends() {
+    if let Err((code, msg)) = geom.check_ends(0.0) {
         return r.diag(code, g_span, msg);
     }
     let pts = geom.pass(0.0, 0.0, 0.0);

@@ -9,7 +9,7 @@
 use super::words::{self, Unit};
 use super::{Command, Controller, Reader, Rules, ThreadRules, g32, g76, g92, lathe_g_code};
 use crate::block::{Block, Word};
-use crate::cycle::{Geometry, Multi, runout, schedule};
+use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
 use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
 use crate::event::Event;
@@ -49,6 +49,8 @@ static THREADS: ThreadRules = ThreadRules {
         d: P::No060,
         angles: None,
         chamfer_angle: None,
+        m_min: 0,
+        rewrites_depths: false,
     },
 };
 
@@ -217,11 +219,21 @@ fn g78_second(r: &mut Reader, b: &Block, g: &Word) {
         geom,
         lead,
         starts: f.starts.unwrap_or(1),
-        schedule: schedule::Spec { k, first: dd, min: dmin, allowance: d, mode, finish: count },
+        schedule: schedule::Spec {
+            k,
+            first: dd,
+            min: dmin,
+            allowance: d,
+            mode,
+            finish: count,
+            dmin_rule: words::dmin_rule(r),
+            finish_rule: words::finish_rule(r),
+        },
         infeed,
         angle: a,
         // `flank.r1_side` places G78's "left" flank.
         left_side: if r.s.int(P::FlankR1Side) == 1 { 1.0 } else { -1.0 },
+        anchor: if r.s.int(P::G78FlankAnchor) == 1 { Anchor::Thread } else { Anchor::Start },
     };
     r.emit(Event::Multi(Box::new(multi)));
     r.arrive(start, true, true, b.line);

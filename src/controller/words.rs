@@ -4,6 +4,7 @@
 
 use super::{Reader, ThreadRules};
 use crate::block::{Block, Word};
+use crate::cycle::schedule::{DminRule, FinishRule};
 use crate::diagnostic::Code;
 use crate::num::{EPS, fmt};
 use crate::settings::P;
@@ -249,4 +250,14 @@ pub fn min_cut_and_allowance(
         *d = Some(v);
     }
     true
+}
+
+/// How a degressive cut below Δdmin is raised (setting `cycle.dmin_rule`).
+pub fn dmin_rule(r: &Reader) -> DminRule {
+    if r.s.int(P::DminRule) == 1 { DminRule::Printed } else { DminRule::Previous }
+}
+
+/// How the finishing passes share the allowance (setting `cycle.finish_rule`).
+pub fn finish_rule(r: &Reader) -> FinishRule {
+    if r.s.int(P::FinishRule) == 1 { FinishRule::Split } else { FinishRule::Steps }
 }

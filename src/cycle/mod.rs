@@ -12,7 +12,7 @@ pub mod multi;
 pub mod runout;
 pub mod schedule;
 
-pub use multi::{Multi, MultiPlan};
+pub use multi::{Anchor, Multi, MultiPlan};
 
 use glam::DVec2;
 
@@ -113,6 +113,20 @@ impl Geometry {
                 ),
             ));
         }
+        // GSK980TDc manual §3.21.6: when R and U have opposite signs, |R| ≤ |U/2|.
+        let half_u = end.r() - a.r();
+        if i * half_u < 0.0 && i.abs() > half_u.abs() + EPS {
+            return Err((
+                Code::TaperBeyondStart,
+                format!(
+                    "{what}: taper R{} and U/2 = {} have opposite signs and |R| > |U/2|: the cut would start at X{}, beyond the start point X{}; the manual allows |R| ≤ |U/2|",
+                    fmt(i),
+                    fmt(half_u),
+                    fmt(root_start.x),
+                    fmt(a.x)
+                ),
+            ));
+        }
         match classify(root_start, end) {
             None => Err((Code::ZeroLengthThread, format!("{what}: the thread has no length (end Z is the start Z)"))),
             Some((ThreadKind::Face, _)) | Some((_, Axis::X)) => Err((
@@ -128,16 +142,30 @@ impl Geometry {
         }
     }
 
+    /// The direction of cutting along Z (+1 or −1).
+    pub fn sense(&self) -> f64 {
+        if self.root_end.z >= self.root_start.z { 1.0 } else { -1.0 }
+    }
+
     /// Thread length along Z.
     pub fn length(&self) -> f64 {
         (self.root_end.z - self.root_start.z).abs()
     }
 
-    /// The pass at depth `h` of a thread of height `k`, shifted axially by `shift`.
+    /// The pass at depth `h` of a thread of height `k` whose line is shifted
+    /// axially by `shift` (a flank infeed): it starts on the shifted line at
+    /// the start point's Z plus `shift` and ends where that line meets the
+    /// programmed end's Z (GSK980TDc §3.21.7: each pass cuts parallel to C→D
+    /// up to the line D→E), run-out and screw-in included.
     pub fn pass(&self, h: f64, k: f64, shift: f64) -> PassPoints {
         let off = self.out * (k - h);
         let p0 = self.root_start.offset_r(off, shift);
-        let p1 = self.root_end.offset_r(off, shift);
+        let shifted_end = self.root_end.offset_r(off, shift);
+        let p1 = if shift == 0.0 {
+            shifted_end
+        } else {
+            p0.lerp(shifted_end, (self.root_end.z - p0.z) / (shifted_end.z - p0.z))
+        };
         let len = (p1.z - p0.z).abs();
         let (screw_in_from, from) = match self.screw_in {
             Some((e, ls)) if len > 0.0 => (Some(p0.offset_r(self.out * e, 0.0)), p0.lerp(p1, (ls / len).min(1.0))),
@@ -153,15 +181,22 @@ impl Geometry {
         PassPoints { screw_in_from, from, to, runout_to }
     }
 
-    /// An alarm when screw-in and run-out together are longer than the thread.
-    pub fn check_ends(&self) -> Result<(), Finding> {
+    /// An alarm when screw-in and run-out, with passes starting up to
+    /// `shift` further along the cut, are longer than the thread.
+    pub fn check_ends(&self, shift: f64) -> Result<(), Finding> {
         let si = self.screw_in.map_or(0.0, |s| s.1);
         let ro = self.runout.map_or(0.0, |r| r.1);
-        if si + ro > self.length() + EPS {
+        let shift = shift.max(0.0);
+        if si + ro + shift > self.length() + EPS {
+            let flank = if shift > 0.0 {
+                format!(", with passes starting up to {} along the cut,", fmt(shift))
+            } else {
+                String::new()
+            };
             return Err((
                 Code::RunoutTooLong,
                 format!(
-                    "run-out {} and screw-in {} together are longer than the thread's {} of Z",
+                    "run-out {} and screw-in {} together{flank} are longer than the thread's {} of Z",
                     fmt(ro),
                     fmt(si),
                     fmt(self.length())

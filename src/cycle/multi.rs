@@ -30,15 +30,32 @@ pub struct Multi {
     pub angle: f64,
     /// Z direction of the "left" flank (−1: the −Z side).
     pub left_side: f64,
+    /// Where single-flank passes are anchored.
+    pub anchor: Anchor,
+}
+
+/// Where the passes of a single-flank infeed sit along Z.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Anchor {
+    /// Depth 0 at the start point's Z: each pass starts depth·tan(a/2)
+    /// further along its flank (G76, GSK980TDc §3.21.7; G78 by default).
+    #[default]
+    Start,
+    /// The finished thread at the start point's Z: each pass (k −
+    /// depth)·tan(a/2) off it (alternating infeed always).
+    Thread,
 }
 
 /// The planned passes of a cycle: the depth schedule of one start with the
-/// axial shift and chip area of each pass (every start has the same).
+/// axial shifts and chip area of each pass (every start has the same).
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiPlan<'a> {
     m: &'a Multi,
     sched: schedule::Schedule,
+    /// Depth and shift from the finished thread's middle, per pass.
     shifts: Vec<(f64, f64)>,
+    /// Where each pass's line is along Z, from the start point.
+    lines: Vec<f64>,
     areas: Vec<Option<f64>>,
 }
 
@@ -68,7 +85,24 @@ pub fn plan<'a>(m: &'a Multi, s: &Settings) -> Result<(MultiPlan<'a>, Vec<Findin
             format!("{} starts: at most {max_starts} (setting limits.starts)", m.starts),
         ));
     }
-    m.geom.check_ends()?;
+    let k = m.schedule.k;
+    let shifts: Vec<(f64, f64)> = sched
+        .iter()
+        .enumerate()
+        .map(|(n, &(h, _))| (h, infeed::shift(m.infeed, n as u32 + 1, h, k, m.angle, m.left_side)))
+        .collect();
+    let lines: Vec<f64> = shifts
+        .iter()
+        .enumerate()
+        .map(|(n, &(_, shift))| match (m.anchor, m.infeed) {
+            (Anchor::Start, Infeed::Left | Infeed::Right) => {
+                shift - infeed::shift(m.infeed, n as u32 + 1, 0.0, k, m.angle, m.left_side)
+            }
+            _ => shift,
+        })
+        .collect();
+    let along = lines.iter().map(|l| l * m.geom.sense()).fold(0.0, f64::max);
+    m.geom.check_ends(along)?;
     let mut warnings = Vec::new();
     let crest_r = m.geom.root_start.r() + m.geom.out * m.schedule.k;
     if (m.geom.a.r() - crest_r) * m.geom.out < -EPS {
@@ -81,14 +115,8 @@ pub fn plan<'a>(m: &'a Multi, s: &Settings) -> Result<(MultiPlan<'a>, Vec<Findin
             ),
         ));
     }
-    let k = m.schedule.k;
-    let shifts: Vec<(f64, f64)> = sched
-        .iter()
-        .enumerate()
-        .map(|(n, &(h, _))| (h, infeed::shift(m.infeed, n as u32 + 1, h, k, m.angle, m.left_side)))
-        .collect();
     let areas = crate::chip::pass_areas(m.angle, &shifts);
-    Ok((MultiPlan { m, sched, shifts, areas }, warnings))
+    Ok((MultiPlan { m, sched, shifts, lines, areas }, warnings))
 }
 
 impl MultiPlan<'_> {
@@ -103,7 +131,7 @@ impl MultiPlan<'_> {
         let (h, role) = self.sched[n];
         let prev = if n == 0 { 0.0 } else { self.sched[n - 1].0 };
         let shift = self.shifts[n].1;
-        let pts = m.geom.pass(h, m.schedule.k, shift);
+        let pts = m.geom.pass(h, m.schedule.k, self.lines[n]);
         let line = *m.lines.last().unwrap_or(&0);
         let path = m.geom.path(&pts, line, m.span);
         let pass = Pass {

@@ -1,9 +1,11 @@
 //! Depth schedules of the multi-pass cycles (G76, G78).
 //!
 //! Roughing passes go down to k − d: equal depth (every pass cuts Δd) or
-//! degressive (pass n reaches Δd·√n), each cut raised to at least Δdmin, the
-//! last one clamped at k − d. The first finishing pass removes the
-//! allowance d at full depth k; further finishing passes are spring passes.
+//! degressive (the first pass at Δd, pass n at Δd·√n, a cut below Δdmin
+//! raised to Δdmin from the second pass on), the last one clamped at k − d.
+//! The first finishing pass removes the allowance d at full depth k and
+//! further finishing passes are spring passes (GSK980TDc §3.21.7 steps
+//! ①–⑩); or, by the setting `cycle.finish_rule`, each removes d/m.
 
 use crate::thread::Role;
 
@@ -14,6 +16,26 @@ pub enum DepthMode {
     Equal,
     /// Pass n reaches Δd·√n (G76; G78 m = 1).
     Degressive,
+}
+
+/// How a degressive cut below Δdmin is raised (setting `cycle.dmin_rule`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DminRule {
+    /// The pass cuts Δdmin below the previous pass.
+    #[default]
+    Previous,
+    /// The depth is √(n−1)·Δd + Δdmin, the formula as the manual prints it.
+    Printed,
+}
+
+/// How the finishing passes share the allowance (setting `cycle.finish_rule`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FinishRule {
+    /// The first removes d at depth k, the others are spring passes at k.
+    #[default]
+    Steps,
+    /// Each of the m passes removes d/m.
+    Split,
 }
 
 /// The inputs of a schedule, radial lengths in program units.
@@ -31,6 +53,10 @@ pub struct Spec {
     pub mode: DepthMode,
     /// Finishing passes (the first removes d, the rest are spring passes).
     pub finish: u32,
+    /// How a cut below Δdmin is raised.
+    pub dmin_rule: DminRule,
+    /// How the finishing passes share d.
+    pub finish_rule: FinishRule,
 }
 
 /// The schedule: cumulative depth and role of every pass of one start.
@@ -43,7 +69,15 @@ pub fn plan(spec: &Spec, limit: usize) -> Result<Schedule, u64> {
     let step = |n: u64, prev: f64| -> f64 {
         match spec.mode {
             DepthMode::Equal => n as f64 * spec.first.max(spec.min),
-            DepthMode::Degressive => (spec.first * (n as f64).sqrt()).max(prev + spec.min),
+            // Step ①: the first pass is at Δd whatever Δdmin is.
+            DepthMode::Degressive if n == 1 => spec.first,
+            DepthMode::Degressive => {
+                let raised = match spec.dmin_rule {
+                    DminRule::Previous => prev + spec.min,
+                    DminRule::Printed => spec.first * ((n - 1) as f64).sqrt() + spec.min,
+                };
+                (spec.first * (n as f64).sqrt()).max(raised)
+            }
         }
     };
     let tol = 1e-9 * target.abs().max(1.0);
@@ -63,7 +97,13 @@ pub fn plan(spec: &Spec, limit: usize) -> Result<Schedule, u64> {
         prev = c;
     }
     for i in 0..spec.finish {
-        out.push((spec.k, if i == 0 { Role::Finish } else { Role::Spring }));
+        match spec.finish_rule {
+            FinishRule::Steps => out.push((spec.k, if i == 0 { Role::Finish } else { Role::Spring })),
+            FinishRule::Split => {
+                let share = (i + 1) as f64 / spec.finish as f64;
+                out.push((target.max(0.0) + (spec.k - target.max(0.0)) * share, Role::Finish));
+            }
+        }
     }
     if out.len() > limit {
         return Err(out.len() as u64);
@@ -94,6 +134,18 @@ pub fn estimate(spec: &Spec, target: f64) -> u64 {
 mod tests {
     use super::*;
 
+    /// The rules of the manual's steps; the tests set the rest.
+    const SPEC: Spec = Spec {
+        k: 0.0,
+        first: 0.0,
+        min: 0.0,
+        allowance: 0.0,
+        mode: DepthMode::Degressive,
+        finish: 1,
+        dmin_rule: DminRule::Previous,
+        finish_rule: FinishRule::Steps,
+    };
+
     fn depths(s: &Schedule) -> Vec<f64> {
         s.iter().map(|(d, _)| (d * 1e6).round() / 1e6).collect()
     }
@@ -102,7 +154,8 @@ mod tests {
     /// 1.8, 1.8·√2 = 2.545584, 1.8·√3 = 3.117691, 1.8·√4 = 3.6 ≥ 3.48 → 3.48, then 3.68.
     #[test]
     fn degressive_fanuc_example() {
-        let spec = Spec { k: 3.68, first: 1.8, min: 0.1, allowance: 0.2, mode: DepthMode::Degressive, finish: 1 };
+        let spec =
+            Spec { k: 3.68, first: 1.8, min: 0.1, allowance: 0.2, mode: DepthMode::Degressive, finish: 1, ..SPEC };
         let s = plan(&spec, 999).unwrap();
         assert_eq!(depths(&s), vec![1.8, 2.545584, 3.117691, 3.48, 3.68]);
         assert_eq!(
@@ -116,7 +169,8 @@ mod tests {
     /// then 1.1071, then 1.3071 ≥ 1.2 → 1.2; finishing 1.3, spring 1.3.
     #[test]
     fn degressive_with_minimum() {
-        let spec = Spec { k: 1.3, first: 0.5, min: 0.2, allowance: 0.1, mode: DepthMode::Degressive, finish: 2 };
+        let spec =
+            Spec { k: 1.3, first: 0.5, min: 0.2, allowance: 0.1, mode: DepthMode::Degressive, finish: 2, ..SPEC };
         let s = plan(&spec, 999).unwrap();
         let want = [0.5, 0.5 * 2f64.sqrt(), 0.5 * 2f64.sqrt() + 0.2, 0.5 * 2f64.sqrt() + 0.4, 1.2, 1.3, 1.3];
         assert_eq!(depths(&s), want.map(|d| (d * 1e6).round() / 1e6).to_vec());
@@ -127,7 +181,7 @@ mod tests {
     /// Equal depth: Δd 0.4 to k − d = 1.2 − 0.05 = 1.15: 0.4, 0.8, 1.15 (clamped), 1.2.
     #[test]
     fn equal_depth() {
-        let spec = Spec { k: 1.2, first: 0.4, min: 0.0, allowance: 0.05, mode: DepthMode::Equal, finish: 1 };
+        let spec = Spec { k: 1.2, first: 0.4, min: 0.0, allowance: 0.05, mode: DepthMode::Equal, finish: 1, ..SPEC };
         assert_eq!(depths(&plan(&spec, 999).unwrap()), vec![0.4, 0.8, 1.15, 1.2]);
         // Δdmin above Δd raises every equal cut: Δd 0.1, Δdmin 0.5 → 0.5, 1.0, 1.15.
         let spec = Spec { first: 0.1, min: 0.5, ..spec };
@@ -137,7 +191,7 @@ mod tests {
     /// d ≥ k: no roughing, the finishing pass cuts everything; d = 0: the finishing pass is at the roughing depth.
     #[test]
     fn allowance_edges() {
-        let spec = Spec { k: 1.0, first: 0.3, min: 0.0, allowance: 1.0, mode: DepthMode::Equal, finish: 1 };
+        let spec = Spec { k: 1.0, first: 0.3, min: 0.0, allowance: 1.0, mode: DepthMode::Equal, finish: 1, ..SPEC };
         assert_eq!(depths(&plan(&spec, 999).unwrap()), vec![1.0]);
         let spec = Spec { allowance: 0.0, ..spec };
         assert_eq!(depths(&plan(&spec, 999).unwrap()), vec![0.3, 0.6, 0.9, 1.0, 1.0]);
@@ -147,9 +201,10 @@ mod tests {
     /// 10 without Δdmin needs (10 / 0.001)² = 10⁸ passes.
     #[test]
     fn limit_and_estimate() {
-        let spec = Spec { k: 10.0, first: 0.001, min: 0.0, allowance: 0.0, mode: DepthMode::Degressive, finish: 1 };
+        let spec =
+            Spec { k: 10.0, first: 0.001, min: 0.0, allowance: 0.0, mode: DepthMode::Degressive, finish: 1, ..SPEC };
         assert_eq!(plan(&spec, 999), Err(100_000_001));
-        let spec = Spec { k: 10.0, first: 0.01, min: 0.0, allowance: 0.0, mode: DepthMode::Equal, finish: 1 };
+        let spec = Spec { k: 10.0, first: 0.01, min: 0.0, allowance: 0.0, mode: DepthMode::Equal, finish: 1, ..SPEC };
         assert_eq!(plan(&spec, 999), Err(1001));
         assert_eq!(plan(&spec, 1001).unwrap().len(), 1001);
     }

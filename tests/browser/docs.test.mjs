@@ -135,7 +135,7 @@ try {
   check('G78 r=1 shifts towards −Z, r=2 towards +Z, r=0 not at all', shifts('g78-left')[0] < -0.5 && shifts('g78-right')[0] > 0.5 && shifts('g78-radial').every((v) => v === 0), JSON.stringify([shifts('g78-left'), shifts('g78-right')]));
   const alt = shifts('g78-alternating');
   check('G78 r=3 alternates sides', alt[0] < 0 && alt[1] > 0 && alt[2] < 0 && alt[3] > 0, JSON.stringify(alt));
-  check('G78 left flank: the Z start of pass 1 is 5 − 0.5196', seen['g78-left'].rows[0][3] === '4.4804', JSON.stringify(seen['g78-left'].rows[0]));
+  check('G78 left flank: the Z start of pass 1 is 5 + 0.4·tan 30° (depth 0 at the start point)', seen['g78-left'].rows[0][3] === '5.2309', JSON.stringify(seen['g78-left'].rows[0]));
   const g76 = seen['g76-fanuc'].result;
   check('G76 planned as Fanuc: five passes to 3.68', g76.dialect === 'fanuc0i' && g76.passes.length === 5 && g76.passes[4].depth === 3.68, JSON.stringify(g76));
   const g92 = seen['g92-two-start'].result.threads[0];
