@@ -32,6 +32,7 @@ pub mod planner;
 pub mod renhe;
 pub mod settings;
 pub mod span;
+pub mod standard;
 pub mod thread;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
