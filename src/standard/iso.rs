@@ -48,9 +48,10 @@ type PdRow = (u8, f64, [u16; 7], [u16; 5]);
 /// transcription by the other and by the grade series: Td2(4) at
 /// 180–355/P4 is 180 (not 198), Td2(9) at 11.2–22.4/P1.25 is 265 (not 365),
 /// Td2(9) at 45–90/P2 is 355 (not 335). Rows 5.6–11.2/P0.5 and
-/// 11.2–22.4/P0.75 come from the second transcription only and were
-/// checked against DIN 13 6g/6H limits.
-const PD_ROWS: [PdRow; 49] = [
+/// 11.2–22.4/P0.75 and 45–90/P1 come from the second transcription only
+/// and were checked against DIN 13 6g/6H limits (which set TD2(6) at
+/// 45–90/P1 to 190); 90–180/P1.5 holds only grade 6, from DIN 13.
+const PD_ROWS: [PdRow; 51] = [
     (0, 0.2, [24, 30, 38, 48, 0, 0, 0], [40, 0, 0, 0, 0]),
     (0, 0.25, [26, 34, 42, 53, 0, 0, 0], [45, 56, 0, 0, 0]),
     (0, 0.3, [28, 36, 45, 56, 0, 0, 0], [48, 60, 75, 0, 0]),
@@ -84,6 +85,7 @@ const PD_ROWS: [PdRow; 49] = [
     (5, 3.5, [106, 132, 170, 212, 265, 335, 425], [180, 224, 280, 355, 450]),
     (5, 4.0, [112, 140, 180, 224, 280, 355, 450], [190, 236, 300, 375, 475]),
     (5, 4.5, [118, 150, 190, 236, 300, 375, 475], [200, 250, 315, 400, 500]),
+    (6, 1.0, [71, 90, 112, 140, 180, 224, 0], [118, 150, 190, 236, 0]),
     (6, 1.5, [80, 100, 125, 160, 200, 250, 315], [132, 170, 212, 265, 335]),
     (6, 2.0, [90, 112, 140, 180, 224, 280, 355], [150, 190, 236, 300, 375]),
     (6, 3.0, [106, 132, 170, 212, 265, 335, 425], [180, 224, 280, 355, 450]),
@@ -91,6 +93,7 @@ const PD_ROWS: [PdRow; 49] = [
     (6, 5.0, [125, 160, 200, 250, 315, 400, 500], [212, 265, 335, 425, 530]),
     (6, 5.5, [132, 170, 212, 265, 335, 425, 530], [224, 280, 355, 450, 560]),
     (6, 6.0, [140, 180, 224, 280, 355, 450, 560], [236, 300, 375, 475, 600]),
+    (7, 1.5, [0, 0, 0, 180, 0, 0, 0], [0, 0, 236, 0, 0]),
     (7, 2.0, [95, 118, 150, 190, 236, 300, 375], [160, 200, 250, 315, 400]),
     (7, 3.0, [112, 140, 180, 224, 280, 355, 450], [190, 236, 300, 375, 475]),
     (7, 4.0, [125, 160, 200, 250, 315, 400, 500], [212, 265, 335, 425, 530]),
@@ -256,7 +259,8 @@ pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
         Kind::External => {
             let d2max = b2 + pd_dev;
             let d2min = d2max - pd_tol;
-            let d3min = (mm(d2min) - 0.616_025 * p) * 1000.0;
+            // From the unrounded basic d2, as DIN 13 / ISO 965-2 tabulate it (M3.5: 2.635).
+            let d3min = (basic_pitch * 1000.0 + (pd_dev - pd_tol) as f64) - 616.025 * p;
             notes.push("external minor: min is d3 min for a root radius of at least 0.125·P (ISO 965-1); max is the flat-root reference D1 + es (ASME B1.13M, DIN 13)".into());
             Diameters {
                 major: Limit::both(mm(bd + crest_dev - crest_tol), mm(bd + crest_dev)),
