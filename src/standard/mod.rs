@@ -39,7 +39,8 @@
 //! 0.25·P − 0.4·P² below (used alone from 1/4 in up), for 3B by
 //! 0.23·P − 1.5·P² (13 tpi and finer) or 0.12·P below. Tolerances, allowance
 //! and basic diameters are rounded to 0.0001 in and then added, as the
-//! published tables are; 1B/2B minor diameter limits are rounded to 0.001 in
+//! published tables are (the three terms of Td2(2A) are carried to
+//! 0.000001 in first, which the 1/4-20 2B tolerance 0.0049 requires); 1B/2B minor diameter limits are rounded to 0.001 in
 //! from #6 (0.138 in) up. The UNR external minor diameter (reference) is
 //! d2 max − 0.541266·P (5/8·H below the pitch line).
 //!

@@ -116,7 +116,10 @@ pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
     let tpi = des.tpi.unwrap_or(MM_PER_INCH / des.pitch_mm);
     let p = 1.0 / tpi;
     let le = engagement(des.series, d, tpi, p);
-    let td2_2a = 0.0015 * d.cbrt() + 0.0015 * le.sqrt() + 0.015 * p.powf(2.0 / 3.0);
+    // Each term carried to 0.000001 in: 1/4-20 2B then gives 1.3 × 0.003731 =
+    // 0.0048503 → 0.0049 as published, where full precision (0.00484998) gives 0.0048.
+    let term = |v: f64| round_to(v, 6);
+    let td2_2a = term(0.0015 * d.cbrt()) + term(0.0015 * le.sqrt()) + term(0.015 * p.powf(2.0 / 3.0));
     let basic_pitch = d - 0.649_519 * p;
     let basic_minor = d - 1.082_532 * p;
     let (bd, b2, b1) = (r4(d), r4(basic_pitch), r4(basic_minor));
