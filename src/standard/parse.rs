@@ -51,7 +51,8 @@ pub(super) fn parse(text: &str) -> Result<Designation, Error> {
 /// part of the text reads as one. Give it comment text: a bare program word
 /// such as `M30` reads as an M30 thread.
 pub fn find(text: &str) -> Option<Designation> {
-    let tokens: Vec<&str> = text.split(|c: char| c.is_whitespace() || "();,".contains(c)).filter(|t| !t.is_empty()).collect();
+    let tokens: Vec<&str> =
+        text.split(|c: char| c.is_whitespace() || "();,".contains(c)).filter(|t| !t.is_empty()).collect();
     for i in 0..tokens.len() {
         for len in (1..=4).rev() {
             let Some(group) = tokens.get(i..i + len) else { continue };
@@ -146,6 +147,43 @@ fn iso_class(c: &mut Cursor) -> Option<Result<(Class, Kind), Error>> {
     Some(Ok((Class::Iso { pitch: first, crest }, kind)))
 }
 
+/// Class (with its kind), left hand, and notes.
+type IsoSuffixes = (Option<(Class, Kind)>, bool, Vec<String>);
+
+/// Class, hand and engagement group after the size of an ISO designation.
+fn iso_suffixes(c: &mut Cursor, s: &str) -> Result<IsoSuffixes, Error> {
+    let mut class = None;
+    let mut left_hand = false;
+    let mut notes = Vec::new();
+    loop {
+        while matches!(c.peek(), Some(b' ' | b'-')) {
+            c.i += 1;
+        }
+        if c.peek().is_none() {
+            break;
+        }
+        if c.eat_word("LH") {
+            left_hand = true;
+        } else if c.eat_word("RH") {
+        } else if let Some(k) = iso_class(c) {
+            if class.is_some() {
+                return Err(Error::new(format!(
+                    "'{s}': two tolerance classes (fit designations such as 6H/6g are not read; give one)"
+                )));
+            }
+            class = Some(k?);
+        } else if let Some(g) = [b'S', b'N', b'L'].into_iter().find(|g| c.s.get(c.i) == Some(g)) {
+            c.i += 1;
+            notes.push(format!("length of engagement group {} noted; limits do not depend on it", g as char));
+        } else if c.peek() == Some(b'/') {
+            return Err(Error::new(format!("'{s}': fit designations such as 6H/6g are not read; give one class")));
+        } else {
+            return Err(Error::new(format!("'{s}': did not understand '{}'", c.rest())));
+        }
+    }
+    Ok((class, left_hand, notes))
+}
+
 /// `M<d>[x<P> | xPh<L>P<P>][-<class>][-LH]`.
 fn parse_iso(s: &str) -> Result<Designation, Error> {
     let mut c = Cursor { s: s.as_bytes(), i: 1 };
@@ -172,33 +210,7 @@ fn parse_iso(s: &str) -> Result<Designation, Error> {
             _ => c.i = save,
         }
     }
-    let mut class = None;
-    let mut left_hand = false;
-    let mut notes = Vec::new();
-    loop {
-        while matches!(c.peek(), Some(b' ' | b'-')) {
-            c.i += 1;
-        }
-        if c.peek().is_none() {
-            break;
-        }
-        if c.eat_word("LH") {
-            left_hand = true;
-        } else if c.eat_word("RH") {
-        } else if let Some(k) = iso_class(&mut c) {
-            if class.is_some() {
-                return Err(Error::new(format!("'{s}': two tolerance classes (fit designations such as 6H/6g are not read; give one)")));
-            }
-            class = Some(k?);
-        } else if let Some(g) = [b'S', b'N', b'L'].into_iter().find(|g| c.s.get(c.i) == Some(g)) {
-            c.i += 1;
-            notes.push(format!("length of engagement group {} noted; limits do not depend on it", g as char));
-        } else if c.peek() == Some(b'/') {
-            return Err(Error::new(format!("'{s}': fit designations such as 6H/6g are not read; give one class")));
-        } else {
-            return Err(Error::new(format!("'{s}': did not understand '{}'", c.rest())));
-        }
-    }
+    let (class, left_hand, mut notes) = iso_suffixes(&mut c, s)?;
     let coarse = iso::coarse_pitch(d);
     let pitch = match pitch.or(coarse) {
         Some(p) => p,
@@ -215,7 +227,10 @@ fn parse_iso(s: &str) -> Result<Designation, Error> {
     let (class, kind, defaulted) = match class {
         Some((cl, k)) => (cl, k, false),
         None => {
-            notes.push("no tolerance class given: the medium class 6g (external) / 6H (internal) of ISO 965-1 is assumed".into());
+            notes.push(
+                "no tolerance class given: the medium class 6g (external) / 6H (internal) of ISO 965-1 is assumed"
+                    .into(),
+            );
             (iso_default(Kind::External), Kind::External, true)
         }
     };
@@ -333,7 +348,7 @@ fn unified_class(tail: &str) -> Result<UnifiedTail, Error> {
     let mut grade = None;
     let mut kind = None;
     let mut lh = false;
-    for tok in tail.split(|c: char| c == '-' || c == ' ').filter(|t| !t.is_empty()) {
+    for tok in tail.split(['-', ' ']).filter(|t| !t.is_empty()) {
         let t = tok.to_ascii_uppercase();
         let b = t.as_bytes();
         if t == "LH" {
@@ -361,8 +376,8 @@ fn parse_npt(s: &str, upper: &str) -> Result<Designation, Error> {
         };
         return Err(Error::new(format!("'{s}': {what}")));
     }
-    let (size_text, tpi) =
-        size_and_tpi(&s[..at]).ok_or_else(|| Error::new(format!("'{s}': could not read the pipe size and threads per inch")))?;
+    let (size_text, tpi) = size_and_tpi(&s[..at])
+        .ok_or_else(|| Error::new(format!("'{s}': could not read the pipe size and threads per inch")))?;
     let nominal = inch_size(size_text).ok_or_else(|| Error::new(format!("'{s}': could not read the pipe size")))?;
     let (od, std_tpi) =
         npt::size(nominal).ok_or_else(|| Error::new(format!("'{s}': {nominal} in is not an NPT size (1/16 … 12)")))?;
@@ -480,7 +495,34 @@ mod tests {
 
     #[test]
     fn no_panic_on_odd_text() {
-        for s in ["M", "M.", "M0", "Mx", "M1e9", "M10x", "M10xPh", "M10xPh3", "#", "#-", "/-UN", "-UN", "UN", "NPT", "1/0-20 UNC", "1/-UN", "M10-", "M10--6g", "M 10", "-", "((", "Mé", "M10x0", "1e400-20 UNC", "0-0 UNC", "1-0 UN"] {
+        for s in [
+            "M",
+            "M.",
+            "M0",
+            "Mx",
+            "M1e9",
+            "M10x",
+            "M10xPh",
+            "M10xPh3",
+            "#",
+            "#-",
+            "/-UN",
+            "-UN",
+            "UN",
+            "NPT",
+            "1/0-20 UNC",
+            "1/-UN",
+            "M10-",
+            "M10--6g",
+            "M 10",
+            "-",
+            "((",
+            "Mé",
+            "M10x0",
+            "1e400-20 UNC",
+            "0-0 UNC",
+            "1-0 UN",
+        ] {
             let _ = p(s);
             let _ = find(s);
             if let Ok(d) = p(s) {

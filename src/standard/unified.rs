@@ -104,6 +104,58 @@ fn minor_tolerance(grade: u8, d: f64, p: f64, tpi: f64) -> f64 {
     }
 }
 
+/// Inputs shared by the external and internal limits, inches.
+struct Sizes {
+    d: f64,
+    p: f64,
+    tpi: f64,
+    td2_2a: f64,
+    bd: f64,
+    b2: f64,
+    b1: f64,
+}
+
+/// Classes 1A–3A.
+fn external(s: &Sizes, grade: u8, notes: &mut Vec<String>) -> (Diameters, Tolerances) {
+    let Sizes { p, td2_2a, bd, b2, .. } = *s;
+    let k = [1.5, 1.0, 0.75][usize::from(grade - 1)];
+    let td2 = r4(k * td2_2a);
+    let allowance = if grade < 3 { r4(0.3 * td2_2a) } else { 0.0 };
+    let td = r4(if grade == 1 { 0.090 } else { 0.060 } * p.powf(2.0 / 3.0));
+    let (dmax, d2max) = (bd - allowance, b2 - allowance);
+    notes.push("external minor: max is the UNR reference (d2 max − 0.541266·P); UN flat roots are not limited".into());
+    let diam = Diameters {
+        major: Limit::both(r4(dmax - td), r4(dmax)),
+        pitch: Limit::both(r4(d2max - td2), r4(d2max)),
+        minor: Limit { min: None, max: Some(r4(d2max - 0.541_266 * p)) },
+        ..Diameters::default()
+    };
+    (diam, Tolerances { deviation: -allowance, pitch: td2, crest: td })
+}
+
+/// Classes 1B–3B.
+fn internal(s: &Sizes, grade: u8, notes: &mut Vec<String>) -> (Diameters, Tolerances) {
+    let Sizes { d, p, tpi, td2_2a, bd, b2, b1 } = *s;
+    let k = [1.95, 1.3, 0.975][usize::from(grade - 1)];
+    let td2 = r4(k * td2_2a);
+    let td1 = r4(minor_tolerance(grade, d, p, tpi));
+    let coarse_minor = grade < 3 && d >= 0.138 - 1e-9;
+    let minor = if coarse_minor {
+        notes.push("class 1B/2B minor diameter limits are rounded to 0.001 in from 0.138 in up".into());
+        Limit::both(round_to(b1, 3), round_to(b1 + td1, 3))
+    } else {
+        Limit::both(b1, r4(b1 + td1))
+    };
+    notes.push("internal major diameter: only the minimum (basic) is a product limit".into());
+    let diam = Diameters {
+        major: Limit { min: Some(bd), max: None },
+        pitch: Limit::both(b2, r4(b2 + td2)),
+        minor,
+        ..Diameters::default()
+    };
+    (diam, Tolerances { deviation: 0.0, pitch: td2, crest: td1 })
+}
+
 /// ASME B1.1 limits of a Unified designation.
 pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
     let Some(Class::Unified { grade }) = des.class else {
@@ -127,42 +179,10 @@ pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
         "ASME B1.1 formulas, length of engagement {} in; values rounded to 0.0001 in as the tables are",
         round_to(le, 4)
     )];
+    let sizes = Sizes { d, p, tpi, td2_2a, bd, b2, b1 };
     let (diam, tol) = match des.kind {
-        Kind::External => {
-            let k = [1.5, 1.0, 0.75][usize::from(grade - 1)];
-            let td2 = r4(k * td2_2a);
-            let allowance = if grade < 3 { r4(0.3 * td2_2a) } else { 0.0 };
-            let td = r4(if grade == 1 { 0.090 } else { 0.060 } * p.powf(2.0 / 3.0));
-            let (dmax, d2max) = (bd - allowance, b2 - allowance);
-            notes.push("external minor: max is the UNR reference (d2 max − 0.541266·P); UN flat roots are not limited".into());
-            let diam = Diameters {
-                major: Limit::both(r4(dmax - td), r4(dmax)),
-                pitch: Limit::both(r4(d2max - td2), r4(d2max)),
-                minor: Limit { min: None, max: Some(r4(d2max - 0.541_266 * p)) },
-                ..Diameters::default()
-            };
-            (diam, Tolerances { deviation: -allowance, pitch: td2, crest: td })
-        }
-        Kind::Internal => {
-            let k = [1.95, 1.3, 0.975][usize::from(grade - 1)];
-            let td2 = r4(k * td2_2a);
-            let td1 = r4(minor_tolerance(grade, d, p, tpi));
-            let coarse_minor = grade < 3 && d >= 0.138 - 1e-9;
-            let minor = if coarse_minor {
-                notes.push("class 1B/2B minor diameter limits are rounded to 0.001 in from 0.138 in up".into());
-                Limit::both(round_to(b1, 3), round_to(b1 + td1, 3))
-            } else {
-                Limit::both(b1, r4(b1 + td1))
-            };
-            notes.push("internal major diameter: only the minimum (basic) is a product limit".into());
-            let diam = Diameters {
-                major: Limit { min: Some(bd), max: None },
-                pitch: Limit::both(b2, r4(b2 + td2)),
-                minor,
-                ..Diameters::default()
-            };
-            (diam, Tolerances { deviation: 0.0, pitch: td2, crest: td1 })
-        }
+        Kind::External => external(&sizes, grade, &mut notes),
+        Kind::Internal => internal(&sizes, grade, &mut notes),
     };
     if des.starts > 1 {
         notes.push("multi-start: ASME B1.1 tolerances are those of the pitch".into());
