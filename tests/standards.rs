@@ -263,3 +263,23 @@ fn designations_in_comments() {
     let e = parse("M20 x 1.5 - 6k").unwrap_err();
     assert!(e.message.contains("did not understand"), "{e}");
 }
+
+#[cfg(not(target_arch = "wasm32"))]
+mod fuzz {
+    use super::*;
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+        /// No text makes the reader or the limits panic.
+        #[test]
+        fn never_panics(s in "[ -~×]{0,24}", t in "(M|#|1/4-|1-|1/2-)?[0-9./xXPhHgGefLRS #-]{0,12}( ?(UNC|UNF|UNEF|UN|UNS|NPT|UNX))?(-?[0-9][ABab])?") {
+            for text in [s.as_str(), t.as_str()] {
+                if let Ok(d) = parse(text) {
+                    let _ = limits(&d);
+                    let _ = limits(&d.with_kind(Kind::Internal));
+                }
+                let _ = find(text);
+            }
+        }
+    }
+}
