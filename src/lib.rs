@@ -35,6 +35,7 @@ pub mod plan;
 pub mod planner;
 pub mod settings;
 pub mod span;
+pub mod standard;
 pub mod state;
 pub mod thread;
 #[cfg(target_arch = "wasm32")]
