@@ -1,0 +1,193 @@
+//! Reader for the canonical output of LinuxCNC's stand-alone interpreter
+//! `rs274` (Debian package `linuxcnc-uspace`), the oracle for the LinuxCNC
+//! dialect. See `/work/notes/linuxcnc.md` and `tests/linuxcnc/`.
+//!
+//! `rs274 -g prog.ngc` prints one canonical call a line, e.g.
+//! `   13 N20    STRAIGHT_FEED(8.8000, 0.0000, -20.0000, 0.0000, 0.0000, 0.0000)`:
+//! a call counter, the block's `N` word (`N.....` when it has none; six or
+//! more digits run into the name: `N123456SELECT_PLANE(…)`), the call. Moves
+//! give X Y Z A B C; **X is always a radius** (G7 halves X, I, J, K before
+//! this), lengths are in the program's units (`USE_LENGTH_UNITS`). rs274
+//! prints no file line numbers: [`numbered`] makes each block's N its line.
+#![allow(dead_code)]
+
+use std::process::{Command, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// How a straight move is made.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    /// `STRAIGHT_TRAVERSE`: rapid.
+    Traverse,
+    /// `STRAIGHT_FEED` without spindle synchronisation.
+    Feed,
+    /// `STRAIGHT_FEED` under `START_SPEED_FEED_SYNC`: distance along the
+    /// move per spindle revolution (G33 K, G76 P, or G76's taper pitch).
+    Synced(f64),
+}
+
+/// One canonical call that matters to a thread preview; others are skipped.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Call {
+    /// A straight move to radius `x`, axial `z`; `n` is the block's N word.
+    Move { kind: Kind, x: f64, z: f64, n: Option<u64> },
+    /// `START_SPEED_FEED_SYNC(pitch, velocity_mode)`. G76 tapers change the
+    /// pitch with a second start and no stop in between.
+    SyncStart { pitch: f64, n: Option<u64> },
+    /// `STOP_SPEED_FEED_SYNCH()`.
+    SyncStop { n: Option<u64> },
+    /// `SET_FEED_RATE(f)`.
+    FeedRate(f64),
+    /// `USE_LENGTH_UNITS(CANON_UNITS_INCHES)` is `true`, `…_MM` `false`.
+    Inches(bool),
+}
+
+/// A synchronised move from `from` to `to` (radius, z) at `pitch`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    pub from: (f64, f64),
+    pub to: (f64, f64),
+    pub pitch: f64,
+    pub n: Option<u64>,
+}
+
+/// Parses rs274's standard output; a line that is not a call is an error.
+pub fn parse(text: &str) -> Result<Vec<Call>, String> {
+    let mut calls = Vec::new();
+    let mut sync = None;
+    for (i, line) in text.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let bad = || format!("line {}: not a canonical call: {line:?}", i + 1);
+        let rest = line.trim_start();
+        let rest = rest.trim_start_matches(|c: char| c.is_ascii_digit()).trim_start();
+        let rest = rest.strip_prefix('N').ok_or_else(bad)?;
+        let (n, rest) = match rest.strip_prefix(".....") {
+            Some(r) => (None, r),
+            None => {
+                let d = rest.find(|c: char| !c.is_ascii_digit()).unwrap_or(rest.len());
+                (Some(rest[..d].parse().map_err(|_| bad())?), &rest[d..])
+            }
+        };
+        let (name, args) = rest.trim().strip_suffix(')').and_then(|r| r.split_once('(')).ok_or_else(bad)?;
+        let nums = || -> Result<Vec<f64>, String> {
+            args.split([',', ' ']).filter(|a| !a.is_empty()).map(|a| a.parse().map_err(|_| bad())).collect()
+        };
+        let call = match name {
+            "STRAIGHT_TRAVERSE" | "STRAIGHT_FEED" => {
+                let v = nums()?;
+                let kind = match (name, sync) {
+                    ("STRAIGHT_TRAVERSE", _) => Kind::Traverse,
+                    (_, Some(p)) => Kind::Synced(p),
+                    _ => Kind::Feed,
+                };
+                Call::Move { kind, x: *v.first().ok_or_else(bad)?, z: *v.get(2).ok_or_else(bad)?, n }
+            }
+            "START_SPEED_FEED_SYNC" => {
+                let pitch = *nums()?.first().ok_or_else(bad)?;
+                sync = Some(pitch);
+                Call::SyncStart { pitch, n }
+            }
+            "STOP_SPEED_FEED_SYNCH" => {
+                sync = None;
+                Call::SyncStop { n }
+            }
+            "SET_FEED_RATE" => Call::FeedRate(*nums()?.first().ok_or_else(bad)?),
+            "USE_LENGTH_UNITS" => Call::Inches(args == "CANON_UNITS_INCHES"),
+            _ => continue,
+        };
+        calls.push(call);
+    }
+    Ok(calls)
+}
+
+/// The synchronised runs: each `Vec` is the moves from a `SyncStart` made
+/// while not synchronised to the `SyncStop` (a G33 block, or one G76 pass's
+/// cut with its tapers), each starting where the move before it ended.
+pub fn synced_runs(calls: &[Call]) -> Vec<Vec<Segment>> {
+    let (mut runs, mut at, mut open) = (Vec::new(), (0.0, 0.0), false);
+    for c in calls {
+        match *c {
+            Call::SyncStart { .. } if !open => {
+                runs.push(Vec::new());
+                open = true;
+            }
+            Call::SyncStop { .. } => open = false,
+            Call::Move { kind, x, z, n } => {
+                if let (Kind::Synced(pitch), true) = (kind, open) {
+                    runs.last_mut().unwrap().push(Segment { from: at, to: (x, z), pitch, n });
+                }
+                at = (x, z);
+            }
+            _ => {}
+        }
+    }
+    runs
+}
+
+/// `program` with `N<line>` put before every block that has no N word, so
+/// that rs274's N column gives the 1-based source line. Blank and `%`
+/// lines are left alone; a leading `/` (block delete) stays first.
+pub fn numbered(program: &str) -> String {
+    let mut out = String::new();
+    for (i, line) in program.lines().enumerate() {
+        let t = line.trim_start();
+        let (slash, body) = t.strip_prefix('/').map_or(("", t), |b| ("/", b.trim_start()));
+        if t.is_empty() || t.starts_with('%') || body.starts_with(['N', 'n']) {
+            out.push_str(line);
+        } else {
+            out.push_str(&format!("{slash}N{} {body}", i + 1));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Whether `rs274` can be started (it is on PATH).
+pub fn available() -> bool {
+    Command::new("rs274").arg("-h").stdin(Stdio::null()).output().is_ok()
+}
+
+/// Runs `rs274 -g` on `program` (a temporary file; no INI, tool table or
+/// var file is needed; standard input closed) and parses what it prints.
+/// Err: rs274's message and offending block (e.g. "In G76, I must not be
+/// 0\nG76 …"), or why it could not run. A program must end with M2/M30 or
+/// `%`, else rs274 fails with "File ended with no percent sign or program end".
+pub fn run(program: &str) -> Result<Vec<Call>, String> {
+    static SEQ: AtomicUsize = AtomicUsize::new(0);
+    let k = SEQ.fetch_add(1, Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("screwcut-rs274-{}-{k}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let file = dir.join("prog.ngc");
+    let out = std::fs::write(&file, program)
+        .and_then(|_| Command::new("rs274").arg("-g").arg(&file).current_dir(&dir).stdin(Stdio::null()).output());
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = out.map_err(|e| format!("cannot run rs274 (apt-get install linuxcnc-uspace): {e}"))?;
+    if !out.status.success() {
+        let err = String::from_utf8_lossy(&out.stderr);
+        return Err(err.lines().filter(|l| *l != "executing").collect::<Vec<_>>().join("\n"));
+    }
+    parse(&String::from_utf8_lossy(&out.stdout))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_n_words_and_sync() {
+        let t = "   12 N..... START_SPEED_FEED_SYNC(1.500000,0)\n   13 N20    STRAIGHT_FEED(8.8000, 0.0000, -20.0000, 0.0000, 0.0000, 0.0000)\n   14 N123456STOP_SPEED_FEED_SYNCH()\n   15 N7     STRAIGHT_FEED(9.0000, 0.0000, 1.0000, 0.0000, 0.0000, 0.0000)\n";
+        let c = parse(t).unwrap();
+        assert_eq!(c[0], Call::SyncStart { pitch: 1.5, n: None });
+        assert_eq!(c[1], Call::Move { kind: Kind::Synced(1.5), x: 8.8, z: -20.0, n: Some(20) });
+        assert_eq!(c[2], Call::SyncStop { n: Some(123456) });
+        assert_eq!(c[3], Call::Move { kind: Kind::Feed, x: 9.0, z: 1.0, n: Some(7) });
+        assert!(parse("executing\n").is_err());
+    }
+
+    #[test]
+    fn numbers_lines() {
+        assert_eq!(numbered("%\nG0 X1\n\nN5 G1\n/ G0 Z1\n"), "%\nN2 G0 X1\n\nN5 G1\n/N5 G0 Z1\n");
+    }
+}
