@@ -4,7 +4,10 @@
 //! Data flows one way: text → [`block`]s ([`lexer`]) → events ([`interp`],
 //! reading each block through its [`controller`]) → motions and threads with
 //! the motions of each pass ([`assemble`]: [`group`], [`cycle`]) → depths
-//! and advice ([`advice`]) → [`plan::Plan`] → scenes ([`diagram`]). The core is free of wasm and the DOM; the
+//! and advice ([`advice`]) → [`plan::Plan`] → scenes ([`diagram`]). What only a
+//! browser needs (UTF-16 positions, scenes packed into typed arrays, content
+//! keys as JavaScript numbers, sessions) is in [`wasm`], whose bindings are
+//! compiled for wasm32 only. The core is free of wasm and the DOM; the
 //! browser binding lives in `wasm` and is compiled only for wasm32.
 //!
 //! ```
@@ -27,6 +30,7 @@ pub mod event;
 pub mod gcode;
 pub mod geom;
 pub mod group;
+pub mod hash;
 pub mod interp;
 pub mod lexer;
 pub mod motion;
@@ -38,7 +42,6 @@ pub mod span;
 pub mod standard;
 pub mod state;
 pub mod thread;
-#[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
 pub use diagnostic::{Code, Diagnostic, Severity};

@@ -266,3 +266,26 @@ fn the_side_section_comes_as_pieces_to_a_caller_with_keys() {
     assert!(get(&get(&full, "side"), "pieces").is_undefined());
     assert!(scene(&get(&full, "side")).items.len() > 500);
 }
+
+/// Every view keeps its own session: two programs planned in turn by two
+/// sessions each resume from their own snapshot after a late edit, where
+/// one shared planner would have re-read the whole program on every switch.
+#[wasm_bindgen_test]
+fn each_view_keeps_its_own_session() {
+    let (a, b) = (wasm::Session::new(), wasm::Session::new());
+    let text_a = program(40);
+    let text_b = program(30).replace("G32 Z13 F2", "G32 Z14 F2");
+    let up = |s: &wasm::Session, t: &str| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    up(&a, &text_a);
+    up(&b, &text_b);
+    // A late edit to each, alternating: both resume near the end.
+    let a2 = edit_line(&text_a, -3, |l| l.replace("Z70", "Z71"));
+    let b2 = edit_line(&text_b, -3, |l| l.replace("Z70", "Z71"));
+    let ra = up(&a, &a2);
+    let rb = up(&b, &b2);
+    let lines_a = text_a.lines().count() as f64;
+    assert!(num(&ra, "resumedAt") > lines_a / 2.0, "a resumed at {}", num(&ra, "resumedAt"));
+    assert!(num(&rb, "resumedAt") > 100.0, "b resumed at {}", num(&rb, "resumedAt"));
+    // Each answers as a plan from scratch would.
+    assert_eq!(snapshot(&ra), snapshot(&wasm::Session::new().update(&a2, "gsk980tdc", "", 0, 1, -1.0, None).unwrap()));
+}

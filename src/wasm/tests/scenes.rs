@@ -191,3 +191,19 @@ fn thread_and_start_choices_are_clamped() {
     let p: Vec<PassInfo> = field(&r, "passes");
     assert_eq!(p[0].lines, [10, 11, 12]);
 }
+
+/// The record layout is defined once in Rust and read by name: every field
+/// of `pack::FIELDS` at its index, the names lists indexed by their codes.
+#[wasm_bindgen_test]
+fn scene_layout_names_every_field() {
+    let l = wasm::scene_layout();
+    assert_eq!(num(&l, "stride") as usize, crate::wasm::pack::STRIDE);
+    let fields = get(&l, "fields");
+    for (i, name) in crate::wasm::pack::FIELDS.iter().enumerate() {
+        assert_eq!(num(&fields, name) as usize, i, "{name}");
+    }
+    let styles = array(&get(&l, "styles"));
+    assert_eq!(styles[crate::diagram::Style::Cut.code() as usize].as_string().as_deref(), Some("cut"));
+    let shapes = array(&get(&l, "shapes"));
+    assert_eq!(shapes[4].as_string().as_deref(), Some("dim"));
+}
