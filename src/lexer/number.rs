@@ -108,4 +108,3 @@ pub(super) fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumE
     }
     acc.finish(max_digits)
 }
-

@@ -83,4 +83,3 @@ pub(super) fn fold(c: char) -> Option<u8> {
         _ => None,
     }
 }
-
