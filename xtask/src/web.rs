@@ -2,7 +2,8 @@
 //!
 //! The site is: `index.html`, `docs.html` and the other files of
 //! `www/static/`, `app.js` (the app bundled by esbuild, with the
-//! wasm-bindgen glue), `screwcut-preview.js` (the embeddable
+//! wasm-bindgen glue), `worker.js` (its planning and drawing worker),
+//! `screwcut-preview.js` (the embeddable
 //! `<screwcut-preview>` element, bundled the same way without the editor),
 //! `screwcut_bg.wasm` (the core, size-optimised by the binaryen pinned in
 //! `www/package.json`; shared by both bundles) and `examples/` (every file
@@ -249,7 +250,8 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     }
     std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let esbuild = path_str(&www.join("node_modules").join(".bin").join("esbuild"))?;
-    for (entry, file) in [("src/main.js", "app.js"), ("src/embed/element.js", "screwcut-preview.js")] {
+    let entries = [("src/main.js", "app.js"), ("src/worker.js", "worker.js"), ("src/embed/element.js", "screwcut-preview.js")];
+    for (entry, file) in entries {
         let outfile = format!("--outfile={}", path_str(&out.join(file))?);
         let mut args = vec![entry, "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];
         if release {

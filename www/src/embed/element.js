@@ -15,12 +15,13 @@
 // type; without it the program is listed read-only, unless `hide-code`), `app` (the full app the "Open in editor" link goes to; default: a
 // <meta name="screwcut-app" content="..."> of the page, else the app next to
 // this script), `lang` (en, zh). Every element on a page shares one wasm
-// instance, loaded when the first element comes into view; each element
-// plans and draws when it is scrolled near. Properties: `program` (get/set),
+// instance, loaded when the first element comes into view, and plans in a
+// session of its own; each element plans and draws when it is scrolled near. Properties: `program` (get/set),
 // `result` (the planner's last answer), `start()`. Event `screwcut-plan`
 // after every plan, with counts in `detail`.
 
-import { SceneView } from '../view.js';
+import { SceneView } from '../sceneview.js';
+import { bindCanvas } from '../input.js';
 import { textIn, labelIn } from '../i18n.js';
 import { esc, num, passTableHead, passTableRows } from '../table.js';
 import { jsonFragment } from '../fragment.js';
@@ -118,7 +119,8 @@ export class ScrewcutPreview extends HTMLElement {
 
   _build() {
     this._built = true;
-    for (const v of Object.values(this._views)) v.destroy();
+    for (const b of this._bindings || []) b.destroy();
+    this._bindings = [];
     this._views = {};
     const views = parseViews(this.getAttribute('view'));
     this._viewNames = views;
@@ -176,18 +178,36 @@ export class ScrewcutPreview extends HTMLElement {
     for (const name of this._viewNames) {
       if (name === 'table') continue;
       const canvas = this.shadowRoot.querySelector(`.view[data-view="${name}"] canvas`);
-      this._views[name] = new SceneView(canvas, {
-        styleNames: this._styleNames,
-        tr,
-        name,
-        stretch: name === 'side',
-        wheel: 'ctrl',
-        onHover: (info) => this._onHover(info),
-        onMove: (x, y) => this._moveTip(x, y),
-        onPick: (info) => {
-          if (this._editor && info.lines.length) this._gotoLine(info.lines[0]);
+      const view = new SceneView(canvas, { styleNames: this._styleNames, tr, name, stretch: name === 'side' });
+      this._views[name] = view;
+      const binding = bindCanvas(
+        canvas,
+        {
+          resize: (w, h, dpr) => view.setSize(w, h, dpr),
+          pan: (dx, dy) => view.pan(dx, dy),
+          zoom: (x, y, k) => view.zoomAt(x, y, k),
+          fit: () => view.fit(),
+          hover: (x, y, clientX, clientY) => {
+            const i = view.pick(x, y);
+            if (i !== view.hovered) {
+              view.hovered = i;
+              this._onHover(i >= 0 ? { ...view.info(i), x: clientX, y: clientY } : null);
+            } else if (i >= 0) this._moveTip(clientX, clientY);
+          },
+          leave: () => {
+            if (view.hovered >= 0) {
+              view.hovered = -1;
+              this._onHover(null);
+            }
+          },
+          pick: (x, y) => {
+            const info = view.info(view.pick(x, y));
+            if (info && this._editor && info.lines.length) this._gotoLine(info.lines[0]);
+          },
         },
-      });
+        { wheel: 'ctrl' },
+      );
+      this._bindings.push(binding);
     }
   }
 
@@ -207,6 +227,7 @@ export class ScrewcutPreview extends HTMLElement {
       if (text !== null) this._text = text;
       this._renderListing();
       this._core = core;
+      this._session ||= new core.Session();
       this._styleNames = core.styleNames;
       if (this._editor) this._editor.value = this.program;
       this._setState('ready');
@@ -240,7 +261,7 @@ export class ScrewcutPreview extends HTMLElement {
     const thread = this._thread ?? parseThread(this.getAttribute('thread'));
     let r;
     try {
-      r = this._held.fill(this._core.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
+      r = this._held.fill(this._session.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
     } catch (e) {
       this._held.clear();
       this._fail(e, true);
