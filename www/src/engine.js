@@ -278,25 +278,70 @@ export class Engine {
     this.post({ type: 'reply', id, data: this.session.plan_json() });
   }
 
-  /** For tests and benchmarks: what a view shows, or a scene in another encoding. */
-  on_inspect({ id, what, name, format }) {
-    let data = null;
-    if (what === 'view') {
-      const v = this.views[name];
-      data = v && {
-        scene: v.scene && { items: v.scene.items, coords: v.scene.coords, lines: v.scene.lines, labels: v.scene.labels, styles: v.scene.prepared?.styles, bounds: v.scene.bounds },
-        transform: v.transform(),
-        stale: v.stale,
-        highlight: v.highlight ? [...v.highlight] : [],
-        size: [v.cssW, v.cssH],
-      };
-    } else if (what === 'side_scene_as') {
-      const s = this.session.side_scene_as(format);
-      data = format === 'packed' ? { items: s.items, coords: s.coords, lines: s.lines, labels: s.labels } : s;
-    } else if (what === 'result') {
-      const r = this.result;
-      data = r && { threads: r.threads, thread: r.thread, sideKey: r.sideKey, toothKey: r.toothKey, resumedAt: r.resumedAt };
-    }
-    this.post({ type: 'reply', id, data });
+  /**
+   * For tests and benchmarks: `view` (what view `name` shows), `pixels`
+   * (the inked pixels of its canvas), `layout`, `result` (keys and thread
+   * list of the last answer), `same_as_full` (whether the side section shown
+   * equals a full build), `transfer` (the cost of a side scene as typed
+   * arrays, objects and JSON).
+   */
+  on_inspect({ id, what, name }) {
+    const v = this.views[name];
+    const data = {
+      view: () =>
+        v && {
+          scene: v.scene && { items: v.scene.items, coords: v.scene.coords, lines: v.scene.lines, labels: v.scene.labels, styles: v.scene.prepared?.styles, bounds: v.scene.bounds },
+          transform: v.transform(),
+          stale: v.stale,
+          highlight: v.highlight ? [...v.highlight] : [],
+          size: [v.cssW, v.cssH],
+        },
+      pixels: () => {
+        if (!v) return null;
+        const c = v.canvas;
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 235 || d[i + 1] < 235 || d[i + 2] < 235)) n++;
+        return { n, w: c.width, h: c.height };
+      },
+      layout: () => this.core.scene_layout(),
+      result: () => {
+        const r = this.result;
+        return r && { threads: r.threads, thread: r.thread, sideKey: r.sideKey, toothKey: r.toothKey, resumedAt: r.resumedAt, toothLabels: r.tooth?.labels };
+      },
+      same_as_full: () => {
+        const shown = this.views.side.scene;
+        const full = this.session.side_scene_as('packed');
+        const eq = (a, b) => a.length === b.length && a.every((x, i) => Object.is(x, b[i]));
+        return ['coords', 'items', 'lines', 'bounds', 'focus'].filter((k) => !eq(shown[k], full[k])).concat(shown.labels === full.labels ? [] : ['labels']);
+      },
+      transfer: () => this.transferCosts(),
+    }[what];
+    this.post({ type: 'reply', id, data: data ? data() : null });
+  }
+
+  /** What building, moving and reading a side scene costs in each encoding (ms). */
+  transferCosts() {
+    const s = this.session;
+    const time = (f, n = 15) => {
+      f();
+      const t0 = performance.now();
+      for (let i = 0; i < n; i++) f();
+      return (performance.now() - t0) / n;
+    };
+    const walk = (x) => {
+      let sum = 0;
+      if (x.coords) for (let i = 0; i < x.coords.length; i++) sum += x.coords[i];
+      else for (const it of x.items) for (const val of Object.values(it.shape)) if (Array.isArray(val)) for (const p of val) sum += Array.isArray(p) ? p[0] + p[1] : p;
+      return sum;
+    };
+    return {
+      items: s.side_scene_as('packed').items.length / this.core.scene_layout().stride,
+      packed: time(() => walk(s.side_scene_as('packed'))),
+      objects: time(() => walk(s.side_scene_as('objects'))),
+      json: time(() => walk(JSON.parse(s.side_scene_as('json')))),
+      threadsObjects: time(() => s.threads_as('objects')),
+      threadsJson: time(() => JSON.parse(s.threads_as('json'))),
+    };
   }
 }

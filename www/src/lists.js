@@ -22,6 +22,8 @@ export class VirtualRows {
     this.row = () => '';
     this.shown = '';
     this.hot = -1;
+    this.first = 0;
+    this.last = 0;
     scroller.addEventListener('scroll', () => this.render(), { passive: true });
     new ResizeObserver(() => this.render()).observe(scroller);
   }
@@ -34,17 +36,25 @@ export class VirtualRows {
     this.render();
   }
 
-  /** Marks row `i` (-1: none) and scrolls it into view when asked. */
+  /** Marks row `i` (-1: none) and scrolls it into view when asked; the rows stay in place. */
   mark(i, reveal = false) {
+    if (i === this.hot && !reveal) return;
+    this.rowAt(this.hot)?.classList.remove('hot');
     this.hot = i;
     if (reveal && i >= 0) {
       const h = this.opts.rowHeight;
       const top = this.scroller.scrollTop;
       const view = this.scroller.clientHeight - h;
       if (i * h < top || i * h > top + view) this.scroller.scrollTop = Math.max(0, i * h - view / 2);
+      this.render();
     }
-    this.shown = '';
-    this.render();
+    this.rowAt(i)?.classList.add('hot');
+  }
+
+  /** The element of row `i`, when it is in the DOM. */
+  rowAt(i) {
+    if (i < this.first || i >= this.last) return null;
+    return this.body.children[i - this.first + (this.first > 0 ? 1 : 0)] || null;
   }
 
   render() {
@@ -53,9 +63,11 @@ export class VirtualRows {
     const height = this.scroller.clientHeight || 400;
     const first = Math.max(0, Math.floor(top / h) - 10);
     const last = Math.min(this.count, Math.ceil((top + height) / h) + 10);
-    const key = `${first}:${last}:${this.count}:${this.hot}`;
+    const key = `${first}:${last}:${this.count}`;
     if (key === this.shown) return;
     this.shown = key;
+    this.first = first;
+    this.last = last;
     let html = first > 0 ? this.opts.spacer(first * h) : '';
     for (let i = first; i < last; i++) html += this.row(i, i === this.hot);
     if (last < this.count) html += this.opts.spacer((this.count - last) * h);
