@@ -13,6 +13,7 @@
 //! together from kept pieces) is the business of the wasm layer.
 
 pub mod band;
+pub mod detail;
 pub mod scene;
 pub mod side;
 pub mod starts;

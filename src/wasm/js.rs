@@ -178,3 +178,65 @@ pub fn pieces_to_js(p: &SidePieces) -> JsValue {
     set(&o, "ends", &Uint32Array::from(&p.ends.concat()[..]).into());
     o.into()
 }
+
+/// Passes as columns of typed arrays (one array per field, no object per
+/// pass): `{n, start, index: Uint32Array, x, z, xEnd, zEnd, depth, infeed,
+/// area, shift, angle, runoutX, runoutZ, screwX, screwZ: Float64Array (NaN:
+/// none), role: Uint8Array (0 rough, 1 finish, 2 spring), lineStart:
+/// Uint32Array (n + 1), lines: Uint32Array}`; X as a diameter, (x, z) where
+/// the cut starts, (xEnd, zEnd) where it ends.
+pub fn passes_to_js(passes: &[crate::thread::Pass]) -> JsValue {
+    use crate::num::round_out as r;
+    use crate::thread::Role;
+    let n = passes.len();
+    let (mut start, mut index, mut line_start) =
+        (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n + 1));
+    let mut cols: [Vec<f64>; 13] = std::array::from_fn(|_| Vec::with_capacity(n));
+    let (mut role, mut lines) = (Vec::with_capacity(n), Vec::new());
+    for p in passes {
+        start.push(p.start);
+        index.push(p.index);
+        let (run, screw) =
+            (p.runout_to.map_or([f64::NAN; 2], |q| [q.x, q.z]), p.screw_in_from.map_or([f64::NAN; 2], |q| [q.x, q.z]));
+        let values = [
+            p.from.x,
+            p.from.z,
+            p.to.x,
+            p.to.z,
+            p.depth,
+            p.infeed,
+            p.area.unwrap_or(f64::NAN),
+            p.shift,
+            p.angle,
+            run[0],
+            run[1],
+            screw[0],
+            screw[1],
+        ];
+        for (c, v) in cols.iter_mut().zip(values) {
+            c.push(if v.is_nan() { v } else { r(v) });
+        }
+        role.push(match p.role {
+            Role::Rough => 0u8,
+            Role::Finish => 1,
+            Role::Spring => 2,
+        });
+        line_start.push(lines.len() as u32);
+        lines.extend_from_slice(&p.lines);
+    }
+    line_start.push(lines.len() as u32);
+    let o = Object::new();
+    set(&o, "n", &(n as u32).into());
+    set(&o, "start", &Uint32Array::from(&start[..]).into());
+    set(&o, "index", &Uint32Array::from(&index[..]).into());
+    let names = [
+        "x", "z", "xEnd", "zEnd", "depth", "infeed", "area", "shift", "angle", "runoutX", "runoutZ", "screwX", "screwZ",
+    ];
+    for (name, c) in names.iter().zip(&cols) {
+        set(&o, name, &Float64Array::from(&c[..]).into());
+    }
+    set(&o, "role", &js_sys::Uint8Array::from(&role[..]).into());
+    set(&o, "lineStart", &Uint32Array::from(&line_start[..]).into());
+    set(&o, "lines", &Uint32Array::from(&lines[..]).into());
+    o.into()
+}

@@ -14,7 +14,8 @@ use super::keys::{KeyHasher, combine, hash_move, packed_key};
 use super::pack::{Packed, RECORD_SEP, STRIDE, pack};
 use crate::diagram::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
 use crate::diagram::side::{
-    Band, Layout, axis, capped_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item, work_extent_in,
+    Band, Layout, axis, capped_note, detail_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item,
+    work_extent_in,
 };
 
 /// Motions per block of other motions.
@@ -228,6 +229,7 @@ impl SideMemo {
             let (kb, kf) = pieces.take_pair(keys, || {
                 let (mut back, mut front) = (Vec::new(), Vec::new());
                 thread_items(plan, &layout.feeds, ti, t, &mut back, &mut front);
+                front.extend(detail_note(ti, t, &layout.details[ti]).map(|i| (i, false)));
                 (Chunk::of(back), Chunk::of(front))
             });
             order.push(kb);
@@ -250,7 +252,7 @@ impl SideMemo {
             order.push(pieces.take(h.finish(), || Chunk::of(motions(moves, owner, has_threads))));
         }
         // Runs of passes of one thread, in cutting order.
-        let paths: Vec<_> = layout.paths.iter().filter(|p| p.end() <= drawn).collect();
+        let paths: Vec<_> = layout.paths.iter().collect();
         let mut i = 0;
         while i < paths.len() {
             let mut j = i + 1;

@@ -12,8 +12,8 @@ use js_sys::{Array, Float64Array, Object};
 use wasm_bindgen::prelude::*;
 
 use super::js::{
-    SettingProblem, ThreadSummary, dialect, editor_diagnostics, err, packed_to_js, pieces_to_js, set, settings_from,
-    to_js,
+    SettingProblem, ThreadSummary, dialect, editor_diagnostics, err, packed_to_js, passes_to_js, pieces_to_js, set,
+    settings_from, to_js,
 };
 use super::keys::{PlanKeys, combine, js_key, key_of, packed_key};
 use super::memo::SideMemo;
@@ -219,7 +219,7 @@ fn thread_parts(
     };
     let thread_key = keys.threads[t];
     let start = start.clamp(1, plan.threads[t].starts.max(1));
-    keyed(o, known, Part::Passes, combine(&[thread_key, t as u64]), || to_js(&plan.threads[t].passes))?;
+    keyed(o, known, Part::Passes, combine(&[thread_key, t as u64]), || Ok(passes_to_js(&plan.threads[t].passes)))?;
     // The small scenes are keyed by what they draw: an edit that leaves one as it was redraws nothing.
     for (part, scene) in [(Part::Tooth, diagram::tooth(plan, t, start)), (Part::Starts, diagram::starts(plan, t))] {
         let packed = scene.map(|s| pack(&s));

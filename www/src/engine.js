@@ -14,50 +14,6 @@ import { setLayout } from './render.js';
 import { labelIn } from './i18n.js';
 import { HeldParts } from './parts.js';
 
-const ROLES = { rough: 0, finish: 1, spring: 2 };
-
-/** The chosen thread's passes as columns of typed arrays (one transfer, no object per row). */
-export function passColumns(passes) {
-  const n = passes ? passes.length : 0;
-  const c = {
-    n,
-    start: new Uint32Array(n),
-    index: new Uint32Array(n),
-    x: new Float64Array(n),
-    z: new Float64Array(n),
-    zEnd: new Float64Array(n),
-    depth: new Float64Array(n),
-    infeed: new Float64Array(n),
-    area: new Float64Array(n),
-    role: new Uint8Array(n),
-    lineStart: new Uint32Array(n + 1),
-    lines: null,
-  };
-  const lines = [];
-  for (let i = 0; i < n; i++) {
-    const p = passes[i];
-    c.start[i] = p.start;
-    c.index[i] = p.index;
-    c.x[i] = p.from[0];
-    c.z[i] = p.from[1];
-    c.zEnd[i] = p.to[1];
-    c.depth[i] = p.depth;
-    c.infeed[i] = p.infeed;
-    c.area[i] = p.area ?? NaN;
-    c.role[i] = ROLES[p.role] ?? 0;
-    c.lineStart[i] = lines.length;
-    for (const l of p.lines) lines.push(l);
-  }
-  c.lineStart[n] = lines.length;
-  c.lines = Uint32Array.from(lines);
-  return c;
-}
-
-/** The typed arrays of a column set, to transfer. */
-export function columnBuffers(c) {
-  return c ? Object.values(c).filter((v) => ArrayBuffer.isView(v)).map((v) => v.buffer) : [];
-}
-
 export class Engine {
   /**
    * @param core the initialised wasm module (`Session`, `scene_layout`, `style_names`, …)
@@ -187,11 +143,9 @@ export class Engine {
   postResult(r, seq, timing) {
     const threads = r.threads === this.sentThreads ? undefined : r.threads;
     this.sentThreads = r.threads;
-    let passes;
-    if (r.passes !== this.sentPasses) {
-      passes = passColumns(r.passes);
-      this.sentPasses = r.passes;
-    }
+    // The passes come from the planner as columns of typed arrays (copied, not moved: the engine keeps them).
+    const passes = r.passes === this.sentPasses ? undefined : r.passes;
+    this.sentPasses = r.passes;
     const out = {
       type: 'result',
       seq,
@@ -214,7 +168,7 @@ export class Engine {
         resumedAt: r.resumedAt,
       },
     };
-    this.post(out, columnBuffers(passes));
+    this.post(out);
   }
 
   /** Another thread or start for the tooth and starts views and the table. */
@@ -240,13 +194,14 @@ export class Engine {
     this.refreshHighlight();
   }
 
+  /** What the pointer or the table points at, else what the cursor line draws (a lighter mark). */
   refreshHighlight() {
     const h = this.hover;
     for (const v of Object.values(this.views)) {
       const set = new Set();
       if (h && h.pass >= 0) for (const i of v.itemsOfPass(h.thread, h.pass)) set.add(i);
       else for (const l of h ? h.lines : [this.cursor]) for (const i of v.itemsOfLine(l)) set.add(i);
-      v.setHighlight(set);
+      v.setHighlight(set, !h);
     }
   }
 

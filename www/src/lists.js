@@ -1,7 +1,7 @@
 // Lists of any length that stay fast: only the rows in view are in the
 // DOM (a spacer above and below keeps the scroll height), rows of a fixed
 // height. The pass table reads the chosen thread's passes as columns
-// (engine.js `passColumns`); the diagnostics list reads the planner's list.
+// (src/wasm/js.rs `passes_to_js`); the diagnostics list reads the planner's list.
 
 import { esc, num } from './table.js';
 
@@ -99,4 +99,26 @@ export function passLines(c, i) {
 /** One diagnostic as a list item (`i` its index in the full list). */
 export function diagnosticRow(d, i, t, hot) {
   return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`;
+}
+
+/** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, role, lines, shift, angle}`). */
+export function passObjects(c) {
+  if (!c) return [];
+  const out = new Array(c.n);
+  for (let i = 0; i < c.n; i++) {
+    out[i] = {
+      start: c.start[i],
+      index: c.index[i],
+      from: [c.x[i], c.z[i]],
+      to: [c.xEnd[i], c.zEnd[i]],
+      depth: c.depth[i],
+      infeed: c.infeed[i],
+      area: Number.isNaN(c.area[i]) ? null : c.area[i],
+      role: ROLE_NAMES[c.role[i]] || 'rough',
+      lines: passLines(c, i),
+      shift: c.shift[i],
+      angle: c.angle[i],
+    };
+  }
+  return out;
 }

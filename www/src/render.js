@@ -220,6 +220,8 @@ export function drawScene(painter, scene, xf, opts) {
   const X = (x) => xf.tx + xf.sx * x;
   const Y = (y) => xf.ty - xf.sy * y;
   const hi = opts.highlight;
+  // The cursor line's mark is lighter than what the pointer is over.
+  const haloAlpha = opts.light ? 0.22 : 0.45;
   const placed = [];
   const view = { w: opts.width, h: opts.height };
   const colourPen = (i) => {
@@ -248,16 +250,16 @@ export function drawScene(painter, scene, xf, opts) {
         }
         const closed = shape === SHAPE.polygon;
         // A highlight is a halo under the item, which keeps its own colours on top.
-        if (glow === 'halo') painter.path(pts, closed, closed ? { stroke: HIGHLIGHT, width: 3.5, alpha: 0.9 } : { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: 0.45 });
+        if (glow === 'halo') painter.path(pts, closed, closed ? { stroke: HIGHLIGHT, width: 3, alpha: 2 * haloAlpha } : { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
         else painter.path(pts, closed, pen);
         break;
       }
       case SHAPE.circle:
-        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: 0.45 });
+        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
         else painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, pen);
         break;
       case SHAPE.arrow:
-        if (glow === 'halo') painter.path(new Float64Array([X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]), false, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: 0.45 });
+        if (glow === 'halo') painter.path(new Float64Array([X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]), false, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
         else arrow(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), pen);
         break;
       case SHAPE.dim:
@@ -283,7 +285,7 @@ export function drawScene(painter, scene, xf, opts) {
         break;
       }
       case SHAPE.marker:
-        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), 7, { fill: 'rgba(245,158,11,0.45)' });
+        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), 7, { fill: HIGHLIGHT, alpha: haloAlpha });
         else marker(painter, X(coords[c]), Y(coords[c + 1]), items[o + F.extra], pen);
         break;
     }
@@ -539,16 +541,7 @@ export function canvasPainter(ctx) {
     circle(x, y, r, pen) {
       ctx.beginPath();
       ctx.arc(x, y, Math.max(r, 0), 0, Math.PI * 2);
-      if (pen.fill) {
-        ctx.fillStyle = pen.fill;
-        ctx.fill();
-      }
-      if (pen.stroke) {
-        ctx.setLineDash(pen.dash || []);
-        ctx.strokeStyle = pen.stroke;
-        ctx.lineWidth = pen.width || 1;
-        ctx.stroke();
-      }
+      this.finish(true, pen);
     },
     text(x, y, s, pen, anchor, baseline, angle = 0) {
       ctx.save();

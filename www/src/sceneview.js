@@ -108,12 +108,14 @@ export class SceneView {
     }
   }
 
-  /** Highlights items: a Set of item indices, or null; the same items again draw nothing. */
-  setHighlight(set) {
+  /** Highlights items: a Set of item indices, or null; `light` for the editor cursor's mark. The same again draws nothing. */
+  setHighlight(set, light = false) {
     const old = this.highlight;
     const same = (!old || !old.size) && (!set || !set.size) ? true : !!old && !!set && old.size === set.size && [...set].every((i) => old.has(i));
     this.highlight = set;
-    if (!same) this.draw();
+    const changed = this.light !== light;
+    this.light = light;
+    if (!same || (changed && set && set.size)) this.draw();
   }
 
   /** Item indices drawn from source `line`. */
@@ -156,6 +158,7 @@ export class SceneView {
       tr: this.opts.tr,
       styleNames: this.opts.styleNames,
       highlight,
+      light: this.light,
       thread: this.thread,
       stale,
       width: this.cssW,

@@ -35,7 +35,7 @@ fn edit_line(text: &str, n: isize, f: impl Fn(&str) -> String) -> String {
 fn snapshot(r: &JsValue) -> String {
     let diags: Vec<Diag> = field(r, "diagnostics");
     let threads: Vec<ThreadInfo> = field(r, "threads");
-    let passes: Vec<PassInfo> = field(r, "passes");
+    let passes: Vec<PassInfo> = passes(r, "passes");
     let scene_text = |key: &str| {
         let v = get(r, key);
         if v.is_null() {
@@ -176,7 +176,7 @@ fn parts_the_caller_has_are_not_sent_again() {
     let r3 = again(&late, &r2, 29, 1);
     assert_eq!(sent(&r3), ["passes", "tooth", "starts"]);
     assert_eq!(num(&r3, "threadsKey"), last);
-    let passes: Vec<PassInfo> = field(&r3, "passes");
+    let passes: Vec<PassInfo> = passes(&r3, "passes");
     assert!(close(passes[0].from[0], 38.0), "{:?}", passes[0].from);
     // Another edit to that pass: its start angles stay as they were, so the starts view is not sent.
     let later = edit_line(&late, -9, |_| "X38.05".into());
@@ -228,7 +228,7 @@ fn plan_summary_counts_without_drawing() {
     // It keeps nothing: the last plan is still the one update made.
     plan(G76_FANUC, "fanuc0i", "");
     wasm::plan_summary(O1006, "gsk980tdc", "").unwrap();
-    let p: Vec<PassInfo> = field(&wasm::thread_scenes(0, 1).unwrap(), "passes");
+    let p: Vec<PassInfo> = passes(&wasm::thread_scenes(0, 1).unwrap(), "passes");
     assert!(close(p[0].depth, 1.8));
 }
 

@@ -23,7 +23,8 @@
 import { SceneView } from '../sceneview.js';
 import { bindCanvas } from '../input.js';
 import { textIn, labelIn } from '../i18n.js';
-import { esc, num, passTableHead, passTableRows } from '../table.js';
+import { esc, num } from '../table.js';
+import { VirtualRows, passHead, passRow, passObjects } from '../lists.js';
 import { jsonFragment } from '../fragment.js';
 import { HERE, loadCore, startWhenVisible, forget } from './core.js';
 import { HeldParts } from '../parts.js';
@@ -121,6 +122,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._built = true;
     for (const b of this._bindings || []) b.destroy();
     this._bindings = [];
+    this._rows = null;
     this._views = {};
     const views = parseViews(this.getAttribute('view'));
     this._viewNames = views;
@@ -267,6 +269,11 @@ export class ScrewcutPreview extends HTMLElement {
       this._fail(e, true);
       return;
     }
+    // The planner sends the passes as columns; the element's `result` keeps one object per pass.
+    if (r.passes && !Array.isArray(r.passes)) {
+      r.passColumns = r.passes;
+      r.passes = passObjects(r.passes);
+    }
     this._result = r;
     const stale = r.alarms > 0 && this._lastGood;
     if (r.good) this._lastGood = r;
@@ -275,7 +282,7 @@ export class ScrewcutPreview extends HTMLElement {
       view.setScene(shown[name], !!stale);
       view.setThread(shown.thread ?? 0);
     }
-    this._renderTable(shown);
+    this._renderTable(shown, !!stale);
     this._renderBar(r, !!stale);
     this._renderDiagnostics(r.diagnostics);
     this._updateLink();
@@ -315,11 +322,20 @@ export class ScrewcutPreview extends HTMLElement {
     for (const l of lines) this._listing.querySelector(`span[data-line="${l}"]`)?.classList.add('hot');
   }
 
-  _renderTable(r) {
+  _renderTable(r, stale) {
     if (!this._table) return;
     const t = (key) => this._t(key);
-    this._table.tHead.innerHTML = passTableHead(t);
-    this._table.tBodies[0].innerHTML = passTableRows(r.passes, t);
+    const head = passHead(t, r.units);
+    if (this._table.tHead.dataset.html !== head) {
+      this._table.tHead.innerHTML = head;
+      this._table.tHead.dataset.html = head;
+    }
+    this._rows ||= new VirtualRows(this._table.closest('.view.table'), this._table.tBodies[0], {
+      rowHeight: 21,
+      spacer: (h) => `<tr class="spacer" aria-hidden="true" style="height:${h}px"><td colspan="10"></td></tr>`,
+    });
+    const c = r.passColumns;
+    this._rows.set(c ? c.n : 0, (i, hot) => passRow(c, i, t, hot, stale));
   }
 
   _renderBar(r, stale) {
@@ -379,8 +395,7 @@ export class ScrewcutPreview extends HTMLElement {
     for (const view of Object.values(this._views)) {
       view.setHighlight(info && info.pass >= 0 ? new Set(view.itemsOfPass(info.thread, info.pass)) : null);
     }
-    const rows = this._table ? this._table.tBodies[0].rows : [];
-    for (const row of rows) row.classList.toggle('hot', !!info && info.thread === r?.thread && Number(row.dataset.pass) === info.pass);
+    this._rows?.mark(info && info.thread === r?.thread ? info.pass : -1);
     if (!info) {
       tip.hidden = true;
       this._markLines([]);
