@@ -202,8 +202,9 @@ fn passed_count(line: &str) -> Option<u32> {
 
 /// Builds the site, serves it on a free local port and runs the Playwright
 /// tests in `tests/browser/` against it with the system Chromium: the app
-/// (`test.mjs`), then the documentation page of embedded previews
-/// (`docs.test.mjs`); fails when either fails.
+/// (`test.mjs`), its engine in a worker and on the page and a program too
+/// big to draw whole (`engine.test.mjs`), then the documentation page of
+/// embedded previews (`docs.test.mjs`); fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -217,8 +218,9 @@ pub fn browser_tests() -> Result {
     std::thread::spawn(move || serve_forever(listener, out));
     let url = format!("http://127.0.0.1:{port}/");
     let app = run("node", &["test.mjs", &url], Some(&dir));
+    let engine = run("node", &["engine.test.mjs", &url], Some(&dir));
     let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
-    app.and(docs)
+    app.and(engine).and(docs)
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
