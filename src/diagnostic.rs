@@ -275,6 +275,19 @@ impl Diagnostics {
         self.first_dropped
     }
 
+    /// Takes the diagnostics from the `len`-th on out of the collector (none were dropped).
+    pub fn split_off(&mut self, len: usize) -> Vec<(Code, String, Span)> {
+        self.items.split_off(len.min(self.items.len()))
+    }
+
+    /// Appends `items` (kept from another reading of the same text, `bytes`
+    /// further along here), keeping this collector's limit.
+    pub fn extend_shifted(&mut self, items: Vec<(Code, String, Span)>, bytes: isize) {
+        for (code, message, span) in items {
+            self.push(code, span.shifted(bytes), message);
+        }
+    }
+
     /// Moves every diagnostic of `other` in, keeping this collector's limit.
     pub fn absorb(&mut self, other: Diagnostics) {
         self.dropped += other.dropped;

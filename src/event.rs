@@ -28,7 +28,7 @@ pub enum Event {
     /// A synchronised piece of a thread cut block by block (G32, Renhe G32/G33).
     Piece(Piece),
     /// A G92 pass block: one pass per start.
-    G92(G92Pass),
+    G92(Box<G92Pass>),
     /// A multi-pass cycle (G76, G78).
     Multi(Box<Multi>),
     /// The continuous thread being cut ends (a block that is not a thread block).

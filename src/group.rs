@@ -65,7 +65,30 @@ pub struct Grouper {
     infeed: [Infeed1; 2],
 }
 
+impl Chain {
+    /// The chain as read from a text `bytes` longer before it, with `moves` more motions before it.
+    pub fn shifted(&self, moves: isize, bytes: isize) -> Chain {
+        let mut c = self.clone();
+        c.span = c.span.shifted(bytes);
+        c.first_move = c.first_move.saturating_add_signed(moves);
+        c.moves = c.moves.shifted(moves);
+        c
+    }
+}
+
 impl Grouper {
+    /// The state as reached in a text `bytes` longer before this point, with
+    /// `moves` more motions before it (to compare with a reading of an edited text).
+    pub fn shifted(&self, moves: isize, bytes: isize) -> Grouper {
+        let infeed = self.infeed.map(|i| i.map(|(line, mv)| (line, mv.map(|m| m.saturating_add_signed(moves)))));
+        Grouper {
+            chain: self.chain.as_ref().map(|c| c.shifted(moves, bytes)),
+            cuts: self.cuts.iter().map(|c| c.shifted(moves, bytes)).collect(),
+            after: self.after,
+            infeed,
+        }
+    }
+
     /// A rapid with axis words `x`, `z` on `line` (its motion's index, if it
     /// moved): after a cut the first rapid on the cut's short axis is its
     /// retract and the next rapid on its long axis its return; otherwise

@@ -28,6 +28,8 @@ pub struct Interp {
     pub s: Settings,
     /// The controller of the settings' dialect.
     pub ctl: &'static Controller,
+    /// A length without a decimal point is in least input increments.
+    increments: bool,
 }
 
 impl std::fmt::Debug for Controller {
@@ -45,20 +47,23 @@ type Code1<'b> = Option<(G, &'b Word)>;
 impl Interp {
     /// A fresh interpreter.
     pub fn new(s: &Settings) -> Interp {
-        Interp { m: Modal::default(), s: s.clone(), ctl: controller::of(s.dialect()) }
+        let ctl = controller::of(s.dialect());
+        Interp { m: Modal::default(), s: s.clone(), ctl, increments: ctl.rules.increments(s) }
     }
 
     /// Reads one block: its events go to `events`, its findings to `diags`.
     pub fn step(&mut self, b: &Block, events: &mut Vec<Event>, diags: &mut Diagnostics) {
         let ctl = self.ctl;
-        let mut r = Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, events, diags };
+        let mut r =
+            Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, increments: self.increments, events, diags };
         block(&mut r, ctl, b);
     }
 
     /// Reading is over: the continuous thread and the threads being grouped end.
     pub fn finish(&mut self, events: &mut Vec<Event>, diags: &mut Diagnostics) {
         let ctl = self.ctl;
-        let mut r = Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, events, diags };
+        let mut r =
+            Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, increments: self.increments, events, diags };
         r.close();
     }
 }

@@ -68,7 +68,7 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
     let mut r = Reading::new(settings, text.len());
     let starts = match lexer_for(text, settings, &mut r.diags) {
         Some(mut lexer) => {
-            r.run(&mut lexer, usize::MAX, |_, _, _| {});
+            r.run(&mut lexer, usize::MAX, |_, _, _| true);
             lexer.take_line_starts()
         }
         None => Vec::new(),
@@ -98,6 +98,37 @@ impl Snapshot {
     /// How many threads were complete.
     pub fn threads(&self) -> usize {
         self.plan.threads
+    }
+
+    /// How many motions there were.
+    pub fn moves(&self) -> usize {
+        self.plan.moves
+    }
+
+    /// How many diagnostics were kept.
+    pub fn diagnostics(&self) -> usize {
+        self.diags.0
+    }
+
+    /// Whether diagnostics had been dropped over the limit.
+    pub fn dropped(&self) -> bool {
+        self.diags.1 > 0
+    }
+
+    /// The snapshot as reached in a text `bytes` longer before it, with
+    /// `moves`, `threads` and `diags` more motions, threads and diagnostics.
+    pub fn shifted(&self, moves: isize, threads: isize, diags: isize, bytes: isize) -> Snapshot {
+        Snapshot {
+            modal: self.modal.clone(),
+            plan: self.plan.shifted(moves, threads, bytes),
+            diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|s| s.shifted(bytes))),
+        }
+    }
+
+    /// Whether reading goes on from here exactly as from `other` (the same
+    /// modal and grouping state, whatever the outputs before it).
+    pub fn same_state(&self, other: &Snapshot) -> bool {
+        self.modal == other.modal && self.plan.group == other.plan.group
     }
 }
 
@@ -134,13 +165,20 @@ impl Reading {
     /// Reads blocks from `lexer` to the end of the program, calling
     /// `checkpoint(offset, line, reading)` before every `every`-th block
     /// (the byte offset and 1-based line of the block about to be read),
-    /// then closes what is still open.
-    pub fn run(&mut self, lexer: &mut Lexer, every: usize, mut checkpoint: impl FnMut(usize, u32, &Reading)) {
+    /// then closes what is still open. A checkpoint that answers `false`
+    /// stops the reading there, nothing closed (the caller keeps the rest
+    /// of an earlier reading); `run` then answers `false`.
+    pub fn run(
+        &mut self,
+        lexer: &mut Lexer,
+        every: usize,
+        mut checkpoint: impl FnMut(usize, u32, &Reading) -> bool,
+    ) -> bool {
         let mut block = Block::default();
         let mut count = 0usize;
         loop {
-            if count > 0 && count % every == 0 {
-                checkpoint(lexer.offset(), lexer.line() + 1, self);
+            if count > 0 && count % every == 0 && !checkpoint(lexer.offset(), lexer.line() + 1, self) {
+                return false;
             }
             if !lexer.next_block(&mut block, &mut self.diags) {
                 break;
@@ -153,6 +191,7 @@ impl Reading {
         }
         self.it.finish(&mut self.events, &mut self.diags);
         self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
+        true
     }
 
     /// The outputs, the reading done.

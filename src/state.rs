@@ -188,6 +188,9 @@ pub struct Modal {
     pub css: bool,
     /// A continuous thread is being cut: the next thread block joins it.
     pub chain: bool,
+    /// Thread pieces or G92 passes were given since the last `Close`: the
+    /// threads being grouped may not be complete.
+    pub grouping: bool,
     /// The cycles' memory between blocks.
     pub cycle: CycleMemory,
     /// Parameters the program has rewritten (a G76 first block), by id.
@@ -222,6 +225,7 @@ impl Default for Modal {
             spindle: None,
             css: false,
             chain: false,
+            grouping: false,
             cycle: CycleMemory::default(),
             params: Vec::new(),
             tail: Tail::Standard,
