@@ -4,7 +4,7 @@
 //! Data flows one way: text → [`block`]s ([`lexer`]) → events ([`interp`],
 //! reading each block through its [`controller`]) → motions and threads with
 //! the motions of each pass ([`assemble`]: [`group`], [`cycle`]) → depths
-//! and advice ([`advice`]) → [`plan::Plan`] → scenes ([`diagram`]). The core is free of wasm and the DOM; the
+//! and advice ([`advice`]) → shop-floor figures and checks ([`shop`]) → [`plan::Plan`] → scenes ([`diagram`]). The core is free of wasm and the DOM; the
 //! browser binding lives in `wasm` and is compiled only for wasm32.
 //!
 //! ```
@@ -34,6 +34,7 @@ pub mod num;
 pub mod plan;
 pub mod planner;
 pub mod settings;
+pub mod shop;
 pub mod span;
 pub mod standard;
 pub mod state;

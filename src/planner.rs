@@ -5,14 +5,13 @@
 //! interpreter every [`CHECKPOINT_EVERY`] blocks. When the text changes, it
 //! finds the first changed byte, goes back to the last snapshot before it,
 //! cuts the motions, threads and diagnostics back to what they were there,
-//! and reads on from that block. Depths and advice of the block-by-block
-//! threads are recomputed over the whole plan (they are cheap and depend on
-//! the outline before each thread). The result is the plan a full re-plan
-//! would give; the tests check that for random edits.
+//! and reads on from that block. Depths, advice and shop-floor figures of
+//! the threads completed before that block are kept (with their
+//! diagnostics); the threads read again are finished anew. The result is
+//! the plan a full re-plan would give; the tests check that for random edits.
 
-use crate::advice::finish_thread;
 use crate::diagnostic::{Code, Diagnostics};
-use crate::plan::{Plan, Reading, Snapshot, finish, finish_with, lexer_for};
+use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
 use crate::span::Span;
 
@@ -138,7 +137,7 @@ impl Planner {
         let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
             for i in advice.len()..threads.len() {
                 let mut d = Diagnostics::with_limit(usize::MAX);
-                finish_thread(threads, i, moves, settings, inch, &mut d, spans);
+                finish_thread(threads, i, moves, settings, inch, text, &mut d, spans);
                 advice.push(d.into_items());
             }
             let mut all = Diagnostics::with_limit(usize::MAX);
