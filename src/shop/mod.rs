@@ -82,6 +82,9 @@ pub struct Shop {
     /// `machine.rapid_x` / `machine.rapid_z`.
     #[serde(serialize_with = "ser_round_opt")]
     pub time_s: Option<f64>,
+    /// Each pass's time with its rapids, in the order of `passes` (empty when not known).
+    #[serde(serialize_with = "ser_round_vec")]
+    pub pass_time_s: Vec<f64>,
     /// Highest spindle speed of the passes (under G96 at the pass diameter, clamped).
     #[serde(serialize_with = "ser_round_opt")]
     pub rpm: Option<f64>,
@@ -118,6 +121,10 @@ pub struct Shop {
     pub gauge: Option<Gauge>,
 }
 
+fn ser_round_vec<S: serde::Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
+    s.collect_seq(v.iter().map(|x| crate::num::round_out(*x)))
+}
+
 /// Fills the [`Shop`] of thread `i` and gives its diagnostics to `diags`.
 pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mut Diagnostics) {
     let Some(t) = threads.get(i) else { return };
@@ -125,9 +132,11 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
         return;
     }
     let mut shop = Shop::default();
-    let (cut, total) = time::thread_times(t, ctx);
-    shop.cut_time_s = cut;
-    shop.time_s = total;
+    if let Some(times) = time::thread_times(t, ctx) {
+        shop.cut_time_s = Some(times.cut);
+        shop.time_s = Some(times.total);
+        shop.pass_time_s = times.passes;
+    }
     limits::check(threads, i, ctx, &mut shop, diags);
     let t = &threads[i];
     shop.chip = load::chip_loads(t, ctx, diags);

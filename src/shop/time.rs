@@ -47,25 +47,37 @@ fn slice(moves: &[Move], r: std::ops::Range<usize>) -> &[Move] {
     moves.get(r).unwrap_or(&[])
 }
 
-/// Cut time and total time of a thread, seconds; `None` when a pass has no
-/// known spindle speed.
-pub fn thread_times(t: &Thread, ctx: &Context) -> (Option<f64>, Option<f64>) {
+/// The times of a thread, seconds.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Times {
+    /// Synchronised motions of every pass.
+    pub cut: f64,
+    /// With the rapids.
+    pub total: f64,
+    /// Each pass's time with its rapids, in the order of the passes.
+    pub passes: Vec<f64>,
+}
+
+/// The times of a thread; `None` when a pass has no known spindle speed.
+pub fn thread_times(t: &Thread, ctx: &Context) -> Option<Times> {
     let (mm, s) = (ctx.mm(), ctx.settings);
-    let mut cut = 0.0;
-    let mut rapid = 0.0;
+    let mut times = Times { passes: Vec::with_capacity(t.passes.len()), ..Times::default() };
     for p in &t.passes {
-        let Some(n) = pass_rpm(p, mm, s) else { return (None, None) };
+        let n = pass_rpm(p, mm, s)?;
         let feed = t.lead * n; // program units per minute
         if !(feed.is_finite() && feed > 0.0) {
-            return (None, None);
+            return None;
         }
-        cut += slice(ctx.moves, p.moves.cut.clone()).iter().map(long_travel).sum::<f64>() / feed * 60.0;
-        for r in [p.moves.approach.clone(), p.moves.retract.clone()] {
-            rapid += slice(ctx.moves, r).iter().map(|m| rapid_time(m, mm, s)).sum::<f64>();
-        }
+        let cut = slice(ctx.moves, p.moves.cut.clone()).iter().map(long_travel).sum::<f64>() / feed * 60.0;
+        let rapid: f64 = [p.moves.approach.clone(), p.moves.retract.clone()]
+            .into_iter()
+            .map(|r| slice(ctx.moves, r).iter().map(|m| rapid_time(m, mm, s)).sum::<f64>())
+            .sum();
+        times.cut += cut;
+        times.total += cut + rapid;
+        times.passes.push(cut + rapid);
     }
-    let ok = |v: f64| Some(v).filter(|v| v.is_finite());
-    (ok(cut), ok(cut + rapid))
+    (times.total.is_finite()).then_some(times)
 }
 
 #[cfg(test)]
