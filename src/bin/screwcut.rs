@@ -164,7 +164,16 @@ fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
             g.designation,
             if g.ok { "gauges" } else { "WILL NOT GAUGE" }
         );
-        let _ = writeln!(
+        if let Some(taper) = g.taper {
+            let _ = writeln!(
+                out,
+                "    pitch diameter {} at the small end; taper {} on diameter (1/16 = 0.0625); gauge plane at Z{}",
+                fmt(g.pitch_diameter),
+                fmt(taper),
+                opt(g.gauge_plane_z)
+            );
+        } else {
+            let _ = writeln!(
             out,
             "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
             fmt(g.pitch_diameter),
@@ -177,6 +186,7 @@ fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
             opt(g.minor_diameter_min),
             opt(g.minor_diameter_max)
         );
+        }
         if let Some(dx) = g.delta_x {
             let _ = writeln!(out, "    fix: ΔX {} on the final pass centres the pitch diameter", fmt(dx));
         }

@@ -493,6 +493,19 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
     if let Some(m) = mid {
         g.delta_x = delta_x(t, tool, pitch, z, worst, m);
     }
+    if !in_pitch && tool.r == 0.0 {
+        // A sharp V is the formula's base case; threading inserts are rounded.
+        let iso = Tool { r: 0.125 * pitch, ..tool };
+        if let Some(c) = cuts(t, iso, pitch, z, 0.0).get(worst) {
+            let fits = dm.pitch.min.is_none_or(|v| c.d2 >= v - eps) && dm.pitch.max.is_none_or(|v| c.d2 <= v + eps);
+            g.notes.push(format!(
+                "the tool is taken as sharp (tool.nose_radius = 0); a full-profile insert with r = 0.125·P = {} cuts d2 = {}{}",
+                fmt(iso.r),
+                fmt(c.d2),
+                if fits { ", which gauges: set tool.nose_radius to the insert's radius" } else { "" }
+            ));
+        }
+    }
     Some(())
 }
 

@@ -117,29 +117,35 @@ fn clearances(threads: &[Thread], i: usize, ctx: &Context, n: f64, shop: &mut Sh
         ),
     };
     let words = |v: f64| format!("{} at S{} and lead {}", fmt(v), fmt(n.round()), fmt(t.lead));
+    let slower = |d: f64, need: f64| {
+        let fits = (n * d / need).floor();
+        if fits >= 1.0 { format!(" or lower the speed to S{}", fmt(fits)) } else { String::new() }
+    };
     if let Some(d1) = d1.filter(|d| *d < need1 - 1e-9) {
         diags.push_with(Code::Delta1Speed, span, || {
             format!(
-                "lead-in δ1 = {} is shorter than the δ1 ≈ n·L/{} = {} the axis needs to reach the thread feed ({}): the first turns are cut while it accelerates; start the passes {} earlier or lower the speed to S{}",
+                "lead-in δ1 = {} is shorter than the δ1 ≈ n·L/{} = {} the axis needs to reach the thread feed ({}): the first turns are cut while it accelerates; start the passes {} earlier{}",
                 fmt(d1),
                 fmt(s.get(P::Delta1Divisor)),
                 words(need1),
                 how("lead-in", "shop.assumed_lead_in"),
                 fmt(need1 - d1),
-                fmt((n * d1 / need1).floor())
+                slower(d1, need1)
             )
         });
     }
-    if let Some(d2) = d2.filter(|d| *d < need2 - 1e-9) {
+    // A cut that ends inside the turned work (δ2 ≤ 0) ends where the thread is
+    // meant to end, which the program does not say: not judged, as the textbook's advice.
+    if let Some(d2) = d2.filter(|d| *d > 0.0 && *d < need2 - 1e-9) {
         diags.push_with(Code::Delta2Speed, span, || {
             format!(
-                "run-out δ2 = {} is shorter than the δ2 ≈ n·L/{} = {} the axis needs to stop ({}): the last turns are cut while it decelerates; run the passes {} further or lower the speed to S{}",
+                "run-out δ2 = {} is shorter than the δ2 ≈ n·L/{} = {} the axis needs to stop ({}): the last turns are cut while it decelerates; run the passes {} further{}",
                 fmt(d2),
                 fmt(s.get(P::Delta2Divisor)),
                 words(need2),
                 how("run-out", "shop.assumed_run_out"),
                 fmt(need2 - d2),
-                fmt((n * d2.max(0.0) / need2).floor())
+                slower(d2, need2)
             )
         });
     }
