@@ -63,11 +63,35 @@ const CASES: &[Case] = &[
     // ---- shop floor ----
     // Lead 6 at S3000: 18000 mm/min against machine.max_thread_feed 8000; 8000/6 = 1333.3 → S1333.
     (Code::ThreadFeedLimit, G, &[], "S3000 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F6\nG00 X58\nZ70\n", 4, 1, "at most S1333"),
-    (Code::SpindleLimit, G, &[], "S5000 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F1\nG00 X58\nZ70\n", 4, 1, "S5000 is above the machine's highest spindle speed of 4000"),
+    (
+        Code::SpindleLimit,
+        G,
+        &[],
+        "S5000 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F1\nG00 X58\nZ70\n",
+        4,
+        1,
+        "S5000 is above the machine's highest spindle speed of 4000",
+    ),
     // G96 S150 at X47.1: 1000·150/(π·47.1) = 1013.7 rev/min.
-    (Code::ThreadCss, G, &[], "G96 S150 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n", 4, 1, "1014 rev/min at X47.1"),
+    (
+        Code::ThreadCss,
+        G,
+        &[],
+        "G96 S150 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n",
+        4,
+        1,
+        "1014 rev/min at X47.1",
+    ),
     // S1500, lead 2: δ1 ≈ 1500·2/500 = 6 against the assumed 5 (O1006's lead-in).
-    (Code::Delta1Speed, G, &[], "S1500 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n", 3, 1, "n·L/500 = 6 at S1500"),
+    (
+        Code::Delta1Speed,
+        G,
+        &[],
+        "S1500 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n",
+        3,
+        1,
+        "n·L/500 = 6 at S1500",
+    ),
     // Work turned Z15…Z67, pass Z70 → Z13: δ2 = 2 against 2000·2/1800 = 2.2222.
     (
         Code::Delta2Speed,

@@ -182,7 +182,8 @@ fn o1006_at_s1500_needs_a_longer_lead_in() {
 /// S300 both suffice (and the textbook's 2–10 mm too); at S1500 δ1 does not.
 #[test]
 fn figure_4_6_clearances_are_measured() {
-    let turned = O1006.replace("N20 G00 X58.0 Z70.0;", "N16 G00 X48.0 Z65.0;\nN17 G01 Z15.0 F0.2;\nN20 G00 X58.0 Z70.0;");
+    let turned =
+        O1006.replace("N20 G00 X58.0 Z70.0;", "N16 G00 X48.0 Z65.0;\nN17 G01 Z15.0 F0.2;\nN20 G00 X58.0 Z70.0;");
     let plan = gsk(&turned);
     none_of(&plan, &[Code::Delta1Speed, Code::Delta2Speed, Code::Clearance]);
     let s = &plan.threads[0].shop;
@@ -207,7 +208,10 @@ fn figure_4_6_clearances_are_measured() {
 fn o1006_gauges_with_a_rounded_tool_only() {
     let plan = gsk(&o1006_named());
     let g = plan.threads[0].shop.gauge.as_ref().expect("a thread check");
-    assert_eq!((g.designation.as_str(), g.system, g.kind, g.class.as_deref()), ("M48x2-6g", System::IsoMetric, Kind::External, Some("6g")));
+    assert_eq!(
+        (g.designation.as_str(), g.system, g.kind, g.class.as_deref()),
+        ("M48x2-6g", System::IsoMetric, Kind::External, Some("6g"))
+    );
     assert_eq!(g.line, Some(4));
     near(Some(g.pitch_diameter), 45.4 + 2.0 * H60, 1e-9);
     near(g.pitch_diameter_min, 46.483, 1e-9);
@@ -233,7 +237,11 @@ fn o1006_gauges_with_a_rounded_tool_only() {
     near(g.delta_x, 46.573 - (44.9 + 2.0 * H60), 1e-7);
     assert!(one(&plan, Code::GaugeOk).message.contains("46.6321 (46.483 … 46.663, 6g): it gauges"));
     // Helix angle at that d2: atan(2/(π·46.632051)) = 0.7822°.
-    near(plan.threads[0].shop.helix_angle_deg, (2.0 / (std::f64::consts::PI * (44.9 + 2.0 * H60))).atan().to_degrees(), 1e-12);
+    near(
+        plan.threads[0].shop.helix_angle_deg,
+        (2.0 / (std::f64::consts::PI * (44.9 + 2.0 * H60))).atan().to_degrees(),
+        1e-12,
+    );
 }
 
 /// The setting names the thread when no comment does; a comment naming
@@ -280,7 +288,13 @@ fn internal_6h_thread() {
 #[test]
 fn multi_start_uses_the_pitch() {
     let pass = |x: &str, q: &str| format!("X{x}\nG32 Z-30 F4 Q{q}\nG00 X40\nZ5\n");
-    let src = format!("(M30xPh4P2-6g)\nG00 X40 Z5\n{}{}{}{}", pass("29", "0"), pass("29", "180000"), pass("26.9", "0"), pass("26.9", "180000"));
+    let src = format!(
+        "(M30xPh4P2-6g)\nG00 X40 Z5\n{}{}{}{}",
+        pass("29", "0"),
+        pass("29", "180000"),
+        pass("26.9", "0"),
+        pass("26.9", "180000")
+    );
     let plan = gsk(&src);
     let t = &plan.threads[0];
     assert_eq!((t.starts, t.lead, t.pitch), (2, 4.0, 2.0));

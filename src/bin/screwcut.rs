@@ -174,18 +174,18 @@ fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
             );
         } else {
             let _ = writeln!(
-            out,
-            "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
-            fmt(g.pitch_diameter),
-            opt(g.pitch_diameter_min),
-            opt(g.pitch_diameter_max),
-            opt(g.major_diameter),
-            opt(g.major_diameter_min),
-            opt(g.major_diameter_max),
-            opt(g.minor_diameter),
-            opt(g.minor_diameter_min),
-            opt(g.minor_diameter_max)
-        );
+                out,
+                "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
+                fmt(g.pitch_diameter),
+                opt(g.pitch_diameter_min),
+                opt(g.pitch_diameter_max),
+                opt(g.major_diameter),
+                opt(g.major_diameter_min),
+                opt(g.major_diameter_max),
+                opt(g.minor_diameter),
+                opt(g.minor_diameter_min),
+                opt(g.minor_diameter_max)
+            );
         }
         if let Some(dx) = g.delta_x {
             let _ = writeln!(out, "    fix: ΔX {} on the final pass centres the pitch diameter", fmt(dx));

@@ -439,7 +439,10 @@ fn match_designation(t: &Thread, d: &Designation, ctx: &Context, g: &mut Gauge) 
         ));
     }
     if t.starts > 1 {
-        g.notes.push(format!("multi-start: pitch = lead / starts = {}; each start checked", fmt(t.lead / f64::from(t.starts))));
+        g.notes.push(format!(
+            "multi-start: pitch = lead / starts = {}; each start checked",
+            fmt(t.lead / f64::from(t.starts))
+        ));
     }
 }
 
@@ -475,7 +478,11 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         g.minor_diameter = outline.then_some(t.crest);
         if dm.major.min.is_some_and(|v| cut.root < v - eps) {
             g.ok = false;
-            g.notes.push(format!("the root X{} is below the major diameter's {}: the GO plug will not enter", fmt(cut.root), fmt(dm.major.min.unwrap_or(0.0))));
+            g.notes.push(format!(
+                "the root X{} is below the major diameter's {}: the GO plug will not enter",
+                fmt(cut.root),
+                fmt(dm.major.min.unwrap_or(0.0))
+            ));
         }
         crest_check(g, outline, t.crest, dm.minor, "bore (minor diameter)");
     } else {
@@ -483,7 +490,11 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         g.major_diameter = outline.then_some(t.crest);
         if dm.minor.max.is_some_and(|v| cut.root > v + eps) {
             g.ok = false;
-            g.notes.push(format!("the root X{} is above the minor diameter's {}: the GO ring gauge's crest will ride on it", fmt(cut.root), fmt(dm.minor.max.unwrap_or(0.0))));
+            g.notes.push(format!(
+                "the root X{} is above the minor diameter's {}: the GO ring gauge's crest will ride on it",
+                fmt(cut.root),
+                fmt(dm.minor.max.unwrap_or(0.0))
+            ));
         }
         if dm.minor.min.is_some_and(|v| cut.root < v - eps) {
             g.notes.push(format!("the root X{} is below the minor diameter's {} (a root radius of 0.125·P or more): a larger nose radius (setting tool.nose_radius) would keep it", fmt(cut.root), fmt(dm.minor.min.unwrap_or(0.0))));
@@ -563,7 +574,8 @@ fn npt(t: &Thread, tool: Tool, pitch: f64, tp: &Taper, ctx: &Context, g: &mut Ga
         g.gauge_plane_z = Some(z);
         if z < za.min(zb) - 1e-9 || z > za.max(zb) + 1e-9 {
             g.ok = false;
-            g.notes.push(format!("the cut never reaches the pitch diameter {name} = {} within its length", fmt(target)));
+            g.notes
+                .push(format!("the cut never reaches the pitch diameter {name} = {} within its length", fmt(target)));
         }
         g.notes.push(format!(
             "NPT has no pitch-diameter class (ASME B1.20.1): the L1 gauge sits where the cut pitch diameter is {name} = {}, at Z{}; the {} must be there within ±1 turn (±{})",
@@ -579,15 +591,22 @@ fn npt(t: &Thread, tool: Tool, pitch: f64, tp: &Taper, ctx: &Context, g: &mut Ga
 /// The verdict as a diagnostic: `gauge-ok` with the numbers, or `gauge-fail` with the fix.
 fn verdict(t: &Thread, g: &Gauge, span: crate::span::Span, diags: &mut Diagnostics) {
     let range = match (g.pitch_diameter_min, g.pitch_diameter_max) {
-        (Some(a), Some(b)) => format!(" ({} … {}{})", fmt(a), fmt(b), g.class.as_deref().map(|c| format!(", {c}")).unwrap_or_default()),
+        (Some(a), Some(b)) => {
+            format!(" ({} … {}{})", fmt(a), fmt(b), g.class.as_deref().map(|c| format!(", {c}")).unwrap_or_default())
+        }
         _ => String::new(),
     };
     let x = t.passes.iter().max_by(|a, b| a.depth.total_cmp(&b.depth)).map_or(0.0, |p| p.from.x);
-    let fix = g.delta_x.map(|dx| format!("; ΔX {} (final pass X{}) centres it", fmt(dx), fmt(x + dx))).unwrap_or_default();
+    let fix =
+        g.delta_x.map(|dx| format!("; ΔX {} (final pass X{}) centres it", fmt(dx), fmt(x + dx))).unwrap_or_default();
     let notes = if g.notes.is_empty() { String::new() } else { format!("; {}", g.notes.join("; ")) };
     if g.ok {
         diags.push_with(Code::GaugeOk, span, || {
-            format!("thread check {}: pitch diameter {}{range}: it gauges{fix}{notes}", g.designation, fmt(g.pitch_diameter))
+            format!(
+                "thread check {}: pitch diameter {}{range}: it gauges{fix}{notes}",
+                g.designation,
+                fmt(g.pitch_diameter)
+            )
         });
     } else {
         let side = match (g.pitch_diameter_min, g.pitch_diameter_max) {
@@ -596,7 +615,11 @@ fn verdict(t: &Thread, g: &Gauge, span: crate::span::Span, diags: &mut Diagnosti
             _ => "",
         };
         diags.push_with(Code::GaugeFail, span, || {
-            format!("thread check {}: pitch diameter {}{side}{range}: it will not gauge{fix}{notes}", g.designation, fmt(g.pitch_diameter))
+            format!(
+                "thread check {}: pitch diameter {}{side}{range}: it will not gauge{fix}{notes}",
+                g.designation,
+                fmt(g.pitch_diameter)
+            )
         });
     }
 }

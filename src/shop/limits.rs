@@ -32,7 +32,8 @@ pub fn check(threads: &[Thread], i: usize, ctx: &Context, shop: &mut Shop, diags
     let (mm, s) = (ctx.mm(), ctx.settings);
     let lead_mm = t.lead * mm;
     let speeds: Vec<Option<f64>> = t.passes.iter().map(|p| pass_rpm(p, mm, s)).collect();
-    let Some((fast, n)) = speeds.iter().enumerate().filter_map(|(k, n)| n.map(|n| (k, n))).max_by(|a, b| a.1.total_cmp(&b.1))
+    let Some((fast, n)) =
+        speeds.iter().enumerate().filter_map(|(k, n)| n.map(|n| (k, n))).max_by(|a, b| a.1.total_cmp(&b.1))
     else {
         return;
     };

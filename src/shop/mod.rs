@@ -157,9 +157,10 @@ fn helix_angle(t: &Thread, d2: Option<f64>) -> Option<f64> {
         return None;
     }
     let d = d2.or_else(|| {
-        let root = t.passes.iter().map(|p| p.from.x).fold(if t.internal { f64::MIN } else { f64::MAX }, |a, x| {
-            if t.internal { a.max(x) } else { a.min(x) }
-        });
+        let root =
+            t.passes.iter().map(|p| p.from.x).fold(if t.internal { f64::MIN } else { f64::MAX }, |a, x| {
+                if t.internal { a.max(x) } else { a.min(x) }
+            });
         Some((t.crest + root) / 2.0)
     })?;
     let d = d.abs();

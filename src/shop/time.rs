@@ -91,7 +91,8 @@ mod tests {
     fn rapids_take_the_slower_axis() {
         let s = Settings::new(Dialect::Gsk980tdc);
         // X58 → X100 is 21 mm of radius at 5000 mm/min: 0.252 s; Z 10 mm at 10000: 0.06 s.
-        let m = Move { kind: MoveKind::Rapid, from: Point::new(58.0, 0.0), to: Point::new(100.0, 10.0), ..Move::default() };
+        let m =
+            Move { kind: MoveKind::Rapid, from: Point::new(58.0, 0.0), to: Point::new(100.0, 10.0), ..Move::default() };
         assert!((rapid_time(&m, 1.0, &s) - 0.252).abs() < 1e-12);
         // The same in inches: 25.4 times longer.
         assert!((rapid_time(&m, 25.4, &s) - 0.252 * 25.4).abs() < 1e-9);
