@@ -123,7 +123,7 @@ fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
         (Some(cut), Some(total), Some(n)) => {
             let _ = writeln!(
                 out,
-                "  time: {} s cutting, {} s with rapids; {} rev/min, thread feed {} {u}/min (at most S{} for the machine)",
+                "  time: {} s cutting, {} s with rapids; {} rev/min, thread feed {} {u}/min (machine.max_thread_feed allows up to S{})",
                 fmt(cut),
                 fmt(total),
                 fmt(n),
