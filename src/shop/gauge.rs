@@ -175,23 +175,31 @@ fn envelope(t: &Thread, idx: &[usize], tool: Tool, pitch: f64, z: f64, dx: f64) 
         root = root.min(sigma * rho);
         tips.push((sigma * rho - tool.beyond(), offset(t, p, reference, pitch)));
     }
-    let width = |at: f64| {
-        let (mut hi, mut lo) = (f64::MIN, f64::MAX);
-        for &(y, u) in &tips {
-            if y <= at {
-                let h = (at - y) * tool.tan;
-                hi = hi.max(u + h);
-                lo = lo.min(u - h);
-            }
-        }
-        if hi < lo { 0.0 } else { hi - lo }
-    };
     let y0 = tips.iter().map(|t| t.0).fold(f64::INFINITY, f64::min);
-    if !(y0.is_finite() && pitch > 0.0) {
+    let top = y0 + pitch / (4.0 * tool.tan);
+    if !(y0.is_finite() && top.is_finite() && pitch > 0.0) {
         return None;
     }
+    // The deepest pass alone is P/2 wide at `top`: higher tips do not matter.
+    // Sorted by height, the space at height h spans from the lowest left
+    // edge to the highest right edge of the tips below h: prefix extremes of
+    // u + y·tan (left) and u − y·tan (right), each edge moving by h·tan.
+    tips.retain(|t| t.0 <= top);
+    tips.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (mut left, mut right) = (Vec::with_capacity(tips.len()), Vec::with_capacity(tips.len()));
+    let (mut l, mut r) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &(y, u) in &tips {
+        l = l.min(u + y * tool.tan);
+        r = r.max(u - y * tool.tan);
+        left.push(l);
+        right.push(r);
+    }
+    let width = |at: f64| match tips.partition_point(|t| t.0 <= at) {
+        0 => 0.0,
+        k => (right[k - 1] - left[k - 1] + 2.0 * at * tool.tan).max(0.0),
+    };
     // The space widens with height: bisect for the height where it is P/2 wide.
-    let (mut lo, mut hi) = (y0, y0 + pitch / (4.0 * tool.tan));
+    let (mut lo, mut hi) = (y0, top);
     for _ in 0..100 {
         let mid = (lo + hi) / 2.0;
         if width(mid) < pitch / 2.0 { lo = mid } else { hi = mid }
@@ -200,9 +208,9 @@ fn envelope(t: &Thread, idx: &[usize], tool: Tool, pitch: f64, z: f64, dx: f64) 
     Some(Cut { d2: 2.0 * sigma * y, root: 2.0 * sigma * root, on_nose: y - y0 < tool.tangent_height() - 1e-12 })
 }
 
-/// What every start cuts at `z`.
-fn cuts(t: &Thread, tool: Tool, pitch: f64, z: f64, dx: f64) -> Vec<Cut> {
-    by_start(t).iter().filter(|idx| !idx.is_empty()).filter_map(|idx| envelope(t, idx, tool, pitch, z, dx)).collect()
+/// The passes of each start that has some.
+fn starts(t: &Thread) -> Vec<Vec<usize>> {
+    by_start(t).into_iter().filter(|idx| !idx.is_empty()).collect()
 }
 
 /// Z in the middle of the deepest pass: where a taper thread is measured.
@@ -218,7 +226,7 @@ pub fn cut_pitch_diameter(t: &Thread, pitch: f64, ctx: &Context) -> Option<f64> 
         return None;
     }
     let tool = Tool::of(t, ctx)?;
-    cuts(t, tool, pitch, middle_z(t), 0.0).first().map(|c| c.d2).filter(|d| d.is_finite())
+    envelope(t, starts(t).first()?, tool, pitch, middle_z(t), 0.0).map(|c| c.d2).filter(|d| d.is_finite())
 }
 
 /// A designation found for a thread.
@@ -449,7 +457,8 @@ fn match_designation(t: &Thread, d: &Designation, ctx: &Context, g: &mut Gauge) 
 /// The check of an ISO or Unified thread (not tapered by its standard).
 fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -> Option<()> {
     let z = middle_z(t);
-    let all = cuts(t, tool, pitch, z, 0.0);
+    let groups = starts(t);
+    let all: Vec<Cut> = groups.iter().map(|idx| envelope(t, idx, tool, pitch, z, 0.0)).collect::<Option<_>>()?;
     let mid = match (dm.pitch.min, dm.pitch.max) {
         (Some(a), Some(b)) => Some((a + b) / 2.0),
         _ => None,
@@ -502,12 +511,12 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         crest_check(g, outline, t.crest, dm.major, "major diameter");
     }
     if let Some(m) = mid {
-        g.delta_x = delta_x(t, tool, pitch, z, worst, m);
+        g.delta_x = delta_x(t, tool, pitch, z, &groups[worst], m);
     }
     if !in_pitch && tool.r == 0.0 {
         // A sharp V is the formula's base case; threading inserts are rounded.
         let iso = Tool { r: 0.125 * pitch, ..tool };
-        if let Some(c) = cuts(t, iso, pitch, z, 0.0).get(worst) {
+        if let Some(c) = envelope(t, &groups[worst], iso, pitch, z, 0.0) {
             let fits = dm.pitch.min.is_none_or(|v| c.d2 >= v - eps) && dm.pitch.max.is_none_or(|v| c.d2 <= v + eps);
             g.notes.push(format!(
                 "the tool is taken as sharp (tool.nose_radius = 0); a full-profile insert with r = 0.125·P = {} cuts d2 = {}{}",
@@ -534,11 +543,13 @@ fn crest_check(g: &mut Gauge, turned: bool, crest: f64, lim: standard::Limit, wh
     }
 }
 
-/// The change of the final passes' X that puts start `k`'s pitch diameter at `target`.
-fn delta_x(t: &Thread, tool: Tool, pitch: f64, z: f64, k: usize, target: f64) -> Option<f64> {
+/// The change of the final passes' X that puts the pitch diameter of the
+/// start whose passes are `idx` at `target`. d2 follows X one to one when
+/// the final pass makes both flanks, more slowly when an earlier pass makes one.
+fn delta_x(t: &Thread, tool: Tool, pitch: f64, z: f64, idx: &[usize], target: f64) -> Option<f64> {
     let mut dx = 0.0;
-    for _ in 0..60 {
-        let d2 = cuts(t, tool, pitch, z, dx).get(k)?.d2;
+    for _ in 0..40 {
+        let d2 = envelope(t, idx, tool, pitch, z, dx)?.d2;
         let err = target - d2;
         if err.abs() < 1e-9 {
             return Some(dx);
@@ -556,7 +567,8 @@ fn npt(t: &Thread, tool: Tool, pitch: f64, tp: &Taper, ctx: &Context, g: &mut Ga
         return None;
     }
     let taper = (p.to.x - p.from.x).abs() / (zb - za).abs();
-    let (a, b) = (cuts(t, tool, pitch, za, 0.0).first()?.d2, cuts(t, tool, pitch, zb, 0.0).first()?.d2);
+    let first = starts(t).into_iter().next()?;
+    let (a, b) = (envelope(t, &first, tool, pitch, za, 0.0)?.d2, envelope(t, &first, tool, pitch, zb, 0.0)?.d2);
     g.pitch_diameter = a.min(b);
     g.taper = Some(taper);
     let tol = ctx.settings.get(P::NptTaperTolerance);

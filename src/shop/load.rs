@@ -50,6 +50,28 @@ pub(super) fn by_start(t: &Thread) -> Vec<Vec<usize>> {
     out
 }
 
+/// Most passes of one start whose areas are taken from the envelope of
+/// their cuts (its work grows with the square of the passes); beyond it,
+/// and whenever no pass is shifted along the axis, each pass removes the V
+/// between the deepest depth before it and its own.
+const ENVELOPE_PASSES: usize = 256;
+
+/// The area each of `cuts` (depth, axial offset) removes with a V tool of `angle` degrees.
+fn areas(angle: f64, cuts: &[(f64, f64)]) -> Vec<Option<f64>> {
+    let shifted = cuts.iter().any(|c| c.1.abs() > 1e-12);
+    if shifted && cuts.len() <= ENVELOPE_PASSES {
+        return crate::chip::pass_areas(angle, cuts);
+    }
+    let mut deep = 0.0f64;
+    cuts.iter()
+        .map(|&(d, _)| {
+            let a = crate::thread::v_area(angle, deep, d.max(deep));
+            deep = deep.max(d);
+            a
+        })
+        .collect()
+}
+
 /// Chip loads of every pass of `t`, and the advice about them.
 pub fn chip_loads(t: &Thread, ctx: &Context, diags: &mut Diagnostics) -> Vec<ChipLoad> {
     let mut out = vec![ChipLoad::default(); t.passes.len()];
@@ -59,7 +81,7 @@ pub fn chip_loads(t: &Thread, ctx: &Context, diags: &mut Diagnostics) -> Vec<Chi
         let reference = Frame(t.long_axis).long(t.passes[first].screw_in_from.unwrap_or(t.passes[first].from));
         let cuts: Vec<(f64, f64)> =
             idx.iter().map(|&k| (t.passes[k].depth, offset(t, &t.passes[k], reference, t.pitch))).collect();
-        let areas = crate::chip::pass_areas(t.tool_angle, &cuts);
+        let areas = areas(t.tool_angle, &cuts);
         let h = cuts.iter().map(|c| c.0).fold(0.0, f64::max);
         let n = idx.iter().filter(|&&k| t.passes[k].role != Role::Spring).count().max(1);
         let mut k = 0;
