@@ -154,45 +154,48 @@ fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
         let _ = writeln!(out, "  helix angle {}° at pitch diameter {}", fmt(h), fmt(d2));
     }
     if let Some(g) = &s.gauge {
-        let from = match g.line {
-            Some(l) => format!("comment on line {l}"),
-            None => "setting thread.designation".to_string(),
-        };
+        gauge_lines(out, g);
+    }
+}
+
+/// The thread check of one thread: verdict, numbers, the fix and the notes.
+fn gauge_lines(out: &mut String, g: &screwcut::shop::Gauge) {
+    use std::fmt::Write;
+    let opt = |v: Option<f64>| v.map_or_else(|| "?".to_string(), fmt);
+    let from = match g.line {
+        Some(l) => format!("comment on line {l}"),
+        None => "setting thread.designation".to_string(),
+    };
+    let _ =
+        writeln!(out, "  thread check {} ({from}): {}", g.designation, if g.ok { "gauges" } else { "WILL NOT GAUGE" });
+    if let Some(taper) = g.taper {
         let _ = writeln!(
             out,
-            "  thread check {} ({from}): {}",
-            g.designation,
-            if g.ok { "gauges" } else { "WILL NOT GAUGE" }
+            "    pitch diameter {} at the small end; taper {} on diameter (1/16 = 0.0625); gauge plane at Z{}",
+            fmt(g.pitch_diameter),
+            fmt(taper),
+            opt(g.gauge_plane_z)
         );
-        if let Some(taper) = g.taper {
-            let _ = writeln!(
-                out,
-                "    pitch diameter {} at the small end; taper {} on diameter (1/16 = 0.0625); gauge plane at Z{}",
-                fmt(g.pitch_diameter),
-                fmt(taper),
-                opt(g.gauge_plane_z)
-            );
-        } else {
-            let _ = writeln!(
-                out,
-                "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
-                fmt(g.pitch_diameter),
-                opt(g.pitch_diameter_min),
-                opt(g.pitch_diameter_max),
-                opt(g.major_diameter),
-                opt(g.major_diameter_min),
-                opt(g.major_diameter_max),
-                opt(g.minor_diameter),
-                opt(g.minor_diameter_min),
-                opt(g.minor_diameter_max)
-            );
-        }
-        if let Some(dx) = g.delta_x {
-            let _ = writeln!(out, "    fix: ΔX {} on the final pass centres the pitch diameter", fmt(dx));
-        }
-        for n in &g.notes {
-            let _ = writeln!(out, "    note: {n}");
-        }
+    } else {
+        let _ = writeln!(
+            out,
+            "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
+            fmt(g.pitch_diameter),
+            opt(g.pitch_diameter_min),
+            opt(g.pitch_diameter_max),
+            opt(g.major_diameter),
+            opt(g.major_diameter_min),
+            opt(g.major_diameter_max),
+            opt(g.minor_diameter),
+            opt(g.minor_diameter_min),
+            opt(g.minor_diameter_max)
+        );
+    }
+    if let Some(dx) = g.delta_x {
+        let _ = writeln!(out, "    fix: ΔX {} on the final pass centres the pitch diameter", fmt(dx));
+    }
+    for n in &g.notes {
+        let _ = writeln!(out, "    note: {n}");
     }
 }
 

@@ -22,22 +22,13 @@
 use serde::Serialize;
 
 use super::Context;
+use super::designation::{DesignationSource, designation};
 use super::load::{by_start, offset};
 use crate::diagnostic::{Code, Diagnostics};
 use crate::num::{fmt, ser_round, ser_round_opt};
-use crate::settings::{P, T};
+use crate::settings::P;
 use crate::standard::{self, Designation, Diameters, Kind, Limits, System, Taper};
 use crate::thread::{Axis, CrestSource, Pass, Thread};
-
-/// Where a thread's designation was read.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum DesignationSource {
-    /// A comment before the thread.
-    Comment,
-    /// The setting `thread.designation`.
-    Setting,
-}
 
 /// The thread check of one thread. Diameters in program units.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -227,91 +218,6 @@ pub fn cut_pitch_diameter(t: &Thread, pitch: f64, ctx: &Context) -> Option<f64> 
     }
     let tool = Tool::of(t, ctx)?;
     envelope(t, starts(t).first()?, tool, pitch, middle_z(t), 0.0).map(|c| c.d2).filter(|d| d.is_finite())
-}
-
-/// A designation found for a thread.
-struct Found {
-    d: Designation,
-    source: DesignationSource,
-    line: Option<u32>,
-}
-
-/// The comments of a source line: `( … )` and what follows `;`, full-width
-/// characters folded to ASCII, each cut at 256 bytes.
-fn comments(line: &str) -> Vec<String> {
-    let folded: String = line
-        .chars()
-        .take(4096)
-        .map(|c| match c {
-            '\u{FF01}'..='\u{FF5E}' => char::from_u32(c as u32 - 0xFEE0).unwrap_or(c),
-            '\u{3000}' => ' ',
-            _ => c,
-        })
-        .collect();
-    let mut out = Vec::new();
-    let mut open: Option<usize> = None;
-    for (i, c) in folded.char_indices() {
-        match (c, open) {
-            ('(', None) => open = Some(i + 1),
-            (')', Some(s)) => {
-                out.push(folded[s..i].to_string());
-                open = None;
-            }
-            (';', None) => {
-                out.push(folded[i + 1..].to_string());
-                break;
-            }
-            _ => {}
-        }
-    }
-    for c in &mut out {
-        if c.len() > 256 {
-            let mut end = 256;
-            while !c.is_char_boundary(end) {
-                end -= 1;
-            }
-            c.truncate(end);
-        }
-    }
-    out
-}
-
-/// The designation of `t`: the nearest comment from its first line back to
-/// the line after `lower` (the previous thread's last line) naming a
-/// thread of its lead or pitch, else the setting.
-fn designation(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnostics) -> Option<Found> {
-    let first = t.line.max(1);
-    let stop = match lower {
-        Some(l) if l < first => l + 1,
-        Some(_) => first,
-        None => 1,
-    };
-    let mm = ctx.mm();
-    let same = |a: f64, b: f64| (a - b).abs() <= 1e-6 * a.abs().max(1.0);
-    for line in (stop..=first).rev() {
-        let span = (ctx.spans)(line);
-        let Some(text) = ctx.text.get(span.start as usize..span.end as usize) else { continue };
-        for c in comments(text).iter().rev() {
-            if let Some(d) = standard::find(c) {
-                if same(d.lead_mm, t.lead * mm) || same(d.pitch_mm, t.pitch * mm) {
-                    return Some(Found { d, source: DesignationSource::Comment, line: Some(line) });
-                }
-            }
-        }
-    }
-    let text = ctx.settings.text(T::Designation);
-    if text.is_empty() {
-        return None;
-    }
-    match standard::parse(text) {
-        Ok(d) => Some(Found { d, source: DesignationSource::Setting, line: None }),
-        Err(e) => {
-            diags.push_with(Code::BadDesignation, (ctx.spans)(t.line), || {
-                format!("setting thread.designation = '{text}' is not a thread designation: {e}")
-            });
-            None
-        }
-    }
 }
 
 /// The limits in program units.
@@ -639,14 +545,6 @@ fn verdict(t: &Thread, g: &Gauge, span: crate::span::Span, diags: &mut Diagnosti
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn comments_of_a_line() {
-        assert_eq!(comments("N20 G00 X58 (M48x2-6g) Z70; note"), vec!["M48x2-6g", " note"]);
-        assert_eq!(comments("（Ｍ４８×２－６ｇ）"), vec!["M48×2-6g"]);
-        assert!(comments("G00 X10").is_empty());
-        assert_eq!(comments("(open").len(), 0);
-    }
 
     #[test]
     fn tool_geometry_of_a_60_degree_insert() {

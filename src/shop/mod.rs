@@ -18,6 +18,7 @@
 //! - [`gauge`]: the pitch diameter the passes cut, compared with the
 //!   designation's limits.
 
+pub mod designation;
 pub mod gauge;
 pub mod limits;
 pub mod load;
