@@ -143,7 +143,7 @@ fn finish_one(
             Code::CrestAssumed,
             span,
             || format!(
-                "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; δ1/δ2 are not checked",
+                "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; the textbook's δ1/δ2 are not checked",
                 if t.internal { "minor" } else { "major" },
                 fmt(t.crest),
                 fmt(s.get(P::DepthFactor))
