@@ -169,6 +169,7 @@ impl Assembler {
                 first_move,
                 tool_angle: g.tool_angle,
                 moves,
+                spindle: g.spindle,
             };
             self.group.add(chain, s, &mut self.threads, diags);
         }

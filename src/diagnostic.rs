@@ -151,6 +151,29 @@ codes! {
     E18_05 = "E18-05", Error;
     /// Spindle speed above the controller's advice for the pitch (Renhe n ≤ 2300/t − 60).
     SpindleSpeed = "spindle-speed", Warning;
+    // ---- shop floor ----
+    /// Thread feed lead × n above the machine's limit (`machine.max_thread_feed`).
+    ThreadFeedLimit = "thread-feed-limit", Warning;
+    /// Spindle speed above the machine's (`machine.max_rpm`).
+    SpindleLimit = "spindle-limit", Warning;
+    /// A thread cut under G96: the speed changes with X.
+    ThreadCss = "thread-css", Warning;
+    /// Lead-in δ1 shorter than n·L/500 (`machine.delta1_divisor`).
+    Delta1Speed = "delta1-speed", Warning;
+    /// Run-out δ2 shorter than n·L/1800 (`machine.delta2_divisor`).
+    Delta2Speed = "delta2-speed", Warning;
+    /// A first pass heavier than a constant-area share allows, or a pass over `tool.max_chip_area`.
+    ChipHeavyFirst = "chip-heavy-first", Warning;
+    /// A pass that deepens the thread by less than `chip.min_infeed`.
+    ChipThin = "chip-thin", Info;
+    /// A pass (not a spring pass) that removes nothing.
+    ChipNone = "chip-none", Warning;
+    /// The thread check: the pitch diameter cut is within the designation's limits.
+    GaugeOk = "gauge-ok", Info;
+    /// The thread check: the thread will not gauge (with the fix).
+    GaugeFail = "gauge-fail", Warning;
+    /// `thread.designation` (or the designation found) cannot be read or has no limits.
+    BadDesignation = "bad-designation", Warning;
     // ---- textbook advice ----
     /// The crest diameter was not turned in the program and was assumed.
     CrestAssumed = "crest-assumed", Info;

@@ -7,7 +7,7 @@ use crate::cycle::{Geometry, Multi, PassPoints};
 use crate::geom::Frame;
 use crate::motion::{Move, Point};
 use crate::span::Span;
-use crate::thread::{Axis, Source, ThreadKind};
+use crate::thread::{Axis, Source, Spindle, ThreadKind};
 
 /// One event of one block.
 #[derive(Clone, Debug, PartialEq)]
@@ -93,6 +93,8 @@ pub struct Piece {
     pub approach: f64,
     /// Tool angle in force (degrees).
     pub tool_angle: f64,
+    /// The spindle in force.
+    pub spindle: Spindle,
 }
 
 /// A G92 block: the same pass for every start, the starts `360°/starts` apart.
@@ -114,4 +116,6 @@ pub struct G92Pass {
     pub span: Span,
     /// Tool angle in force (degrees).
     pub tool_angle: f64,
+    /// The spindle in force.
+    pub spindle: Spindle,
 }

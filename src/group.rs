@@ -15,7 +15,7 @@ use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Thread};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread};
 
 /// A continuous thread cut: consecutive thread blocks without a wait for
 /// the one-rev signal (or one start of a G92 pass).
@@ -41,6 +41,8 @@ pub struct Chain {
     pub tool_angle: f64,
     /// Its motions in the plan's moves.
     pub moves: PassMoves,
+    /// The spindle when it was cut (its first block).
+    pub spindle: Spindle,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -152,6 +154,7 @@ impl Grouper {
                     first_move: at,
                     tool_angle: p.tool_angle,
                     moves: PassMoves { approach: at..at, cut: moves.clone(), retract: moves.end..moves.end },
+                    spindle: p.spindle,
                 });
             }
         }
@@ -286,6 +289,7 @@ fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
         angle: c.angle,
         area: None,
         moves: c.moves.clone(),
+        spindle: c.spindle,
     }
 }
 
@@ -336,6 +340,7 @@ fn build(cuts: &[Chain]) -> Thread {
         passes,
         depth_dir,
         first_move: cuts.iter().map(|c| c.first_move).min().unwrap_or(0),
+        shop: Default::default(),
     }
 }
 

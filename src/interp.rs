@@ -306,6 +306,9 @@ fn set_coordinates(r: &mut Reader, b: &Block, w: &Word) {
         let p = r.current(wd.span);
         r.m.pos.p.z = p.z + d;
     }
+    if let Some(s) = b.get(b'S') {
+        r.m.clamp = Some(s.value()).filter(|v| v.is_finite() && *v > 0.0);
+    }
 }
 
 fn motion_block(r: &mut Reader, ctl: &Controller, b: &Block) {

@@ -4,10 +4,11 @@
 //! Data flows one way: text → [`block`]s ([`lexer`]) → events ([`interp`],
 //! reading each block through its [`controller`]) → motions and threads with
 //! the motions of each pass ([`assemble`]: [`group`], [`cycle`]) → depths
-//! and advice ([`advice`]) → [`plan::Plan`] → scenes ([`diagram`]). What only a
-//! browser needs (UTF-16 positions, scenes packed into typed arrays, content
-//! keys as JavaScript numbers, sessions) is in [`wasm`], whose bindings are
-//! compiled for wasm32 only. The core is free of wasm and the DOM; the
+//! and advice ([`advice`]) → shop-floor figures and checks ([`shop`]) →
+//! [`plan::Plan`] → scenes ([`diagram`]). What only a browser needs (UTF-16
+//! positions, scenes packed into typed arrays, content keys as JavaScript
+//! numbers, sessions) is in [`wasm`], whose bindings are compiled for wasm32
+//! only. The core is free of wasm and the DOM; the
 //! browser binding lives in `wasm` and is compiled only for wasm32.
 //!
 //! ```
@@ -38,6 +39,7 @@ pub mod num;
 pub mod plan;
 pub mod planner;
 pub mod settings;
+pub mod shop;
 pub mod span;
 pub mod standard;
 pub mod state;

@@ -4,7 +4,8 @@
 //! Reading a program is a pipeline: the lexer gives blocks, the interpreter
 //! turns each block into events ([`crate::interp`]), the assembler turns
 //! events into motions and threads ([`crate::assemble`]), and the advice
-//! step finishes the threads ([`crate::advice`]).
+//! step finishes the threads ([`crate::advice`]) and adds the shop-floor
+//! figures and checks ([`crate::shop`]).
 
 use serde::Serialize;
 
@@ -16,6 +17,7 @@ use crate::event::Event;
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
 use crate::motion::Move;
+use crate::num::ser_round_opt;
 use crate::settings::{P, Settings};
 use crate::span::{LineIndex, Span};
 use crate::state::Modal;
@@ -44,6 +46,10 @@ pub struct Plan {
     pub moves: Vec<Move>,
     /// Every thread with its passes.
     pub threads: Vec<Thread>,
+    /// Threading time of the whole program, seconds: the sum of the
+    /// threads' `time_s`; `None` when a thread's time is not known (no S).
+    #[serde(serialize_with = "ser_round_opt")]
+    pub time_s: Option<f64>,
 }
 
 impl Plan {
@@ -231,14 +237,37 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 }
 
 /// Turns the outputs into a plan: depths and advice of the block-by-block
-/// threads, diagnostics positioned and sorted.
+/// threads, the shop-floor figures and checks of every thread, diagnostics
+/// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
     let inch = out.inch;
     finish_with(text, settings, out, starts, |threads, moves, spans, limit| {
         let mut advice = Diagnostics::with_limit(limit);
-        crate::advice::finish_manual(threads, moves, settings, inch, &mut advice, spans);
+        for i in 0..threads.len() {
+            finish_thread(threads, i, moves, settings, inch, text, &mut advice, spans);
+        }
         advice
     })
+}
+
+/// Finishes thread `i`: its depths and textbook advice, then its
+/// shop-floor figures and checks. A function of the thread, the motions
+/// before it, the settings and the program text up to it, so a thread
+/// finished once stays finished while later text changes.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn finish_thread(
+    threads: &mut [Thread],
+    i: usize,
+    moves: &[Move],
+    settings: &Settings,
+    inch: bool,
+    text: &str,
+    diags: &mut Diagnostics,
+    spans: &dyn Fn(u32) -> Span,
+) {
+    crate::advice::finish_thread(threads, i, moves, settings, inch, diags, spans);
+    let ctx = crate::shop::Context { moves, settings, inch, text, spans };
+    crate::shop::finish_thread(threads, i, &ctx, diags);
 }
 
 /// [`finish`] with the advice step given by the caller: `advice(threads,
@@ -260,7 +289,15 @@ pub(crate) fn finish_with(
     let found = advice(&mut threads, &moves, &spans, diags.limit());
     diags.absorb(found);
     let diagnostics = diags.finish(text, &index);
-    Plan { dialect: settings.dialect(), units: if inch { Units::Inch } else { Units::Mm }, diagnostics, moves, threads }
+    let time_s = crate::shop::total_time(&threads);
+    Plan {
+        dialect: settings.dialect(),
+        units: if inch { Units::Inch } else { Units::Mm },
+        diagnostics,
+        moves,
+        threads,
+        time_s,
+    }
 }
 
 /// Plans `text` with the default settings of `dialect`.

@@ -12,15 +12,15 @@
 //! equal the last reading's at the same line shows that reading on would
 //! repeat the last reading; the rest of it is kept, its motions' and
 //! diagnostics' byte spans and the motion indices moved by the edit's
-//! lengths. Depths and advice of the threads from the resume point on are
-//! recomputed (they depend on the outline before each thread). The result
-//! is the plan a full re-plan would give; the tests check that for random
-//! edits.
+//! lengths. Depths, advice and shop-floor figures of the threads completed
+//! before the resume point are kept (with their diagnostics); the threads
+//! from there on are finished anew (they depend on the outline before each
+//! thread). The result is the plan a full re-plan would give; the tests
+//! check that for random edits.
 
-use crate::advice::finish_thread;
 use crate::diagnostic::{Code, Diagnostics};
 use crate::motion::Move;
-use crate::plan::{Plan, Reading, Snapshot, finish, finish_with, lexer_for};
+use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
 use crate::span::Span;
 use crate::thread::Thread;
@@ -208,7 +208,7 @@ impl Planner {
         let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
             for i in advice.len()..threads.len() {
                 let mut d = Diagnostics::with_limit(usize::MAX);
-                finish_thread(threads, i, moves, settings, inch, &mut d, spans);
+                finish_thread(threads, i, moves, settings, inch, text, &mut d, spans);
                 advice.push(d.into_items());
             }
             let mut all = Diagnostics::with_limit(usize::MAX);

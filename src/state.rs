@@ -186,6 +186,8 @@ pub struct Modal {
     pub spindle: Option<f64>,
     /// G96 constant surface speed in force.
     pub css: bool,
+    /// Spindle clamp of the last G50 S (rev/min).
+    pub clamp: Option<f64>,
     /// A continuous thread is being cut: the next thread block joins it.
     pub chain: bool,
     /// Thread pieces or G92 passes were given since the last `Close`: the
@@ -224,6 +226,7 @@ impl Default for Modal {
             jk: (None, None),
             spindle: None,
             css: false,
+            clamp: None,
             chain: false,
             grouping: false,
             cycle: CycleMemory::default(),

@@ -77,6 +77,11 @@ impl Reader<'_> {
         self.m.param(self.s, p)
     }
 
+    /// The spindle in force (S, G96, the G50 S clamp), for the thread events.
+    pub fn spindle(&self) -> crate::thread::Spindle {
+        crate::thread::Spindle { s: self.m.spindle, css: self.m.css, clamp: self.m.clamp }
+    }
+
     /// Gives an event.
     pub fn emit(&mut self, e: Event) {
         if matches!(e, Event::Piece(_) | Event::G92(_)) {

@@ -190,6 +190,7 @@ fn cycle_plan() -> Plan {
                 angle: 180.0 * (start - 1) as f64,
                 area: crate::thread::v_area(60.0, prev, d),
                 moves: pass_moves,
+                spindle: Default::default(),
             });
             prev = d;
         }
@@ -213,8 +214,16 @@ fn cycle_plan() -> Plan {
         passes,
         depth_dir: -1.0,
         first_move: 1,
+        shop: Default::default(),
     };
-    Plan { dialect: Dialect::Gsk980tdc, units: Units::Mm, diagnostics: Vec::new(), moves, threads: vec![thread] }
+    Plan {
+        dialect: Dialect::Gsk980tdc,
+        units: Units::Mm,
+        diagnostics: Vec::new(),
+        moves,
+        threads: vec![thread],
+        time_s: None,
+    }
 }
 
 #[test]

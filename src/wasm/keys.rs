@@ -97,6 +97,8 @@ pub fn hash_pass(h: &mut KeyHasher, p: &Pass) {
         area,
         // Where the motions are in the plan does not change the drawing: the motions themselves are keyed.
         moves: _,
+        // The spindle and the shop-floor figures are not drawn.
+        spindle: _,
     } = p;
     h.write_u32(*start);
     h.write_u32(*index);
@@ -142,6 +144,7 @@ pub fn thread_key(t: &Thread) -> u64 {
         passes,
         depth_dir,
         first_move: _, // not drawn
+        shop: _,       // not drawn
     } = t;
     let mut h = KeyHasher::default();
     h.write_u32(*line);
