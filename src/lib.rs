@@ -28,6 +28,7 @@ pub mod diagnostic;
 pub mod diagram;
 pub mod dialect;
 pub mod event;
+pub mod figures;
 pub mod gcode;
 pub mod geom;
 pub mod group;

@@ -232,9 +232,9 @@ pub struct Thread {
     /// Index in the plan's moves of the thread's first motion.
     #[serde(skip)]
     pub first_move: usize,
-    /// Shop-floor figures: cycle time, speed, helix angle, chip load, the thread check ([`crate::shop`]).
+    /// Shop-floor figures: cycle time, speed, helix angle, chip load, the thread check.
     #[serde(flatten)]
-    pub shop: crate::shop::Shop,
+    pub shop: crate::figures::Shop,
 }
 
 /// Area a V tool of included angle `angle_deg` removes between depths `h0`

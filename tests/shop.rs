@@ -250,7 +250,7 @@ fn o1006_gauges_with_a_rounded_tool_only() {
 fn designation_from_the_setting() {
     let plan = plan_with(O1006, Dialect::Gsk980tdc, &["thread.designation=M48x2-6g"]);
     let g = plan.threads[0].shop.gauge.as_ref().unwrap();
-    assert_eq!((g.source, g.line), (screwcut::shop::designation::DesignationSource::Setting, None));
+    assert_eq!((g.source, g.line), (screwcut::figures::DesignationSource::Setting, None));
     let other = O1006.replace("N20 G00 X58.0 Z70.0;", "(M48x1.5-6g)\nN20 G00 X58.0 Z70.0;");
     assert!(gsk(&other).threads[0].shop.gauge.is_none());
     // The comment wins over the setting; the O1006 comments in Chinese name nothing.

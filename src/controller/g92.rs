@@ -106,6 +106,16 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
     }
     let pts = geom.pass(0.0, 0.0, 0.0);
     let spindle = r.spindle();
-    r.emit(Event::G92(Box::new(G92Pass { geom, pts, lead, angle, starts, line: b.line, span: b.span, tool_angle, spindle })));
+    r.emit(Event::G92(Box::new(G92Pass {
+        geom,
+        pts,
+        lead,
+        angle,
+        starts,
+        line: b.line,
+        span: b.span,
+        tool_angle,
+        spindle,
+    })));
     r.arrive(a, true, true, b.line);
 }

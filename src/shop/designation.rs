@@ -4,23 +4,12 @@
 //! setting `thread.designation`. A comment naming another pitch is about
 //! something else (a tool, an operation, `M03` in a note) and is passed over.
 
-use serde::Serialize;
-
 use super::Context;
 use crate::diagnostic::{Code, Diagnostics};
+use crate::figures::DesignationSource;
 use crate::settings::T;
 use crate::standard::{self, Designation};
 use crate::thread::Thread;
-
-/// Where a thread's designation was read.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum DesignationSource {
-    /// A comment before the thread.
-    Comment,
-    /// The setting `thread.designation`.
-    Setting,
-}
 
 /// A designation found for a thread.
 pub(super) struct Found {

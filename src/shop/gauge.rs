@@ -19,86 +19,15 @@
 //! compared with 1/16 and the plane where the cut pitch diameter is E0
 //! (external; E1 internal) is where the L1 gauge sits.
 
-use serde::Serialize;
-
 use super::Context;
-use super::designation::{DesignationSource, designation};
+use super::designation::designation;
 use super::load::{by_start, offset};
 use crate::diagnostic::{Code, Diagnostics};
-use crate::num::{fmt, ser_round, ser_round_opt};
+use crate::figures::Gauge;
+use crate::num::fmt;
 use crate::settings::P;
-use crate::standard::{self, Designation, Diameters, Kind, Limits, System, Taper};
+use crate::standard::{self, Designation, Diameters, Kind, Limits, Taper};
 use crate::thread::{Axis, CrestSource, Pass, Thread};
-
-/// The thread check of one thread. Diameters in program units.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Gauge {
-    /// The designation as written.
-    pub designation: String,
-    /// Where it was read.
-    pub source: DesignationSource,
-    /// The line of the comment it was read from.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub line: Option<u32>,
-    /// Standard family.
-    pub system: System,
-    /// Tolerance class (`6g`, `2A`…); none for NPT.
-    pub class: Option<String>,
-    /// External or internal, as checked.
-    pub kind: Kind,
-    /// Basic major diameter.
-    #[serde(serialize_with = "ser_round")]
-    pub basic_major: f64,
-    /// Basic pitch diameter (NPT: E0).
-    #[serde(serialize_with = "ser_round")]
-    pub basic_pitch: f64,
-    /// Basic minor diameter.
-    #[serde(serialize_with = "ser_round")]
-    pub basic_minor: f64,
-    /// Pitch diameter the program cuts (NPT: at the small end of the cut).
-    #[serde(serialize_with = "ser_round")]
-    pub pitch_diameter: f64,
-    /// Lower limit of the pitch diameter.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub pitch_diameter_min: Option<f64>,
-    /// Upper limit of the pitch diameter.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub pitch_diameter_max: Option<f64>,
-    /// Major diameter of the thread as cut: the root the tool cuts (internal) or the turned crest (external, when turned).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub major_diameter: Option<f64>,
-    /// Lower limit of the major diameter.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub major_diameter_min: Option<f64>,
-    /// Upper limit of the major diameter.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub major_diameter_max: Option<f64>,
-    /// Minor diameter as cut: the root the tool cuts (external) or the turned bore (internal, when turned).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub minor_diameter: Option<f64>,
-    /// Lower limit of the minor diameter.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub minor_diameter_min: Option<f64>,
-    /// Upper limit of the minor diameter.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub minor_diameter_max: Option<f64>,
-    /// Whether the thread gauges: pitch diameter within its limits, the cut
-    /// root clearing the gauge, a turned crest within its limits, lead,
-    /// kind and tool angle as the designation says (NPT: the taper).
-    pub ok: bool,
-    /// Change of the final pass's X (diameter) that puts the pitch diameter
-    /// in the middle of its tolerance.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub delta_x: Option<f64>,
-    /// NPT: the cut taper on diameter per unit length (1/16 = 0.0625 wanted).
-    #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
-    pub taper: Option<f64>,
-    /// NPT: the Z where the cut pitch diameter is E0 (external) or E1 (internal): where the L1 gauge sits.
-    #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
-    pub gauge_plane_z: Option<f64>,
-    /// What was found wrong, and what was not checked.
-    pub notes: Vec<String>,
-}
 
 /// The tool as the pitch diameter sees it.
 #[derive(Clone, Copy, Debug)]

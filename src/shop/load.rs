@@ -8,28 +8,13 @@
 //! pass removes nothing. Spring passes are meant to remove nothing and are
 //! left alone.
 
-use serde::Serialize;
-
 use super::Context;
 use crate::diagnostic::{Code, Diagnostics};
+use crate::figures::ChipLoad;
 use crate::geom::Frame;
-use crate::num::{fmt, ser_round_opt};
+use crate::num::fmt;
 use crate::settings::P;
 use crate::thread::{Role, Thread};
-
-/// The chip load of one pass.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
-pub struct ChipLoad {
-    /// Area this pass removes (program units²); `None` for a 0° (square) tool.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub area: Option<f64>,
-    /// Area of the same pass in a constant-area schedule.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub even_area: Option<f64>,
-    /// Depth of the same pass in a constant-area schedule: H·√(k/N).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub even_depth: Option<f64>,
-}
 
 /// Axial position of a pass's start along the long axis, reduced to one pitch
 /// around `reference`: where its tool sits in the thread space (a start

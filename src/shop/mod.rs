@@ -24,17 +24,13 @@ pub mod limits;
 pub mod load;
 pub mod time;
 
-use serde::Serialize;
-
 use crate::diagnostic::Diagnostics;
 use crate::motion::Move;
-use crate::num::ser_round_opt;
 use crate::settings::Settings;
 use crate::span::Span;
 use crate::thread::{Axis, Thread};
 
-pub use gauge::Gauge;
-pub use load::ChipLoad;
+pub use crate::figures::{ChipLoad, ClearanceSource, DesignationSource, Gauge, Shop};
 
 /// Millimetres per inch.
 const MM_PER_INCH: f64 = 25.4;
@@ -58,72 +54,6 @@ impl Context<'_> {
     pub fn mm(&self) -> f64 {
         if self.inch { MM_PER_INCH } else { 1.0 }
     }
-}
-
-/// Where the lead-in and run-out a thread is judged by come from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum ClearanceSource {
-    /// Measured against the work the program turned before the thread.
-    Outline,
-    /// The program does not turn the work: the settings `shop.assumed_lead_in` and `shop.assumed_run_out`.
-    Assumed,
-}
-
-/// The shop-floor figures of one thread. Lengths are in program units,
-/// times in seconds, speeds in rev/min; `None` where a figure cannot be
-/// known (no spindle speed, no V tool, no designation).
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
-pub struct Shop {
-    /// Time of every synchronised motion (screw-in, thread, run-out) of every
-    /// pass of every start: long-axis travel / (lead × n).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub cut_time_s: Option<f64>,
-    /// `cut_time_s` plus the approach, retract and return rapids at
-    /// `machine.rapid_x` / `machine.rapid_z`.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub time_s: Option<f64>,
-    /// Each pass's time with its rapids, in the order of `passes` (empty when not known).
-    #[serde(serialize_with = "ser_round_vec")]
-    pub pass_time_s: Vec<f64>,
-    /// Highest spindle speed of the passes (under G96 at the pass diameter, clamped).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub rpm: Option<f64>,
-    /// Thread feed lead × `rpm`, program units per minute.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub thread_feed: Option<f64>,
-    /// Highest spindle speed whose thread feed fits `machine.max_thread_feed`.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub rpm_limit: Option<f64>,
-    /// Lead-in the speed needs: n·L / `machine.delta1_divisor` (program units).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub lead_in_needed: Option<f64>,
-    /// Run-out the speed needs: n·L / `machine.delta2_divisor` (program units).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub run_out_needed: Option<f64>,
-    /// Lead-in δ1 of the program: measured or assumed (`clearance_source`).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub lead_in: Option<f64>,
-    /// Run-out δ2 of the program: measured or assumed.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub run_out: Option<f64>,
-    /// Where `lead_in` and `run_out` come from.
-    pub clearance_source: Option<ClearanceSource>,
-    /// Pitch diameter the passes cut (reference §9), with the tool angle,
-    /// `tool.nose_radius` and pitch = lead / starts (the designation's pitch when there is one).
-    #[serde(serialize_with = "ser_round_opt")]
-    pub pitch_diameter: Option<f64>,
-    /// Helix angle atan(lead / (π·d2)), degrees.
-    #[serde(serialize_with = "ser_round_opt")]
-    pub helix_angle_deg: Option<f64>,
-    /// Chip load of each pass, in the order of `passes`.
-    pub chip: Vec<ChipLoad>,
-    /// The thread check against its designation, when one is named.
-    pub gauge: Option<Gauge>,
-}
-
-fn ser_round_vec<S: serde::Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
-    s.collect_seq(v.iter().map(|x| crate::num::round_out(*x)))
 }
 
 /// Fills the [`Shop`] of thread `i` and gives its diagnostics to `diags`.
