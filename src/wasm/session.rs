@@ -112,9 +112,11 @@ impl Session {
         })
     }
 
-    /// The last plan as JSON (the CLI's `--json`), for download.
-    pub fn plan_json(&self) -> Result<String, JsValue> {
-        self.with_last(|plan| Ok(plan.to_json()))
+    /// The last plan as a JSON-compatible value (what the CLI's `--json`
+    /// writes: `JSON.stringify` it), for download. The wasm carries no JSON
+    /// writer of its own.
+    pub fn plan_value(&self) -> Result<JsValue, JsValue> {
+        self.with_last(json_value)
     }
 
     /// The motions of the last plan, seven numbers each:
@@ -152,7 +154,7 @@ impl Session {
             match format {
                 "packed" => Ok(packed_to_js(&pack(&scene))),
                 "objects" => to_js(&scene),
-                "json" => serde_json::to_string(&scene).map(|s| JsValue::from_str(&s)).map_err(err),
+                "json" => json_string(&scene),
                 _ => Err(err(format!("unknown format '{format}' (packed, objects, json)"))),
             }
         })
@@ -163,10 +165,21 @@ impl Session {
     pub fn threads_as(&self, format: &str) -> Result<JsValue, JsValue> {
         self.with_last(|plan| match format {
             "objects" => to_js(&plan.threads),
-            "json" => serde_json::to_string(&plan.threads).map(|s| JsValue::from_str(&s)).map_err(err),
+            "json" => json_string(&plan.threads),
             _ => Err(err(format!("unknown format '{format}' (objects, json)"))),
         })
     }
+}
+
+/// `v` as a JSON-compatible JavaScript value (`None` as null, maps as objects).
+fn json_value<T: serde::Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(err)
+}
+
+/// `v` as a JSON string, written by the browser's `JSON.stringify`.
+fn json_string<T: serde::Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
+    let value = json_value(v)?;
+    js_sys::JSON::stringify(&value).map(JsValue::from).map_err(|_| err("JSON.stringify failed"))
 }
 
 impl Session {

@@ -230,7 +230,7 @@ export class Engine {
   }
 
   on_json({ id }) {
-    this.post({ type: 'reply', id, data: this.session.plan_json() });
+    this.post({ type: 'reply', id, data: JSON.stringify(this.session.plan_value()) });
   }
 
   /**

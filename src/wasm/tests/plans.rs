@@ -249,8 +249,10 @@ fn limits_are_alarms_with_numbers() {
 
 #[wasm_bindgen_test]
 fn plan_json_is_the_cli_schema() {
-    let json = wasm::plan_json(O0009, "gsk980tdc", "").unwrap();
-    let v = JSON::parse(&json).unwrap();
+    let v = wasm::plan_value(O0009, "gsk980tdc", "").unwrap();
+    // The same document the CLI writes with --json, value for value.
+    let cli = JSON::parse(&crate::plan(O0009, &crate::Settings::new(crate::Dialect::Gsk980tdc)).to_json()).unwrap();
+    assert_eq!(JSON::stringify(&v).unwrap(), JSON::stringify(&cli).unwrap());
     assert_eq!(get(&v, "dialect").as_string().as_deref(), Some("gsk980tdc"));
     let threads = array(&get(&v, "threads"));
     assert_eq!(get(&threads[0], "kind").as_string().as_deref(), Some("taper"));
@@ -261,7 +263,7 @@ fn plan_json_is_the_cli_schema() {
     assert_close(&from, &[27.4286, 3.0]);
     assert_close(&to, &[48.8571, -72.0]);
     assert!(!array(&get(&v, "moves")).is_empty());
-    assert!(message(wasm::plan_json("G32", "nope", "").unwrap_err()).contains("unknown dialect"));
+    assert!(message(wasm::plan_value("G32", "nope", "").unwrap_err()).contains("unknown dialect"));
 }
 
 #[wasm_bindgen_test]
