@@ -23,7 +23,7 @@ enum Command {
     Plan {
         /// Program file, or '-' for standard input.
         file: String,
-        /// Controller dialect: gsk980tdc, fanuc0i or renhe.
+        /// Controller dialect: gsk980tdc, fanuc0i, renhe or linuxcnc.
         #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
         dialect: Dialect,
         /// Set a controller parameter or setting, e.g. --set No.058=55 (repeatable).
@@ -144,6 +144,8 @@ fn summary(plan: &Plan, file: &str) -> String {
                 Source::G78 => "G78",
                 Source::G92 => "G92",
                 Source::G76 => "G76",
+                Source::LinuxG33 => "LinuxCNC G33",
+                Source::LinuxG76 => "LinuxCNC G76",
             },
             fmt(t.lead),
             fmt(t.pitch),

@@ -20,9 +20,15 @@ pub static CONTROLLER: Controller = Controller {
         addresses: letters(b"ABCDEFGHIJKLMNOPQRSTUWXZ"),
         increments_without_point: Some(P::Fanuc3401_0),
         shared_f_register: true,
+        axis_words: letters(b"XZUW"),
+        free_words: 0,
+        spindle_word: false,
     },
     g_code,
     command,
+    init: super::x_mode_parameter,
+    check: None,
+    finish: None,
     tool_angle: Some(P::Fanuc5143),
 };
 

@@ -26,9 +26,15 @@ pub static CONTROLLER: Controller = Controller {
         addresses: letters(b"ACDEFGHIJKLMNOPQRSTUWXZ"),
         increments_without_point: None,
         shared_f_register: false,
+        axis_words: letters(b"XZUW"),
+        free_words: 0,
+        spindle_word: false,
     },
     g_code,
     command,
+    init: super::x_mode_parameter,
+    check: None,
+    finish: None,
     tool_angle: Some(P::No058),
 };
 

@@ -5,13 +5,15 @@
 //!
 //! GSK980TDc and Fanuc 0i share the G32, G92 and G76 readers ([`g32`],
 //! [`g92`], [`g76`]), which take the differences as data ([`ThreadRules`]);
-//! G78 is GSK's own, Renhe's G30/G32/G33 are Renhe's.
+//! G78 is GSK's own, Renhe's G30/G32/G33 are Renhe's, and LinuxCNC's
+//! G7/G8, G33 and G76 with its word checks are in [`linuxcnc`].
 
 pub mod fanuc0i;
 pub mod g32;
 pub mod g76;
 pub mod g92;
 pub mod gsk980tdc;
+pub mod linuxcnc;
 pub mod reader;
 pub mod renhe;
 pub mod words;
@@ -21,8 +23,8 @@ pub use reader::{Reader, Rules};
 use crate::block::{Block, Word};
 use crate::dialect::Dialect;
 use crate::gcode::{G, Group};
-use crate::settings::P;
-use crate::state::Motion;
+use crate::settings::{P, Settings};
+use crate::state::{Modal, Motion};
 
 /// A controller: its rules and the commands it reads itself.
 pub struct Controller {
@@ -32,6 +34,14 @@ pub struct Controller {
     pub g_code: fn(i64) -> Option<(Group, G)>,
     /// Reads a thread or cycle block of this controller.
     pub command: fn(&mut Reader, &Block, Command),
+    /// Sets the modal state a program starts in.
+    pub init: fn(&mut Modal, &Settings),
+    /// Checks a block's words before it runs, given the motion it will make
+    /// (its motion-group code, or the modal one when it has axis words, ×10);
+    /// false after an alarm: the block is not executed.
+    pub check: Option<fn(&mut Reader, &Block, Option<i64>) -> bool>,
+    /// Checks made when the program has been read (how it ended).
+    pub finish: Option<fn(&mut Reader)>,
     /// The parameter holding the tool angle of threads cut block by block
     /// (`None`: 60°).
     pub tool_angle: Option<P>,
@@ -40,14 +50,20 @@ pub struct Controller {
 /// A block the interpreter hands to its controller.
 #[derive(Clone, Copy, Debug)]
 pub enum Command<'b> {
-    /// A block with axis words in a thread motion mode (G32, G92, Renhe G32/G33).
+    /// A block with axis words in a thread motion mode (G32, G92, Renhe G32/G33, LinuxCNC G33/G76).
     Motion(Motion),
     /// A one-shot thread or cycle code (G76, G78, Renhe G30) and its word.
     OneShot(G, &'b Word),
 }
 
 /// Every controller, in [`Dialect::ALL`] order.
-const ALL: [&Controller; 3] = [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER];
+const ALL: [&Controller; 4] =
+    [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER, &linuxcnc::CONTROLLER];
+
+/// The start state of the controllers whose X mode is a parameter (`x_mode`).
+pub fn x_mode_parameter(m: &mut Modal, s: &Settings) {
+    m.radius = s.radius_x();
+}
 
 /// The controller of a dialect.
 pub fn of(d: Dialect) -> &'static Controller {
