@@ -128,7 +128,11 @@ fn spindle_number(r: &mut Reader, b: &Block, message: &str) -> bool {
     r.diag(
         Code::ValueOutOfRange,
         w.span,
-        format!("{message}: {} selects a spindle, and {n} configured (setting linuxcnc.spindles) are $0..${}", w.display(), n - 1),
+        format!(
+            "{message}: {} selects a spindle, and {n} configured (setting linuxcnc.spindles) are $0..${}",
+            w.display(),
+            n - 1
+        ),
     );
     false
 }

@@ -57,8 +57,7 @@ pub enum Command<'b> {
 }
 
 /// Every controller, in [`Dialect::ALL`] order.
-const ALL: [&Controller; 4] =
-    [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER, &linuxcnc::CONTROLLER];
+const ALL: [&Controller; 4] = [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER, &linuxcnc::CONTROLLER];
 
 /// The start state of the controllers whose X mode is a parameter (`x_mode`).
 pub fn x_mode_parameter(m: &mut Modal, s: &Settings) {

@@ -43,7 +43,7 @@ pub fn block(r: &mut Reader, b: &Block) {
                 "{}: LinuxCNC passes a K of zero or below on as the spindle sync ratio; {}",
                 kw.display(),
                 if k == 0.0 {
-                    "with K0 the axes would wait for a spindle that never moves them: no thread is drawn, only the move"
+                    "with K0 the axes would wait for a spindle that never moves them: the move is drawn, but no thread"
                 } else {
                     "a negative ratio runs the axes against the spindle: the thread is drawn with |K|"
                 }
@@ -52,7 +52,14 @@ pub fn block(r: &mut Reader, b: &Block) {
     }
     if k == 0.0 || !k.is_finite() {
         r.end_chain();
-        r.emit(Event::Motion(Move { kind: MoveKind::Feed, from: start, to: end, line: b.line, span: b.span, arc: None }));
+        r.emit(Event::Motion(Move {
+            kind: MoveKind::Thread,
+            from: start,
+            to: end,
+            line: b.line,
+            span: b.span,
+            arc: None,
+        }));
         return r.arrive(end, true, true, b.line);
     }
     // K along the move: the lead along the long axis is K·(long travel / length).

@@ -28,7 +28,13 @@ pub fn block(r: &mut Reader, b: &Block) {
     let radius = |r: &mut Reader, w: Option<Word>| w.map_or(0.0, |w| r.length(&w) / if r.m.radius { 1.0 } else { 2.0 });
     let (i, j, k) = (radius(r, b.get(b'I').copied()), radius(r, b.get(b'J').copied()), radius(r, b.get(b'K').copied()));
     if let Some(msg) = ijk_error(i, j, k) {
-        let w = if i == 0.0 { b'I' } else if j <= 0.0 { b'J' } else { b'K' };
+        let w = if i == 0.0 {
+            b'I'
+        } else if j <= 0.0 {
+            b'J'
+        } else {
+            b'K'
+        };
         return r.diag(Code::ValueOutOfRange, b.get(w).map_or(g, |w| w.span), msg);
     }
     plane_warning(r, g, "G76");
@@ -118,7 +124,11 @@ fn ijk_error(i: f64, j: f64, k: f64) -> Option<String> {
     } else if j <= 0.0 {
         Some(format!("In G76, J must be greater than 0 (J is the first pass depth; here {})", fmt(j)))
     } else if k <= j {
-        Some(format!("In G76, K must be greater than J (K {} is the thread depth, J {} the first pass depth)", fmt(k), fmt(j)))
+        Some(format!(
+            "In G76, K must be greater than J (K {} is the thread depth, J {} the first pass depth)",
+            fmt(k),
+            fmt(j)
+        ))
     } else {
         None
     }
@@ -127,14 +137,15 @@ fn ijk_error(i: f64, j: f64, k: f64) -> Option<String> {
 /// X and Y words do not move the drive line: the passes still start from the tool's X.
 fn end_words(r: &mut Reader, b: &Block, x0: f64) {
     for w in b.words.iter().filter(|w| matches!(w.letter, b'X' | b'Y')) {
-        let diameter = if r.m.radius { 2.0 } else { 1.0 };
+        // As the program writes X: a radius under G8, a diameter under G7.
+        let shown = if r.m.radius { x0 } else { 2.0 * x0 };
         r.diag(
             Code::DriveLineKept,
             w.span,
             format!(
                 "{}: the passes are cut from the drive line X{} (where the tool is); {} only moves the tool at the end of the cycle",
                 w.display(),
-                fmt(x0 * diameter),
+                fmt(shown),
                 w.letter()
             ),
         );
@@ -146,7 +157,11 @@ fn read_r(r: &mut Reader, b: &Block) -> f64 {
     let Some(w) = b.get(b'R').copied() else { return 1.0 };
     let v = w.value();
     if v < 1.0 {
-        r.diag(Code::ValueReadAs, w.span, format!("{}: a degression below 1 is read as R1 (constant depth J per pass)", w.display()));
+        r.diag(
+            Code::ValueReadAs,
+            w.span,
+            format!("{}: a degression below 1 is read as R1 (constant depth J per pass)", w.display()),
+        );
         return 1.0;
     }
     v
@@ -174,7 +189,10 @@ fn read_h(r: &mut Reader, b: &Block) -> i64 {
         r.diag(
             Code::FullDepthSkipped,
             w.span,
-            format!("{}: LinuxCNC cuts H + 1 passes at full depth, so with a negative H the thread is never cut to K", w.display()),
+            format!(
+                "{}: LinuxCNC cuts H + 1 passes at full depth, so with a negative H the thread is never cut to K",
+                w.display()
+            ),
         );
     }
     h
@@ -185,7 +203,11 @@ fn read_e(r: &mut Reader, b: &Block) -> f64 {
     let Some(w) = b.get(b'E').copied() else { return 0.0 };
     let v = r.length(&w);
     if v < 0.0 {
-        r.diag(Code::ValueReadAs, w.span, format!("{}: a negative taper length is read as E0: no taper is cut", w.display()));
+        r.diag(
+            Code::ValueReadAs,
+            w.span,
+            format!("{}: a negative taper length is read as E0: no taper is cut", w.display()),
+        );
         return 0.0;
     }
     v
@@ -198,9 +220,17 @@ fn read_l(r: &mut Reader, b: &Block) -> u32 {
     let bits = l & 3;
     let ends = ["no taper", "an entry taper", "an exit taper", "tapers at both ends"][bits as usize];
     if let Some(w) = b.get(b'L').filter(|_| l > 3) {
-        r.diag(Code::ValueReadAs, w.span, format!("{}: L is a bit mask (1 entry, 2 exit): L{l} gives {ends}", w.display()));
+        r.diag(
+            Code::ValueReadAs,
+            w.span,
+            format!("{}: L is a bit mask (1 entry, 2 exit): L{l} gives {ends}", w.display()),
+        );
     } else if let (Some(w), true) = (b.get(b'E'), e > 0.0 && bits == 0) {
-        r.diag(Code::ValueReadAs, w.span, format!("{}: without L1, L2 or L3 the taper length gives no taper", w.display()));
+        r.diag(
+            Code::ValueReadAs,
+            w.span,
+            format!("{}: without L1, L2 or L3 the taper length gives no taper", w.display()),
+        );
     } else if let (Some(w), true) = (b.get(b'L'), bits != 0 && e == 0.0) {
         r.diag(Code::ValueReadAs, w.span, format!("{}: without a taper length E it gives no taper", w.display()));
     }
