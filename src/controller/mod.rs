@@ -39,13 +39,16 @@ pub struct Controller {
     /// Checks a block's words before it runs, given the motion it will make
     /// (its motion-group code, or the modal one when it has axis words, ×10);
     /// false after an alarm: the block is not executed.
-    pub check: Option<fn(&mut Reader, &Block, Option<i64>) -> bool>,
+    pub check: Option<BlockCheck>,
     /// Checks made when the program has been read (how it ended).
     pub finish: Option<fn(&mut Reader)>,
     /// The parameter holding the tool angle of threads cut block by block
     /// (`None`: 60°).
     pub tool_angle: Option<P>,
 }
+
+/// A controller's check of a block's words before it runs (see [`Controller::check`]).
+pub type BlockCheck = fn(&mut Reader, &Block, Option<i64>) -> bool;
 
 /// A block the interpreter hands to its controller.
 #[derive(Clone, Copy, Debug)]

@@ -139,7 +139,7 @@ impl G76 {
         let (entry, exit) = (e != 0.0 && self.l & 1 != 0, e != 0.0 && self.l & 2 != 0);
         let mut g = PassGeometry::default();
         let mut at = from;
-        let mut go = |v: &mut Vec<(MoveKind, (f64, f64), (f64, f64))>, kind, to: (f64, f64), always: bool| {
+        let mut go = |v: &mut Vec<Step>, kind, to: (f64, f64), always: bool| {
             if always || to != at {
                 v.push((kind, at, to));
             }
@@ -169,12 +169,15 @@ impl G76 {
     }
 }
 
-/// One pass's motions as (kind, from, to) in (radius, Z), and its points.
+/// A motion as (kind, from, to), points as (radius, Z).
+type Step = (MoveKind, (f64, f64), (f64, f64));
+
+/// One pass's motions, and its points.
 #[derive(Clone, Debug, Default)]
 struct PassGeometry {
-    approach: Vec<(MoveKind, (f64, f64), (f64, f64))>,
-    cut: Vec<(MoveKind, (f64, f64), (f64, f64))>,
-    back: Vec<(MoveKind, (f64, f64), (f64, f64))>,
+    approach: Vec<Step>,
+    cut: Vec<Step>,
+    back: Vec<Step>,
     from: (f64, f64),
     to: (f64, f64),
     screw_in_from: Option<(f64, f64)>,
@@ -203,14 +206,7 @@ pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Findin
             ),
         )
     })?;
-    let mv = |(kind, a, b): (MoveKind, (f64, f64), (f64, f64))| Move {
-        kind,
-        from: pt(a),
-        to: pt(b),
-        line: g.line,
-        span: g.span,
-        arc: None,
-    };
+    let mv = |(kind, a, b): Step| Move { kind, from: pt(a), to: pt(b), line: g.line, span: g.span, arc: None };
     let mut at = (g.x0, g.z0);
     let mut passes = Vec::with_capacity(depths.len());
     let mut paths = Vec::with_capacity(depths.len());
@@ -221,7 +217,7 @@ pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Findin
     let mut prev = 0.0;
     for (n, &(d, role)) in depths.iter().enumerate() {
         let p = g.pass_moves(d, at);
-        let conv = |v: &[(MoveKind, (f64, f64), (f64, f64))]| v.iter().map(|m| mv(*m)).collect::<Vec<_>>();
+        let conv = |v: &[Step]| v.iter().map(|m| mv(*m)).collect::<Vec<_>>();
         paths.push(PassPath::of(&conv(&p.approach), &conv(&p.cut), &conv(&p.back)));
         passes.push(Pass {
             start: 1,
