@@ -24,6 +24,7 @@ pub mod diagnostic;
 pub mod diagram;
 pub mod dialect;
 pub mod event;
+pub mod expand;
 pub mod gcode;
 pub mod geom;
 pub mod group;
@@ -40,6 +41,7 @@ pub mod state;
 pub mod thread;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
+pub mod wizard;
 
 pub use diagnostic::{Code, Diagnostic, Severity};
 pub use dialect::Dialect;

@@ -41,6 +41,21 @@ enum Command {
     },
     /// List every diagnostic code with its severity.
     Codes,
+    /// Write a program's plan back block by block for a controller: every
+    /// pass with its approach, cut, run-out, retract and return.
+    Expand {
+        /// Program file, or '-' for standard input.
+        file: String,
+        /// Dialect the program is written in.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Dialect to write (default: the program's own).
+        #[arg(long, value_parser = parse_dialect)]
+        to: Option<Dialect>,
+        /// Set a controller parameter or setting of the source dialect (repeatable).
+        #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
+        set: Vec<String>,
+    },
 }
 
 fn parse_dialect(s: &str) -> Result<Dialect, String> {
@@ -51,6 +66,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
+        Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
         Command::Settings { dialect } => {
             let s = Settings::new(dialect);
             let mut out = String::new();
@@ -80,12 +96,13 @@ fn main() -> ExitCode {
     }
 }
 
-fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
+/// The settings of `dialect` with `set` applied, and the program text; `Err` is the exit code (2).
+fn input(file: &str, dialect: Dialect, set: &[String]) -> Result<(Settings, String), ExitCode> {
     let mut settings = Settings::new(dialect);
     for a in set {
         if let Err(e) = settings.assign(a) {
             eprintln!("screwcut: {e}");
-            return ExitCode::from(2);
+            return Err(ExitCode::from(2));
         }
     }
     let mut bytes = Vec::new();
@@ -96,10 +113,35 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
     };
     if let Err(e) = read {
         eprintln!("screwcut: cannot read {file}: {e}");
-        return ExitCode::from(2);
+        return Err(ExitCode::from(2));
     }
     // Programs from old controllers are not always UTF-8: read them lossily rather than refuse.
-    let text = String::from_utf8_lossy(&bytes);
+    Ok((settings, String::from_utf8_lossy(&bytes).into_owned()))
+}
+
+fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String]) -> ExitCode {
+    let (settings, text) = match input(file, dialect, set) {
+        Ok(v) => v,
+        Err(code) => return code,
+    };
+    let plan = screwcut::plan(&text, &settings);
+    let alarms = plan.diagnostics.iter().filter(|d| d.severity == Severity::Error).count();
+    if alarms > 0 {
+        eprintln!("screwcut: note: {file} has {alarms} alarm(s): the blocks with an alarm are not in the expansion");
+    }
+    let e = screwcut::expand::expand(&plan, to);
+    for n in &e.notes {
+        eprintln!("screwcut: note: {n}");
+    }
+    emit(&e.program);
+    ExitCode::SUCCESS
+}
+
+fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
+    let (settings, text) = match input(file, dialect, set) {
+        Ok(v) => v,
+        Err(code) => return code,
+    };
     let plan = screwcut::plan(&text, &settings);
     emit(&if json { plan.to_json() + "\n" } else { summary(&plan, file) });
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }

@@ -14,7 +14,7 @@ mod check;
 mod g33;
 mod g76;
 
-use super::{Command, Controller, Reader, Rules, basic_g_code};
+use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code};
 use crate::block::Block;
 use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
@@ -22,6 +22,7 @@ use crate::gcode::{G, Group};
 use crate::settings::{P, Settings};
 use crate::span::Span;
 use crate::state::{Modal, Motion, once};
+use crate::wizard::Form;
 
 /// The LinuxCNC interpreter.
 pub static CONTROLLER: Controller = Controller {
@@ -40,6 +41,16 @@ pub static CONTROLLER: Controller = Controller {
     init,
     check: Some(check::block),
     finish: Some(finish),
+    writing: Writing {
+        preamble: &["G18 G7 G90"],
+        units: Some(("G20", "G21")),
+        motion: ["G0", "G1", "G2", "G3"],
+        points: false,
+        spindle_on: Some("M3"),
+        thread: ThreadWords::AlongPath,
+        start_angle: false,
+        forms: &[Form::G33, Form::LinuxG76],
+    },
     tool_angle: Some(P::LinuxToolAngle),
 };
 

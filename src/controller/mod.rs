@@ -42,9 +42,47 @@ pub struct Controller {
     pub check: Option<BlockCheck>,
     /// Checks made when the program has been read (how it ended).
     pub finish: Option<fn(&mut Reader)>,
+    /// How programs are written for this controller (`expand`, `generate`).
+    pub writing: Writing,
     /// The parameter holding the tool angle of threads cut block by block
     /// (`None`: 60°).
     pub tool_angle: Option<P>,
+}
+
+/// How programs are written for a controller (`expand`, `generate`): data
+/// the writers read, so that they never ask which controller it is.
+#[derive(Debug)]
+pub struct Writing {
+    /// Lines a program starts with (plane, X mode, distance mode).
+    pub preamble: &'static [&'static str],
+    /// The inch and metric codes, or `None` when the controller reads millimetres only.
+    pub units: Option<(&'static str, &'static str)>,
+    /// Motion codes: rapid, feed, clockwise arc, counter-clockwise arc.
+    pub motion: [&'static str; 4],
+    /// Every length carries a decimal point (Fanuc reads `X20` as 0.02 mm).
+    pub points: bool,
+    /// The block that starts the spindle, where a thread needs it turning.
+    pub spindle_on: Option<&'static str>,
+    /// How a synchronised move is written.
+    pub thread: ThreadWords,
+    /// G32 takes a start angle `Q` in 0.001° (multi-start by start angle).
+    pub start_angle: bool,
+    /// The threading forms the wizard writes for this controller.
+    pub forms: &'static [crate::wizard::Form],
+}
+
+/// How a controller writes one synchronised move.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ThreadWords {
+    /// `G32 X Z F`, F the lead along the long axis; with `runout`, a `J K` run-out (GSK).
+    G32 {
+        /// J/K run-out words.
+        runout: bool,
+    },
+    /// Renhe: `G30 U W` sets the tail, `G33 U W F` (incremental, F the pitch in mm).
+    Renhe,
+    /// LinuxCNC: `G33 X Z K`, K the distance along the move per revolution.
+    AlongPath,
 }
 
 /// A controller's check of a block's words before it runs (see [`Controller::check`]).

@@ -102,7 +102,8 @@ pub fn classify(from: Point, end: Point) -> Option<(ThreadKind, Axis)> {
     } else {
         ThreadKind::Taper
     };
-    let long = if d.y.abs() > d.x.abs() { Axis::X } else { Axis::Z };
+    // Equal travels (a 45° run-out) within rounding are Z's.
+    let long = if d.y.abs() > d.x.abs() + EPS { Axis::X } else { Axis::Z };
     Some((kind, long))
 }
 
