@@ -17,7 +17,7 @@ use crate::cycle::classify;
 use crate::dialect::Dialect;
 use crate::geom::Frame;
 use crate::motion::{Move, MoveKind, Point};
-use crate::num::{EPS, fmt};
+use crate::num::EPS;
 use crate::plan::{Plan, Units};
 use crate::settings::Settings;
 use crate::thread::Thread;
@@ -122,8 +122,7 @@ impl<'p> Writer<'p> {
 
     /// A length as the target reads it.
     fn len(&self, v: f64) -> String {
-        let s = fmt(v * self.scale);
-        if self.w.points && !s.contains('.') { s + "." } else { s }
+        self.w.length(v * self.scale)
     }
 
     /// A point rounded as [`Writer::len`] writes it.
@@ -134,15 +133,7 @@ impl<'p> Writer<'p> {
 
     /// A lead or pitch (six decimals).
     fn lead(&self, v: f64) -> String {
-        let r = (v * self.scale * 1e6).round() / 1e6;
-        let mut s = format!("{r:.6}");
-        while s.ends_with('0') {
-            s.pop();
-        }
-        if s.ends_with('.') && !self.w.points {
-            s.pop();
-        }
-        s
+        self.w.lead(v * self.scale)
     }
 
     fn header(&mut self, to: Dialect) {

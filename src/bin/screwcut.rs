@@ -56,6 +56,95 @@ enum Command {
         #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
         set: Vec<String>,
     },
+    /// Write a threading program: a designation (or --major and --lead), its
+    /// length (or --end-z), a controller and a form.
+    Generate(GenerateArgs),
+}
+
+#[derive(clap::Args)]
+struct GenerateArgs {
+    /// Thread designation: M30x2-6g, M20x1.5-6H, 1/2-13 UNC-2A, 1/2-14 NPT...
+    designation: Option<String>,
+    /// Major diameter (mm), without a designation.
+    #[arg(long)]
+    major: Option<f64>,
+    /// Lead (mm), without a designation.
+    #[arg(long)]
+    lead: Option<f64>,
+    /// Thread length (mm), from --start-z towards -Z.
+    #[arg(long)]
+    length: Option<f64>,
+    /// Z where the thread starts.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    start_z: f64,
+    /// Z where the thread ends (instead of --length).
+    #[arg(long, allow_negative_numbers = true)]
+    end_z: Option<f64>,
+    /// Internal thread.
+    #[arg(long, conflicts_with = "external")]
+    internal: bool,
+    /// External thread (the default without a designation).
+    #[arg(long)]
+    external: bool,
+    /// Number of starts.
+    #[arg(long)]
+    starts: Option<u32>,
+    /// Highest spindle speed (rev/min).
+    #[arg(long, default_value_t = 1000.0)]
+    max_rpm: f64,
+    /// Highest thread feed, lead × speed (mm/min).
+    #[arg(long, default_value_t = 3000.0)]
+    max_feed: f64,
+    /// Target controller.
+    #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+    dialect: Dialect,
+    /// Form: g32, g92, g76, g78 (GSK), renhe_g33, g33 or linuxcnc_g76 (LinuxCNC).
+    #[arg(long, short, default_value = "g32", value_parser = parse_form)]
+    form: screwcut::wizard::Form,
+}
+
+fn parse_form(s: &str) -> Result<screwcut::wizard::Form, String> {
+    use screwcut::wizard::Form;
+    Form::parse(s).ok_or_else(|| {
+        format!("unknown form '{s}' ({})", Form::ALL.iter().map(|f| f.name()).collect::<Vec<_>>().join(", "))
+    })
+}
+
+fn generate(a: GenerateArgs) -> ExitCode {
+    let internal = if a.internal {
+        Some(true)
+    } else if a.external {
+        Some(false)
+    } else {
+        None
+    };
+    let r = screwcut::wizard::Request {
+        designation: a.designation,
+        major: a.major,
+        lead: a.lead,
+        starts: a.starts,
+        internal,
+        start_z: a.start_z,
+        end_z: a.end_z,
+        length: a.length,
+        max_rpm: a.max_rpm,
+        max_feed: a.max_feed,
+        dialect: a.dialect,
+        form: a.form,
+    };
+    match screwcut::wizard::generate(&r) {
+        Ok(g) => {
+            for n in &g.notes {
+                eprintln!("screwcut: note: {n}");
+            }
+            emit(&g.program);
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("screwcut: {e}");
+            ExitCode::from(2)
+        }
+    }
 }
 
 fn parse_dialect(s: &str) -> Result<Dialect, String> {
@@ -67,6 +156,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
+        Command::Generate(a) => generate(a),
         Command::Settings { dialect } => {
             let s = Settings::new(dialect);
             let mut out = String::new();

@@ -71,6 +71,27 @@ pub struct Writing {
     pub forms: &'static [crate::wizard::Form],
 }
 
+impl Writing {
+    /// A length as the controller reads it: four decimals, with a decimal point where it needs one.
+    pub fn length(&self, v: f64) -> String {
+        let s = crate::num::fmt(v);
+        if self.points && !s.contains('.') { s + "." } else { s }
+    }
+
+    /// A lead or pitch: six decimals, with a decimal point where the controller needs one.
+    pub fn lead(&self, v: f64) -> String {
+        let r = (v * 1e6).round() / 1e6;
+        let mut s = format!("{r:.6}");
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') && !self.points {
+            s.pop();
+        }
+        if s == "-0" { "0".into() } else { s }
+    }
+}
+
 /// How a controller writes one synchronised move.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ThreadWords {
