@@ -38,6 +38,7 @@ pub mod settings;
 pub mod span;
 pub mod standard;
 pub mod state;
+pub mod svg;
 pub mod thread;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -59,6 +59,33 @@ enum Command {
     /// Write a threading program: a designation (or --major and --lead), its
     /// length (or --end-z), a controller and a form.
     Generate(GenerateArgs),
+    /// Draw a program as a standalone SVG: the side section, one thread's
+    /// tooth section or its starts.
+    Svg {
+        /// Program file, or '-' for standard input.
+        file: String,
+        /// Which drawing: side, tooth or starts.
+        #[arg(long, default_value = "side", value_parser = ["side", "tooth", "starts"])]
+        view: String,
+        /// Controller dialect.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Set a controller parameter or setting (repeatable).
+        #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Thread (1-based) of the tooth and starts drawings.
+        #[arg(long, default_value_t = 1)]
+        thread: usize,
+        /// Start (1-based) of the tooth drawing.
+        #[arg(long, default_value_t = 1)]
+        start: u32,
+        /// Width of the drawing area in px (labels may widen the page).
+        #[arg(long, default_value_t = 800.0)]
+        width: f64,
+        /// Height of the drawing area in px.
+        #[arg(long, default_value_t = 500.0)]
+        height: f64,
+    },
 }
 
 #[derive(clap::Args)]
@@ -157,6 +184,29 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
         Command::Generate(a) => generate(a),
+        Command::Svg { file, view, dialect, set, thread, start, width, height } => {
+            let (settings, text) = match input(&file, dialect, &set) {
+                Ok(v) => v,
+                Err(code) => return code,
+            };
+            let plan = screwcut::plan(&text, &settings);
+            let ti = thread.max(1) - 1;
+            let scene = match view.as_str() {
+                "tooth" => screwcut::diagram::tooth(&plan, ti, start.max(1)),
+                "starts" => screwcut::diagram::starts(&plan, ti),
+                _ => Some(screwcut::diagram::side(&plan)),
+            };
+            let Some(scene) = scene else {
+                eprintln!(
+                    "screwcut: {file} has no thread {thread} to draw the {view} view of ({} threads)",
+                    plan.threads.len()
+                );
+                return ExitCode::from(2);
+            };
+            let opts = screwcut::svg::Options { width, height, thread: ti, ..Default::default() };
+            emit(&screwcut::svg::svg(&scene, &opts));
+            ExitCode::SUCCESS
+        }
         Command::Settings { dialect } => {
             let s = Settings::new(dialect);
             let mut out = String::new();
