@@ -403,3 +403,42 @@ fn program_end_and_snippets() {
         assert!(v.unwrap_err().starts_with("File ended with no percent sign or program end"));
     }
 }
+
+/// What screwcut writes for LinuxCNC — the wizard's G33 and G76 programs and
+/// expansions of other controllers' programs — rs274 runs, cutting the same
+/// synchronised moves.
+#[test]
+fn written_programs_run_in_rs274() {
+    use screwcut::wizard::{Form, Request, generate};
+    let mut programs = Vec::new();
+    for d in ["M10x1.5-6g", "M20x1.5-6H", "1/2-13 UNC-2A", "1/2-14 NPT", "M24xPh3P1.5"] {
+        for form in [Form::G33, Form::LinuxG76] {
+            let r = Request {
+                designation: Some(d.into()),
+                length: Some(20.0),
+                dialect: Dialect::LinuxCnc,
+                form,
+                ..Request::default()
+            };
+            match generate(&r) {
+                Ok(g) => programs.push((format!("{d} {form:?}"), g.program)),
+                Err(e) => assert!(d.contains("NPT") && form == Form::LinuxG76, "{d} {form:?}: {e}"),
+            }
+        }
+    }
+    for (name, src, from) in [
+        ("g76-fanuc", include_str!("../examples/g76-fanuc.nc"), Dialect::Fanuc0i),
+        ("g92-two-start", include_str!("../examples/g92-two-start.nc"), Dialect::Gsk980tdc),
+        ("g78-flank-alternating", include_str!("../examples/g78-flank-alternating.nc"), Dialect::Gsk980tdc),
+        ("renhe-tails", include_str!("../examples/renhe-tails.nc"), Dialect::Renhe),
+    ] {
+        let plan = plan_with(src, from, &[]);
+        programs.push((format!("{name} expanded"), screwcut::expand::expand(&plan, Dialect::LinuxCnc).program));
+    }
+    for (name, text) in programs {
+        let numbered = rs274::numbered(&text);
+        let Some(calls) = oracle(&numbered, None) else { return };
+        let calls = calls.unwrap_or_else(|e| panic!("{name}: rs274 refuses it: {e}\n{text}"));
+        assert!(compare(&name, &numbered, &calls) > 0, "{name}");
+    }
+}
