@@ -43,6 +43,22 @@ pub fn thread_dense(bytes: usize, seed: u64) -> String {
     s
 }
 
+/// A program of about `bytes` bytes of G01 moves only, as a CAM post writes
+/// a turned contour (`N.. G01 X.. Z.. F..`): the plain reading speed.
+pub fn g01(bytes: usize, seed: u64) -> String {
+    use std::fmt::Write;
+    let mut r = Lcg::new(seed);
+    let mut s = String::with_capacity(bytes + 256);
+    s.push_str("O1002\nG50 X100 Z100\nG99 S800 M03 T0101\nG00 X62 Z5\n");
+    let mut n = 10u32;
+    while s.len() < bytes {
+        let _ = writeln!(s, "N{n} G01 X{:.3} Z{:.3} F0.2", r.range(20.0, 60.0), r.range(-80.0, 0.0));
+        n = n.wrapping_add(10);
+    }
+    s.push_str("M30\n");
+    s
+}
+
 /// A program of about `bytes` bytes (GSK980TDc).
 pub fn program(bytes: usize, seed: u64) -> String {
     use std::fmt::Write;

@@ -14,12 +14,21 @@ fn peak_rss_kib() -> Option<u64> {
     line.split_whitespace().nth(1)?.parse().ok()
 }
 
+/// The generated program `name` (mixed, thread-dense, g01) of about `mb` MiB.
+fn generate(name: &str, mb: usize) -> String {
+    match name {
+        "thread-dense" => programs::thread_dense(mb << 20, 7),
+        "g01" => programs::g01(mb << 20, 7),
+        _ => programs::program(mb << 20, 7),
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    // Profiling mode: plan 1 MB many times (for perf).
+    // Profiling mode: plan 1 MB many times (for perf, callgrind): `--profile N [mixed|g01|thread-dense]`.
     if let Some(i) = args.iter().position(|a| a == "--profile") {
         let n: usize = args[i + 1].parse().expect("count");
-        let text = programs::program(1 << 20, 7);
+        let text = generate(args.get(i + 2).map_or("mixed", String::as_str), 1);
         let settings = Settings::new(Dialect::Gsk980tdc);
         let mut moves = 0;
         for _ in 0..n {
@@ -31,11 +40,7 @@ fn main() {
     // Child mode: plan one size and report peak memory of this process.
     if let Some(i) = args.iter().position(|a| a == "--child") {
         let mb: usize = args[i + 1].parse().expect("size");
-        let text = if args.get(i + 2).map(String::as_str) == Some("thread-dense") {
-            programs::thread_dense(mb << 20, 7)
-        } else {
-            programs::program(mb << 20, 7)
-        };
+        let text = generate(args.get(i + 2).map_or("mixed", String::as_str), mb);
         let base = peak_rss_kib().unwrap_or(0);
         let plan = screwcut::plan(&text, &Settings::new(Dialect::Gsk980tdc));
         let peak = peak_rss_kib().unwrap_or(0);
@@ -46,8 +51,8 @@ fn main() {
     let _ = std::fs::create_dir_all(&out_dir);
     let settings = Settings::new(Dialect::Gsk980tdc);
     println!("screwcut native throughput (lex + interpret + plan), release build");
-    for (name, mb) in [("mixed", 1usize), ("mixed", 20), ("thread-dense", 1)] {
-        let text = if name == "mixed" { programs::program(mb << 20, 7) } else { programs::thread_dense(mb << 20, 7) };
+    for (name, mb) in [("mixed", 1usize), ("mixed", 20), ("thread-dense", 1), ("g01", 10)] {
+        let text = generate(name, mb);
         let _ = std::fs::write(out_dir.join(format!("{name}-{mb}mb.nc")), &text);
         let runs = if mb == 1 { 20 } else { 3 };
         let mut best = f64::INFINITY;

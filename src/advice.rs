@@ -93,13 +93,7 @@ fn finish_one(
     let dir = t.depth_dir;
     let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
     let mm = if inch { 25.4 } else { 1.0 };
-    // Deepest pass: furthest along the depth direction at its start.
-    let deepest = t
-        .passes
-        .iter()
-        .max_by(|a, b| (Frame(long).short(a.from) * dir).total_cmp(&(Frame(long).short(b.from) * dir)))
-        .cloned()
-        .expect("a thread has passes");
+    let deepest = deepest_pass(t).cloned().expect("a thread has passes");
     let outline = outline_crest(t, moves, &deepest, h);
     let crest_at = |p: Point| -> f64 {
         let l = Frame(long).long(p);
@@ -149,7 +143,7 @@ fn finish_one(
             Code::CrestAssumed,
             span,
             || format!(
-                "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; δ1/δ2 are not checked",
+                "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; the textbook's δ1/δ2 are not checked",
                 if t.internal { "minor" } else { "major" },
                 fmt(t.crest),
                 fmt(s.get(P::DepthFactor))
@@ -217,6 +211,27 @@ fn finish_one(
     }
 }
 
+/// The deepest pass: furthest along the depth direction at its start.
+fn deepest_pass(t: &Thread) -> Option<&crate::thread::Pass> {
+    let (long, dir) = (t.long_axis, t.depth_dir);
+    t.passes.iter().max_by(|a, b| (Frame(long).short(a.from) * dir).total_cmp(&(Frame(long).short(b.from) * dir)))
+}
+
+/// The lead-in δ1 and run-out δ2 of thread `i` (program units along its
+/// long axis) measured against the work the program turned before it, as
+/// the textbook's advice measures them; `None` when the program did not
+/// turn the surface the thread is cut on.
+pub fn measured_clearances(threads: &[Thread], i: usize, moves: &[Move], s: &Settings) -> Option<(f64, f64)> {
+    let t = threads.get(i)?;
+    let window_start = if i == 0 { 0 } else { threads[i - 1].first_move };
+    let end = t.first_move.min(moves.len());
+    let window = &moves[window_start.min(end)..end];
+    let deepest = deepest_pass(t)?;
+    let h = s.get(P::DepthFactor) * t.pitch / 2.0;
+    let crest = outline_crest(t, window, deepest, h)?;
+    Some(work_clearances(t, &crest, window, deepest))
+}
+
 /// The turned surface a thread is cut on, when the program turned it.
 fn outline_crest(t: &Thread, moves: &[Move], deepest: &crate::thread::Pass, h: f64) -> Option<Piece> {
     let long = t.long_axis;
@@ -267,6 +282,28 @@ fn clearance(
     diags: &mut Diagnostics,
     span: Span,
 ) {
+    let (d1, d2) = work_clearances(t, crest, moves, deepest);
+    if d1 * mm < 2.0 - 1e-9 {
+        diags.push_with(
+            Code::Clearance,
+            span,
+            || if d1 < 0.0 {
+                format!("the pass starts {} inside the work: the lead-in δ1 must keep the acceleration off the thread (textbook: 2–10 mm)", fmt(-d1))
+            } else {
+                format!("lead-in δ1 = {} is shorter than the textbook's 2–10 mm (larger for larger leads): the first turns are cut while the axis accelerates", fmt(d1))
+            },
+        );
+    }
+    if d2 > 0.0 && d1 > 0.0 && d2 < d1 / 4.0 - 1e-9 {
+        diags.push_with(Code::Clearance, span, || {
+            format!("run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)", fmt(d2), fmt(d1 / 4.0))
+        });
+    }
+}
+
+/// δ1 and δ2 of `t` against the turned surface `crest` (and the turning
+/// moves contiguous with it that the thread passes through).
+fn work_clearances(t: &Thread, crest: &Piece, moves: &[Move], deepest: &crate::thread::Pass) -> (f64, f64) {
     let long = t.long_axis;
     let dir = t.depth_dir;
     let deep = |p: Point| Frame(long).short(p) * dir;
@@ -298,21 +335,5 @@ fn clearance(
     let p0 = &t.passes[0];
     let (a, b) = (Frame(long).long(p0.from), Frame(long).long(p0.to));
     let toward_minus = b < a;
-    let (d1, d2) = if toward_minus { (a - hi, lo - b) } else { (lo - a, b - hi) };
-    if d1 * mm < 2.0 - 1e-9 {
-        diags.push_with(
-            Code::Clearance,
-            span,
-            || if d1 < 0.0 {
-                format!("the pass starts {} inside the work: the lead-in δ1 must keep the acceleration off the thread (textbook: 2–10 mm)", fmt(-d1))
-            } else {
-                format!("lead-in δ1 = {} is shorter than the textbook's 2–10 mm (larger for larger leads): the first turns are cut while the axis accelerates", fmt(d1))
-            },
-        );
-    }
-    if d2 > 0.0 && d1 > 0.0 && d2 < d1 / 4.0 - 1e-9 {
-        diags.push_with(Code::Clearance, span, || {
-            format!("run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)", fmt(d2), fmt(d1 / 4.0))
-        });
-    }
+    if toward_minus { (a - hi, lo - b) } else { (lo - a, b - hi) }
 }

@@ -39,6 +39,17 @@ pub struct Mark {
     pub threads: usize,
 }
 
+impl Mark {
+    /// The mark as reached in a text `bytes` longer before it, with `moves` more motions and `threads` more threads.
+    pub fn shifted(&self, moves: isize, threads: isize, bytes: isize) -> Mark {
+        Mark {
+            group: self.group.shifted(moves, bytes),
+            moves: self.moves.saturating_add_signed(moves),
+            threads: self.threads.saturating_add_signed(threads),
+        }
+    }
+}
+
 impl Assembler {
     /// An empty plan for a program of about `bytes` bytes.
     pub fn new(s: &Settings, bytes: usize) -> Assembler {
@@ -159,6 +170,7 @@ impl Assembler {
                 first_move,
                 tool_angle: g.tool_angle,
                 moves,
+                spindle: g.spindle,
             };
             self.group.add(chain, s, &mut self.threads, diags);
         }

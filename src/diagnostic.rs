@@ -176,6 +176,29 @@ codes! {
     FloatExtraPass = "float-extra-pass", Info;
     /// LinuxCNC: G33 K is the advance along the move; on a taper the axial lead is less.
     LeadAlongPath = "lead-along-path", Info;
+    // ---- shop floor ----
+    /// Thread feed lead × n above the machine's limit (`machine.max_thread_feed`).
+    ThreadFeedLimit = "thread-feed-limit", Warning;
+    /// Spindle speed above the machine's (`machine.max_rpm`).
+    SpindleLimit = "spindle-limit", Warning;
+    /// A thread cut under G96: the speed changes with X.
+    ThreadCss = "thread-css", Warning;
+    /// Lead-in δ1 shorter than n·L/500 (`machine.delta1_divisor`).
+    Delta1Speed = "delta1-speed", Warning;
+    /// Run-out δ2 shorter than n·L/1800 (`machine.delta2_divisor`).
+    Delta2Speed = "delta2-speed", Warning;
+    /// A first pass heavier than a constant-area share allows, or a pass over `tool.max_chip_area`.
+    ChipHeavyFirst = "chip-heavy-first", Warning;
+    /// A pass that deepens the thread by less than `chip.min_infeed`.
+    ChipThin = "chip-thin", Info;
+    /// A pass (not a spring pass) that removes nothing.
+    ChipNone = "chip-none", Warning;
+    /// The thread check: the pitch diameter cut is within the designation's limits.
+    GaugeOk = "gauge-ok", Info;
+    /// The thread check: the thread will not gauge (with the fix).
+    GaugeFail = "gauge-fail", Warning;
+    /// `thread.designation` (or the designation found) cannot be read or has no limits.
+    BadDesignation = "bad-designation", Warning;
     // ---- textbook advice ----
     /// The crest diameter was not turned in the program and was assumed.
     CrestAssumed = "crest-assumed", Info;
@@ -298,6 +321,19 @@ impl Diagnostics {
     /// Where the first dropped diagnostic was.
     pub fn first_dropped(&self) -> Option<Span> {
         self.first_dropped
+    }
+
+    /// Takes the diagnostics from the `len`-th on out of the collector (none were dropped).
+    pub fn split_off(&mut self, len: usize) -> Vec<(Code, String, Span)> {
+        self.items.split_off(len.min(self.items.len()))
+    }
+
+    /// Appends `items` (kept from another reading of the same text, `bytes`
+    /// further along here), keeping this collector's limit.
+    pub fn extend_shifted(&mut self, items: Vec<(Code, String, Span)>, bytes: isize) {
+        for (code, message, span) in items {
+            self.push(code, span.shifted(bytes), message);
+        }
     }
 
     /// Moves every diagnostic of `other` in, keeping this collector's limit.

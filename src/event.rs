@@ -7,7 +7,7 @@ use crate::cycle::{Geometry, Multi, PassPoints};
 use crate::geom::Frame;
 use crate::motion::{Move, Point};
 use crate::span::Span;
-use crate::thread::{Axis, Source, ThreadKind};
+use crate::thread::{Axis, Source, Spindle, ThreadKind};
 
 /// One event of one block.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,7 +28,7 @@ pub enum Event {
     /// A synchronised piece of a thread cut block by block (G32, Renhe G32/G33).
     Piece(Piece),
     /// A G92 pass block: one pass per start.
-    G92(G92Pass),
+    G92(Box<G92Pass>),
     /// A multi-pass cycle (G76, G78).
     Multi(Box<Multi>),
     /// LinuxCNC's G76 cycle.
@@ -95,6 +95,8 @@ pub struct Piece {
     pub approach: f64,
     /// Tool angle in force (degrees).
     pub tool_angle: f64,
+    /// The spindle in force.
+    pub spindle: Spindle,
 }
 
 /// A G92 block: the same pass for every start, the starts `360°/starts` apart.
@@ -116,4 +118,6 @@ pub struct G92Pass {
     pub span: Span,
     /// Tool angle in force (degrees).
     pub tool_angle: f64,
+    /// The spindle in force.
+    pub spindle: Spindle,
 }

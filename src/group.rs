@@ -15,7 +15,7 @@ use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Thread};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread};
 
 /// A continuous thread cut: consecutive thread blocks without a wait for
 /// the one-rev signal (or one start of a G92 pass).
@@ -41,6 +41,8 @@ pub struct Chain {
     pub tool_angle: f64,
     /// Its motions in the plan's moves.
     pub moves: PassMoves,
+    /// The spindle when it was cut (its first block).
+    pub spindle: Spindle,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -65,7 +67,30 @@ pub struct Grouper {
     infeed: [Infeed1; 2],
 }
 
+impl Chain {
+    /// The chain as read from a text `bytes` longer before it, with `moves` more motions before it.
+    pub fn shifted(&self, moves: isize, bytes: isize) -> Chain {
+        let mut c = self.clone();
+        c.span = c.span.shifted(bytes);
+        c.first_move = c.first_move.saturating_add_signed(moves);
+        c.moves = c.moves.shifted(moves);
+        c
+    }
+}
+
 impl Grouper {
+    /// The state as reached in a text `bytes` longer before this point, with
+    /// `moves` more motions before it (to compare with a reading of an edited text).
+    pub fn shifted(&self, moves: isize, bytes: isize) -> Grouper {
+        let infeed = self.infeed.map(|i| i.map(|(line, mv)| (line, mv.map(|m| m.saturating_add_signed(moves)))));
+        Grouper {
+            chain: self.chain.as_ref().map(|c| c.shifted(moves, bytes)),
+            cuts: self.cuts.iter().map(|c| c.shifted(moves, bytes)).collect(),
+            after: self.after,
+            infeed,
+        }
+    }
+
     /// A rapid with axis words `x`, `z` on `line` (its motion's index, if it
     /// moved): after a cut the first rapid on the cut's short axis is its
     /// retract and the next rapid on its long axis its return; otherwise
@@ -129,6 +154,7 @@ impl Grouper {
                     first_move: at,
                     tool_angle: p.tool_angle,
                     moves: PassMoves { approach: at..at, cut: moves.clone(), retract: moves.end..moves.end },
+                    spindle: p.spindle,
                 });
             }
         }
@@ -263,6 +289,7 @@ fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
         angle: c.angle,
         area: None,
         moves: c.moves.clone(),
+        spindle: c.spindle,
     }
 }
 
@@ -313,6 +340,7 @@ fn build(cuts: &[Chain]) -> Thread {
         passes,
         depth_dir,
         first_move: cuts.iter().map(|c| c.first_move).min().unwrap_or(0),
+        shop: Default::default(),
     }
 }
 

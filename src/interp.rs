@@ -28,6 +28,8 @@ pub struct Interp {
     pub s: Settings,
     /// The controller of the settings' dialect.
     pub ctl: &'static Controller,
+    /// A length without a decimal point is in least input increments.
+    increments: bool,
 }
 
 impl std::fmt::Debug for Controller {
@@ -48,20 +50,22 @@ impl Interp {
         let ctl = controller::of(s.dialect());
         let mut m = Modal::default();
         (ctl.init)(&mut m, s);
-        Interp { m, s: s.clone(), ctl }
+        Interp { m, s: s.clone(), ctl, increments: ctl.rules.increments(s) }
     }
 
     /// Reads one block: its events go to `events`, its findings to `diags`.
     pub fn step(&mut self, b: &Block, events: &mut Vec<Event>, diags: &mut Diagnostics) {
         let ctl = self.ctl;
-        let mut r = Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, events, diags };
+        let mut r =
+            Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, increments: self.increments, events, diags };
         block(&mut r, ctl, b);
     }
 
     /// Reading is over: the continuous thread and the threads being grouped end.
     pub fn finish(&mut self, events: &mut Vec<Event>, diags: &mut Diagnostics) {
         let ctl = self.ctl;
-        let mut r = Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, events, diags };
+        let mut r =
+            Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, increments: self.increments, events, diags };
         r.close();
         if let Some(finish) = ctl.finish {
             finish(&mut r);
@@ -343,6 +347,9 @@ fn set_coordinates(r: &mut Reader, b: &Block, w: &Word) {
         let d = r.length(wd);
         let p = r.current(wd.span);
         r.m.pos.p.z = p.z + d;
+    }
+    if let Some(s) = b.get(b'S') {
+        r.m.clamp = Some(s.value()).filter(|v| v.is_finite() && *v > 0.0);
     }
 }
 

@@ -4,7 +4,11 @@
 //! Data flows one way: text → [`block`]s ([`lexer`]) → events ([`interp`],
 //! reading each block through its [`controller`]) → motions and threads with
 //! the motions of each pass ([`assemble`]: [`group`], [`cycle`]) → depths
-//! and advice ([`advice`]) → [`plan::Plan`] → scenes ([`diagram`]). The core is free of wasm and the DOM; the
+//! and advice ([`advice`]) → shop-floor figures and checks ([`shop`]) →
+//! [`plan::Plan`] → scenes ([`diagram`]). What only a browser needs (UTF-16
+//! positions, scenes packed into typed arrays, content keys as JavaScript
+//! numbers, sessions) is in [`wasm`], whose bindings are compiled for wasm32
+//! only. The core is free of wasm and the DOM; the
 //! browser binding lives in `wasm` and is compiled only for wasm32.
 //!
 //! ```
@@ -25,9 +29,11 @@ pub mod diagram;
 pub mod dialect;
 pub mod event;
 pub mod expand;
+pub mod figures;
 pub mod gcode;
 pub mod geom;
 pub mod group;
+pub mod hash;
 pub mod interp;
 pub mod lexer;
 pub mod motion;
@@ -35,12 +41,12 @@ pub mod num;
 pub mod plan;
 pub mod planner;
 pub mod settings;
+pub mod shop;
 pub mod span;
 pub mod standard;
 pub mod state;
 pub mod svg;
 pub mod thread;
-#[cfg(target_arch = "wasm32")]
 pub mod wasm;
 pub mod wizard;
 

@@ -4,7 +4,8 @@
 //! Reading a program is a pipeline: the lexer gives blocks, the interpreter
 //! turns each block into events ([`crate::interp`]), the assembler turns
 //! events into motions and threads ([`crate::assemble`]), and the advice
-//! step finishes the threads ([`crate::advice`]).
+//! step finishes the threads ([`crate::advice`]) and adds the shop-floor
+//! figures and checks ([`crate::shop`]).
 
 use serde::Serialize;
 
@@ -16,6 +17,7 @@ use crate::event::Event;
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
 use crate::motion::Move;
+use crate::num::ser_round_opt;
 use crate::settings::{P, Settings};
 use crate::span::{LineIndex, Span};
 use crate::state::Modal;
@@ -44,6 +46,10 @@ pub struct Plan {
     pub moves: Vec<Move>,
     /// Every thread with its passes.
     pub threads: Vec<Thread>,
+    /// Threading time of the whole program, seconds: the sum of the
+    /// threads' `time_s`; `None` when a thread's time is not known (no S).
+    #[serde(serialize_with = "ser_round_opt")]
+    pub time_s: Option<f64>,
 }
 
 impl Plan {
@@ -68,7 +74,7 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
     let mut r = Reading::new(settings, text.len());
     let starts = match lexer_for(text, settings, &mut r.diags) {
         Some(mut lexer) => {
-            r.run(&mut lexer, usize::MAX, |_, _, _| {});
+            r.run(&mut lexer, usize::MAX, |_, _, _| true);
             lexer.take_line_starts()
         }
         None => Vec::new(),
@@ -98,6 +104,40 @@ impl Snapshot {
     /// How many threads were complete.
     pub fn threads(&self) -> usize {
         self.plan.threads
+    }
+
+    /// How many motions there were.
+    pub fn moves(&self) -> usize {
+        self.plan.moves
+    }
+
+    /// How many diagnostics were kept.
+    pub fn diagnostics(&self) -> usize {
+        self.diags.0
+    }
+
+    /// Whether diagnostics had been dropped over the limit.
+    pub fn dropped(&self) -> bool {
+        self.diags.1 > 0
+    }
+
+    /// The snapshot as reached in a text `bytes` longer before it, with
+    /// `moves`, `threads` and `diags` more motions, threads and diagnostics.
+    pub fn shifted(&self, moves: isize, threads: isize, diags: isize, bytes: isize) -> Snapshot {
+        let mut modal = self.modal.clone();
+        // The one byte position the modal state holds (where an end-of-program finding goes).
+        modal.last_span = modal.last_span.shifted(bytes);
+        Snapshot {
+            modal,
+            plan: self.plan.shifted(moves, threads, bytes),
+            diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|s| s.shifted(bytes))),
+        }
+    }
+
+    /// Whether reading goes on from here exactly as from `other` (the same
+    /// modal and grouping state, whatever the outputs before it).
+    pub fn same_state(&self, other: &Snapshot) -> bool {
+        self.modal == other.modal && self.plan.group == other.plan.group
     }
 }
 
@@ -134,13 +174,20 @@ impl Reading {
     /// Reads blocks from `lexer` to the end of the program, calling
     /// `checkpoint(offset, line, reading)` before every `every`-th block
     /// (the byte offset and 1-based line of the block about to be read),
-    /// then closes what is still open.
-    pub fn run(&mut self, lexer: &mut Lexer, every: usize, mut checkpoint: impl FnMut(usize, u32, &Reading)) {
+    /// then closes what is still open. A checkpoint that answers `false`
+    /// stops the reading there, nothing closed (the caller keeps the rest
+    /// of an earlier reading); `run` then answers `false`.
+    pub fn run(
+        &mut self,
+        lexer: &mut Lexer,
+        every: usize,
+        mut checkpoint: impl FnMut(usize, u32, &Reading) -> bool,
+    ) -> bool {
         let mut block = Block::default();
         let mut count = 0usize;
         loop {
-            if count > 0 && count % every == 0 {
-                checkpoint(lexer.offset(), lexer.line() + 1, self);
+            if count > 0 && count % every == 0 && !checkpoint(lexer.offset(), lexer.line() + 1, self) {
+                return false;
             }
             if !lexer.next_block(&mut block, &mut self.diags) {
                 break;
@@ -153,6 +200,7 @@ impl Reading {
         }
         self.it.finish(&mut self.events, &mut self.diags);
         self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
+        true
     }
 
     /// The outputs, the reading done.
@@ -192,14 +240,37 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 }
 
 /// Turns the outputs into a plan: depths and advice of the block-by-block
-/// threads, diagnostics positioned and sorted.
+/// threads, the shop-floor figures and checks of every thread, diagnostics
+/// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
     let inch = out.inch;
     finish_with(text, settings, out, starts, |threads, moves, spans, limit| {
         let mut advice = Diagnostics::with_limit(limit);
-        crate::advice::finish_manual(threads, moves, settings, inch, &mut advice, spans);
+        for i in 0..threads.len() {
+            finish_thread(threads, i, moves, settings, inch, text, &mut advice, spans);
+        }
         advice
     })
+}
+
+/// Finishes thread `i`: its depths and textbook advice, then its
+/// shop-floor figures and checks. A function of the thread, the motions
+/// before it, the settings and the program text up to it, so a thread
+/// finished once stays finished while later text changes.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn finish_thread(
+    threads: &mut [Thread],
+    i: usize,
+    moves: &[Move],
+    settings: &Settings,
+    inch: bool,
+    text: &str,
+    diags: &mut Diagnostics,
+    spans: &dyn Fn(u32) -> Span,
+) {
+    crate::advice::finish_thread(threads, i, moves, settings, inch, diags, spans);
+    let ctx = crate::shop::Context { moves, settings, inch, text, spans };
+    crate::shop::finish_thread(threads, i, &ctx, diags);
 }
 
 /// [`finish`] with the advice step given by the caller: `advice(threads,
@@ -221,7 +292,15 @@ pub(crate) fn finish_with(
     let found = advice(&mut threads, &moves, &spans, diags.limit());
     diags.absorb(found);
     let diagnostics = diags.finish(text, &index);
-    Plan { dialect: settings.dialect(), units: if inch { Units::Inch } else { Units::Mm }, diagnostics, moves, threads }
+    let time_s = crate::shop::total_time(&threads);
+    Plan {
+        dialect: settings.dialect(),
+        units: if inch { Units::Inch } else { Units::Mm },
+        diagnostics,
+        moves,
+        threads,
+        time_s,
+    }
 }
 
 /// Plans `text` with the default settings of `dialect`.

@@ -5,16 +5,25 @@
 //! interpreter every [`CHECKPOINT_EVERY`] blocks. When the text changes, it
 //! finds the first changed byte, goes back to the last snapshot before it,
 //! cuts the motions, threads and diagnostics back to what they were there,
-//! and reads on from that block. Depths and advice of the block-by-block
-//! threads are recomputed over the whole plan (they are cheap and depend on
-//! the outline before each thread). The result is the plan a full re-plan
-//! would give; the tests check that for random edits.
+//! and reads on from that block.
+//!
+//! It also stops early: when the edit leaves the number of lines as it was,
+//! the first snapshot past the edited bytes whose modal and grouping state
+//! equal the last reading's at the same line shows that reading on would
+//! repeat the last reading; the rest of it is kept, its motions' and
+//! diagnostics' byte spans and the motion indices moved by the edit's
+//! lengths. Depths, advice and shop-floor figures of the threads completed
+//! before the resume point are kept (with their diagnostics); the threads
+//! from there on are finished anew (they depend on the outline before each
+//! thread). The result is the plan a full re-plan would give; the tests
+//! check that for random edits.
 
-use crate::advice::finish_thread;
 use crate::diagnostic::{Code, Diagnostics};
-use crate::plan::{Plan, Reading, Snapshot, finish, finish_with, lexer_for};
+use crate::motion::Move;
+use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
 use crate::span::Span;
+use crate::thread::Thread;
 
 /// Blocks between two snapshots.
 pub const CHECKPOINT_EVERY: usize = 256;
@@ -42,6 +51,27 @@ pub struct Planner {
     line_starts: Vec<u32>,
     plan: Option<Plan>,
     resumed_at: u32,
+    stopped_at: Option<u32>,
+}
+
+/// What the last reading had after the resume point, kept in case the new
+/// reading comes back to the same state (see the module documentation).
+struct Tail {
+    /// Checkpoints after the resume point.
+    checkpoints: Vec<Checkpoint>,
+    /// Motions, threads and diagnostics from the resume point on.
+    moves: Vec<Move>,
+    threads: Vec<Thread>,
+    diags: Vec<(Code, String, Span)>,
+    /// Their counts at the resume point.
+    at: (usize, usize, usize),
+    /// Every line start of the last text.
+    line_starts: Vec<u32>,
+    /// Where the bytes common to both texts' ends begin, in the new text.
+    common_from: usize,
+    /// New length minus old length.
+    delta: isize,
+    inch: bool,
 }
 
 impl Planner {
@@ -57,6 +87,7 @@ impl Planner {
             line_starts: Vec::new(),
             plan: None,
             resumed_at: 1,
+            stopped_at: None,
         }
     }
 
@@ -79,12 +110,19 @@ impl Planner {
         self.resumed_at
     }
 
+    /// The line where the last plan stopped reading because the rest was
+    /// the last reading's (none when it read to the end).
+    pub fn stopped_at(&self) -> Option<u32> {
+        self.stopped_at
+    }
+
     /// The last plan, if any.
     pub fn last(&self) -> Option<&Plan> {
         self.plan.as_ref()
     }
 
-    /// Plans `text`, reading only from the last checkpoint before the first change.
+    /// Plans `text`, reading only from the last checkpoint before the first
+    /// change, and only until the reading meets the last one again.
     pub fn plan(&mut self, text: &str) -> &Plan {
         let changed_at = first_difference(&self.text, text);
         let resume = match self.plan.as_ref() {
@@ -97,14 +135,17 @@ impl Planner {
             return self.plan.insert(finish(text, &self.settings, r.outputs(), Vec::new()));
         };
         let mut kept_threads = 0;
+        let mut tail = None;
+        self.stopped_at = None;
         match resume {
             Some(ci) => {
                 let old = self.plan.take().expect("a plan to resume");
                 r.asm.moves = old.moves;
                 r.asm.threads = old.threads;
                 r.diags = std::mem::take(&mut self.raw_diags);
-                self.checkpoints.truncate(ci + 1);
+                let later = self.checkpoints.split_off(ci + 1);
                 let cp = &self.checkpoints[ci];
+                tail = self.tail_of(text, changed_at, later, cp, &mut r, old.units == crate::plan::Units::Inch);
                 r.restore(&cp.snap);
                 kept_threads = cp.snap.threads();
                 lexer.seek(cp.offset, cp.line);
@@ -112,6 +153,16 @@ impl Planner {
                 self.resumed_at = cp.line;
             }
             None => {
+                // From the top; the last reading's tail may still be kept.
+                let top = Checkpoint { offset: 0, line: 1, snap: r.snapshot() };
+                if let Some(old) = self.plan.take() {
+                    r.asm.moves = old.moves;
+                    r.asm.threads = old.threads;
+                    r.diags = std::mem::take(&mut self.raw_diags);
+                    let later = std::mem::take(&mut self.checkpoints);
+                    tail = self.tail_of(text, changed_at, later, &top, &mut r, old.units == crate::plan::Units::Inch);
+                    r.restore(&top.snap);
+                }
                 self.checkpoints.clear();
                 self.line_starts.clear();
                 self.advice.clear();
@@ -119,13 +170,32 @@ impl Planner {
             }
         }
         let checkpoints = &mut self.checkpoints;
-        r.run(&mut lexer, CHECKPOINT_EVERY, |offset, line, r| {
-            checkpoints.push(Checkpoint { offset, line, snap: r.snapshot() });
+        let mut meet = None;
+        let read_all = r.run(&mut lexer, CHECKPOINT_EVERY, |offset, line, r| {
+            let snap = r.snapshot();
+            if let Some(t) = tail.as_ref().filter(|t| offset >= t.common_from) {
+                if let Some(k) = t.meets(offset, line, &snap) {
+                    meet = Some(k);
+                    return false;
+                }
+            }
+            checkpoints.push(Checkpoint { offset, line, snap });
+            true
         });
         self.line_starts.extend(lexer.take_line_starts());
+        let inch_now = r.it.m.inch;
+        if let (false, Some(k), Some(t)) = (read_all, meet, tail) {
+            self.stopped_at = Some(t.checkpoints[k].line);
+            self.splice(&mut r, t, k);
+        }
         self.text.clear();
         self.text.push_str(text);
-        let out = r.outputs();
+        let mut out = r.outputs();
+        if !read_all {
+            out.inch = self.inch;
+        } else {
+            out.inch = inch_now;
+        }
         self.raw_diags = out.diags.clone();
         let inch = out.inch;
         self.inch = inch;
@@ -138,7 +208,7 @@ impl Planner {
         let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
             for i in advice.len()..threads.len() {
                 let mut d = Diagnostics::with_limit(usize::MAX);
-                finish_thread(threads, i, moves, settings, inch, &mut d, spans);
+                finish_thread(threads, i, moves, settings, inch, text, &mut d, spans);
                 advice.push(d.into_items());
             }
             let mut all = Diagnostics::with_limit(usize::MAX);
@@ -150,7 +220,75 @@ impl Planner {
         self.plan.insert(plan)
     }
 
+    /// What of the last reading may be kept past the edit: its part after
+    /// checkpoint `cp`, when the edit keeps the number of lines and the last
+    /// reading neither dropped diagnostics nor stopped at the move limit.
+    fn tail_of(
+        &self,
+        text: &str,
+        changed_at: usize,
+        later: Vec<Checkpoint>,
+        cp: &Checkpoint,
+        r: &mut Reading,
+        inch: bool,
+    ) -> Option<Tail> {
+        let old = &self.text;
+        let common = common_suffix(old, text).min(old.len() - changed_at).min(text.len() - changed_at);
+        let (old_mid, new_mid) = (&old[changed_at..old.len() - common], &text[changed_at..text.len() - common]);
+        let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
+            && old_mid.matches('\r').count() == new_mid.matches('\r').count();
+        if !lines_kept || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
+            return None;
+        }
+        let at = (cp.snap.moves(), cp.snap.threads(), cp.snap.diagnostics());
+        Some(Tail {
+            checkpoints: later,
+            moves: r.asm.moves.split_off(at.0.min(r.asm.moves.len())),
+            threads: r.asm.threads.split_off(at.1.min(r.asm.threads.len())),
+            diags: r.diags.split_off(at.2),
+            at,
+            line_starts: self.line_starts.clone(),
+            common_from: text.len() - common,
+            delta: text.len() as isize - old.len() as isize,
+            inch,
+        })
+    }
+
+    /// Ends reading `r` with the last reading's tail from its checkpoint `k` on.
+    fn splice(&mut self, r: &mut Reading, mut t: Tail, k: usize) {
+        let cp = &t.checkpoints[k].snap;
+        let (dm, dt, dd) = (
+            r.asm.moves.len() as isize - cp.moves() as isize,
+            r.asm.threads.len() as isize - cp.threads() as isize,
+            r.diags.len() as isize - cp.diagnostics() as isize,
+        );
+        let (skip_m, skip_t, skip_d) = (cp.moves() - t.at.0, cp.threads() - t.at.1, cp.diagnostics() - t.at.2);
+        let bytes = t.delta;
+        for mut m in t.moves.drain(skip_m.min(t.moves.len())..) {
+            m.span = m.span.shifted(bytes);
+            r.asm.moves.push(m);
+        }
+        for mut th in t.threads.drain(skip_t.min(t.threads.len())..) {
+            th.first_move = th.first_move.saturating_add_signed(dm);
+            for p in &mut th.passes {
+                p.moves = p.moves.shifted(dm);
+            }
+            r.asm.threads.push(th);
+        }
+        let diags = t.diags.split_off(skip_d.min(t.diags.len()));
+        r.diags.extend_shifted(diags, bytes);
+        let line = t.checkpoints[k].line;
+        for c in t.checkpoints.drain(k..) {
+            let snap = c.snap.shifted(dm, dt, dd, bytes);
+            self.checkpoints.push(Checkpoint { offset: c.offset.saturating_add_signed(bytes), line: c.line, snap });
+        }
+        self.line_starts.truncate(line as usize - 1);
+        let from = (line as usize - 1).min(t.line_starts.len());
+        self.line_starts.extend(t.line_starts[from..].iter().map(|&s| (s as isize + bytes) as u32));
+        self.inch = t.inch;
+    }
     fn reset(&mut self, text: &str) {
+        self.stopped_at = None;
         self.checkpoints.clear();
         self.line_starts.clear();
         self.text.clear();
@@ -159,6 +297,31 @@ impl Planner {
         self.advice.clear();
         self.resumed_at = 1;
     }
+}
+
+impl Tail {
+    /// The index of the last reading's checkpoint that the new reading meets
+    /// at byte `offset`, line `line` with state `snap`: at the same line, the
+    /// same place in the common end of both texts, and the same state.
+    fn meets(&self, offset: usize, line: u32, snap: &Snapshot) -> Option<usize> {
+        let k = self.checkpoints.iter().position(|c| c.line == line)?;
+        let c = &self.checkpoints[k];
+        let same_place = c.offset as isize + self.delta == offset as isize;
+        (same_place
+            && !snap.dropped()
+            && snap.same_state(&c.snap.shifted(
+                snap.moves() as isize - c.snap.moves() as isize,
+                snap.threads() as isize - c.snap.threads() as isize,
+                0,
+                self.delta,
+            )))
+        .then_some(k)
+    }
+}
+
+/// How many bytes `a` and `b` have in common at their ends.
+fn common_suffix(a: &str, b: &str) -> usize {
+    a.bytes().rev().zip(b.bytes().rev()).take_while(|(x, y)| x == y).count()
 }
 
 /// Byte offset of the first difference between `a` and `b` (the shorter
@@ -212,5 +375,34 @@ mod tests {
         let inc = p.plan(&text).clone();
         assert_eq!(p.resumed_at(), 1);
         assert_eq!(inc, crate::plan(&text, &s));
+    }
+
+    /// An edit near the top that keeps the number of lines reads only up to
+    /// the first checkpoint past it where the state is the last reading's,
+    /// keeps the rest, and still gives the full plan.
+    #[test]
+    fn early_edit_keeps_the_unchanged_tail() {
+        let s = Settings::new(Dialect::Gsk980tdc);
+        let pass = "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n";
+        let text = format!("G50 X100 Z100 (top)\n{}", pass.repeat(300));
+        let mut p = Planner::new(s.clone());
+        p.plan(&text);
+        // A longer comment on line 1: the same lines, every byte after it moved.
+        let edited = text.replacen("(top)", "(the top of the program)", 1);
+        let inc = p.plan(&edited).clone();
+        assert_eq!(p.resumed_at(), 1);
+        assert_eq!(p.stopped_at(), Some(257));
+        assert_eq!(inc, crate::plan(&edited, &s));
+        // The next edit resumes from the kept checkpoints, moved with the text.
+        let again = edited.replacen("X47.1", "X47.2", 1);
+        let inc = p.plan(&again).clone();
+        assert_eq!(inc, crate::plan(&again, &s));
+        // A digit in the first pass changes its depth but not what follows.
+        let late = again.replacen("Z70\nX47.1", "Z70\nX47.15", 120);
+        assert_eq!(p.plan(&late).clone(), crate::plan(&late, &s));
+        // An edit that adds a line reads to the end.
+        let longer = late.replacen("(the top", "\n(the top", 1);
+        assert_eq!(p.plan(&longer).clone(), crate::plan(&longer, &s));
+        assert_eq!(p.stopped_at(), None);
     }
 }

@@ -232,6 +232,46 @@ params! {
     GroupMaxInfeed: d("group.max_infeed", ALL, Kind::Float, 1.0, (0.0, 100.0), "leads",
         "Two consecutive G32 cuts belong to the same thread when their starts differ by at most this many leads (radially) and their lengths overlap.",
         "相邻两次 G32 切削起点径向差不超过此值(导程)时视为同一螺纹。");
+    // ---- machine and tool ----
+    RapidX: d("machine.rapid_x", ALL, Kind::Float, 5000.0, (1.0, 1.0e6), "mm/min",
+        "Rapid traverse rate of the X axis (the cross slide's own travel, a radius), for the approach, retract and return time of a thread. The controller keeps it per axis (Fanuc 0i: parameter 1420 of X); set the machine's value.",
+        "X 轴快速移动速度(半径方向)，用于计算螺纹进刀、退刀、返回时间。");
+    RapidZ: d("machine.rapid_z", ALL, Kind::Float, 10000.0, (1.0, 1.0e6), "mm/min",
+        "Rapid traverse rate of the Z axis, for the approach, retract and return time of a thread (Fanuc 0i: parameter 1420 of Z); set the machine's value.",
+        "Z 轴快速移动速度，用于计算螺纹进刀、退刀、返回时间。");
+    MaxThreadFeed: d("machine.max_thread_feed", ALL, Kind::Float, 8000.0, (1.0, 1.0e6), "mm/min",
+        "Highest thread feed lead × S (long axis) the machine cuts at. Beyond it many controls clamp the feed without an alarm and the lead comes out wrong: a thread-feed-limit warning gives the numbers and the highest S that fits. Set the machine's value (its maximum cutting feed).",
+        "机床允许的最高螺纹进给速度(导程 × 转速)。超过时给出警告及可用的最高转速。");
+    MaxRpm: d("machine.max_rpm", ALL, Kind::Float, 4000.0, (1.0, 1.0e6), "rev/min",
+        "Highest spindle speed of the machine: a thread cut at a higher S gets a spindle-limit warning.",
+        "机床主轴最高转速：螺纹切削转速超过时警告。");
+    Delta1Divisor: d("machine.delta1_divisor", ALL, Kind::Float, 500.0, (1.0, 1.0e6), "",
+        "Lead-in the axis needs to reach the thread feed: δ1 ≈ n·L / this (n rev/min, L lead mm; 500 from the axis time constant as Fanuc states it). The programmed lead-in is checked against it (delta1-speed).",
+        "升速进刀段：δ1 ≈ n·L / 此值(n 转速，L 导程 mm)。");
+    Delta2Divisor: d("machine.delta2_divisor", ALL, Kind::Float, 1800.0, (1.0, 1.0e6), "",
+        "Run-out the axis needs to stop from the thread feed: δ2 ≈ n·L / this (1800). The programmed run-out is checked against it (delta2-speed).",
+        "降速退刀段：δ2 ≈ n·L / 此值。");
+    AssumedLeadIn: d("shop.assumed_lead_in", ALL, Kind::Float, 5.0, (0.0, 1000.0), "mm",
+        "Lead-in δ1 assumed when the program does not turn the work, so the thread's start on the work is unknown: the textbook's O1006 value (δ1 = 5 mm, seed 004). 0 = do not check δ1 without a turned outline.",
+        "程序未车削外圆时假定的升速进刀段 δ1(教材 O1006：5 mm)。0 表示不检查。");
+    AssumedRunOut: d("shop.assumed_run_out", ALL, Kind::Float, 2.0, (0.0, 1000.0), "mm",
+        "Run-out δ2 assumed when the program does not turn the work: the textbook's O1006 value (δ2 = 2 mm). 0 = do not check δ2 without a turned outline.",
+        "程序未车削外圆时假定的降速退刀段 δ2(教材 O1006：2 mm)。0 表示不检查。");
+    NoseRadius: d("tool.nose_radius", ALL, Kind::Float, 0.0, (0.0, 10.0), "mm",
+        "Nose radius of the threading tool, for the pitch diameter the program cuts: d2 = X − 2r·(1/sin(a/2) − 1) + P/(2·tan(a/2)). Default 0: a sharp V (the textbook's tool); an ISO full-profile insert for pitch P has about 0.125·P.",
+        "螺纹刀刀尖圆弧半径，用于计算中径。默认 0(尖刀)。");
+    ChipFirstRatio: d("chip.first_pass_ratio", ALL, Kind::Float, 1.5, (0.0, 100.0), "× even share",
+        "A first pass whose chip area is more than this many times the share of a constant-area schedule (total area / passes) gets a chip-heavy-first warning. 0 = not checked.",
+        "首刀切削面积超过等面积分配的此倍数时警告。0 表示不检查。");
+    ChipMaxArea: d("tool.max_chip_area", ALL, Kind::Float, 0.0, (0.0, 1000.0), "mm²",
+        "Largest chip area the tool should take in one pass (from the insert maker); a heavier pass gets a chip-heavy-first warning. 0 = not checked.",
+        "刀片单次允许的最大切削面积(mm²)。0 表示不检查。");
+    ChipMinInfeed: d("chip.min_infeed", ALL, Kind::Float, 0.05, (0.0, 10.0), "mm",
+        "A pass that deepens the thread by less than this (radial) rubs rather than cuts: chip-thin advice. Spring passes are meant to remove nothing and are not flagged.",
+        "单次径向切深小于此值时提示(光刀除外)。");
+    NptTaperTolerance: d("gauge.npt_taper_tolerance", ALL, Kind::Float, 0.001, (0.0, 1.0), "on diameter",
+        "How far the cut taper (on diameter, per unit length) of an NPT thread may be from 1/16 = 0.0625 before the thread check fails.",
+        "NPT 螺纹锥度(直径)与 1/16 的允许偏差。");
     // ---- limits ----
     LimitPasses: d("limits.passes_per_start", ALL, Kind::Int, 999.0, (1.0, 1.0e6), "passes",
         "Most passes one start of a cycle may plan before an alarm.",
@@ -256,11 +296,40 @@ params! {
         "最多报告的诊断数。");
 }
 
+/// Definition of a text setting (a value that is not a number).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct TextDef {
+    /// Canonical name.
+    pub name: &'static str,
+    /// Longest value accepted, in bytes.
+    pub max_len: usize,
+    /// What it does (English).
+    pub help: &'static str,
+    /// What it does (Chinese).
+    pub help_zh: &'static str,
+}
+
+/// Identifies a text setting.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum T {
+    /// `thread.designation`.
+    Designation,
+}
+
+/// The text settings, indexed by `T as usize`.
+pub const TEXT_DEFS: &[TextDef] = &[TextDef {
+    name: "thread.designation",
+    max_len: 200,
+    help: "Thread designation for the thread check when no comment names one before a thread, e.g. M48x2-6g, M30xPh6P2-6H, 1/4-20 UNC-2A, 1/2-14 NPT. Empty: only comments are read.",
+    help_zh: "螺纹标记(如 M48x2-6g)，程序注释中没有时用于螺纹检验。",
+}];
+
 /// Values of every setting for one dialect.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
     dialect: Dialect,
     values: Vec<f64>,
+    texts: Vec<String>,
 }
 
 /// Why a `NAME=VALUE` assignment was refused.
@@ -315,7 +384,26 @@ fn normalize_name(name: &str) -> String {
 impl Settings {
     /// The defaults of `dialect`.
     pub fn new(dialect: Dialect) -> Settings {
-        Settings { dialect, values: DEFS.iter().map(|d| d.default).collect() }
+        Settings {
+            dialect,
+            values: DEFS.iter().map(|d| d.default).collect(),
+            texts: vec![String::new(); TEXT_DEFS.len()],
+        }
+    }
+
+    /// Value of a text setting (empty when not set).
+    pub fn text(&self, t: T) -> &str {
+        &self.texts[t as usize]
+    }
+
+    /// Sets a text setting directly (trimmed; no length check).
+    pub fn set_text(&mut self, t: T, v: &str) {
+        self.texts[t as usize] = v.trim().to_string();
+    }
+
+    /// The text settings with their current values.
+    pub fn text_entries(&self) -> impl Iterator<Item = (&'static TextDef, &str)> + '_ {
+        TEXT_DEFS.iter().zip(&self.texts).map(|(d, v)| (d, v.as_str()))
     }
 
     /// The dialect these settings are for.
@@ -357,6 +445,15 @@ impl Settings {
 
     /// Sets the named setting from its text value, checking kind, range and dialect.
     pub fn set_named(&mut self, name: &str, value: &str) -> Result<(), SettingError> {
+        let lower = name.trim().to_ascii_lowercase();
+        if let Some(i) = TEXT_DEFS.iter().position(|d| d.name == lower) {
+            let value = value.trim();
+            if value.len() > TEXT_DEFS[i].max_len {
+                return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
+            }
+            self.texts[i] = value.to_string();
+            return Ok(());
+        }
         let (p, def) = Settings::find(name).ok_or_else(|| SettingError::Unknown(name.trim().into()))?;
         if !def.dialects.is_empty() && !def.dialects.contains(&self.dialect) {
             return Err(SettingError::WrongDialect(def.name.into(), self.dialect));
@@ -457,5 +554,18 @@ mod tests {
         assert!(matches!(s.assign("nonsense=1"), Err(SettingError::Unknown(..))));
         assert!(matches!(s.assign("No.058"), Err(SettingError::Syntax(..))));
         assert!(matches!(s.assign("No.107=NaN"), Err(SettingError::BadValue(..))));
+    }
+
+    #[test]
+    fn text_settings_take_any_text_up_to_their_length() {
+        let mut s = Settings::new(Dialect::Fanuc0i);
+        assert_eq!(s.text(T::Designation), "");
+        s.assign("thread.designation= M48x2-6g ").unwrap();
+        assert_eq!(s.text(T::Designation), "M48x2-6g");
+        s.assign("Thread.Designation=1/4-20 UNC-2A").unwrap();
+        assert_eq!(s.text(T::Designation), "1/4-20 UNC-2A");
+        let long = format!("thread.designation={}", "x".repeat(201));
+        assert!(matches!(s.assign(&long), Err(SettingError::BadValue(..))));
+        assert_eq!(s.text_entries().count(), 1);
     }
 }

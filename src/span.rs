@@ -17,6 +17,11 @@ impl Span {
         Span { start: start as u32, end: end as u32 }
     }
 
+    /// The span `d` bytes later (earlier for a negative `d`).
+    pub fn shifted(self, d: isize) -> Span {
+        Span { start: (self.start as isize + d).max(0) as u32, end: (self.end as isize + d).max(0) as u32 }
+    }
+
     /// The smallest span covering both.
     pub fn cover(self, other: Span) -> Span {
         Span { start: self.start.min(other.start), end: self.end.max(other.end) }

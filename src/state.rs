@@ -194,8 +194,13 @@ pub struct Modal {
     pub spindle: Option<f64>,
     /// G96 constant surface speed in force.
     pub css: bool,
+    /// Spindle clamp of the last G50 S (rev/min).
+    pub clamp: Option<f64>,
     /// A continuous thread is being cut: the next thread block joins it.
     pub chain: bool,
+    /// Thread pieces or G92 passes were given since the last `Close`: the
+    /// threads being grouped may not be complete.
+    pub grouping: bool,
     /// The cycles' memory between blocks.
     pub cycle: CycleMemory,
     /// Parameters the program has rewritten (a G76 first block), by id.
@@ -245,7 +250,9 @@ impl Default for Modal {
             jk: (None, None),
             spindle: None,
             css: false,
+            clamp: None,
             chain: false,
+            grouping: false,
             cycle: CycleMemory::default(),
             params: Vec::new(),
             tail: Tail::Standard,

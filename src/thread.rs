@@ -132,6 +132,20 @@ fn ser_range<S: serde::Serializer>(r: &Range<usize>, s: S) -> Result<S::Ok, S::E
     [r.start, r.end].serialize(s)
 }
 
+/// The spindle as the program left it when a pass was cut: the modal S and
+/// G96, and the G50 S clamp.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Spindle {
+    /// S in force: rev/min under G97, surface speed (m/min, ft/min after G20) under G96; `None` before any S.
+    #[serde(serialize_with = "ser_round_opt")]
+    pub s: Option<f64>,
+    /// G96 (constant surface speed) in force.
+    pub css: bool,
+    /// Spindle clamp of the last G50 S (rev/min), if any.
+    #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
+    pub clamp: Option<f64>,
+}
+
 /// One spindle-synchronised pass of a thread.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Pass {
@@ -173,6 +187,8 @@ pub struct Pass {
     pub area: Option<f64>,
     /// The pass's motions in the plan's `moves`.
     pub moves: PassMoves,
+    /// The spindle when the pass was cut.
+    pub spindle: Spindle,
 }
 
 /// A thread: every pass that cuts the same helix (or helices, when multi-start).
@@ -222,6 +238,9 @@ pub struct Thread {
     /// Index in the plan's moves of the thread's first motion.
     #[serde(skip)]
     pub first_move: usize,
+    /// Shop-floor figures: cycle time, speed, helix angle, chip load, the thread check.
+    #[serde(flatten)]
+    pub shop: crate::figures::Shop,
 }
 
 /// Area a V tool of included angle `angle_deg` removes between depths `h0`

@@ -4,12 +4,11 @@
 //! → a program that plans without alarms and cuts the standard's depth.
 //!
 //! The depth: the last pass puts the pitch diameter in the middle of the
-//! class tolerance (the basic pitch diameter without a class) with a tool
-//! whose nose has the standard's root radius, H/6 = 0.144·P for an external
-//! thread, and a flat of H/8 for an internal one: the final diameter is
-//! d2 − 0.57735·P (external; ISO d3 for a basic thread) or D2 + 0.649519·P
-//! (internal; D). The crest is the middle of the major (external) or minor
-//! (internal) diameter limits. NPT is cut as a 1:16 taper to its
+//! class tolerance (the basic pitch diameter without a class) with a 60°
+//! tool of nose radius r (reference §9: d2 = X − 2r + 0.866025·P): the final
+//! diameter is d2 − 0.866025·P + 2r external, D2 + 0.866025·P − 2r internal
+//! (with r = H/6 = 0.144·P an external thread ends at ISO's d3). The crest is
+//! the middle of the major (external) or minor (internal) diameter limits. NPT is cut as a 1:16 taper to its
 //! truncated height 0.8·P from the small end at the start Z. Infeeds: table
 //! 4-3 of the textbook scaled to the depth where it lists the pitch, else
 //! constant chip area in 2·P + 1 passes; the cycles get their first depth
@@ -100,6 +99,8 @@ pub struct Request {
     pub end_z: Option<f64>,
     /// Thread length, when no end Z is given.
     pub length: Option<f64>,
+    /// Nose radius of the threading tool (mm; 0: sharp, as the shop check's `tool.nose_radius`).
+    pub nose_radius: f64,
     /// Highest spindle speed, rev/min.
     pub max_rpm: f64,
     /// Highest thread feed (lead × speed), mm/min.
@@ -121,6 +122,7 @@ impl Default for Request {
             start_z: 0.0,
             end_z: None,
             length: None,
+            nose_radius: 0.0,
             max_rpm: 1000.0,
             max_feed: 3000.0,
             dialect: Dialect::Gsk980tdc,
@@ -224,7 +226,8 @@ fn thread(r: &Request, notes: &mut Vec<String>) -> Result<Thread, String> {
         }
         // A basic 60° thread: d2 = d − 0.649519·P.
         let d2 = d - 0.649_519 * p;
-        let (crest, root) = if internal { (d - 1.082_532 * p, d2 + 0.649_519 * p) } else { (d, d2 - 0.577_35 * p) };
+        let (crest, root) =
+            if internal { (d - 1.082_532 * p, last_pass(r, d2, p, true)) } else { (d, last_pass(r, d2, p, false)) };
         notes.push("no designation: a basic 60° profile (ISO 68-1) without a tolerance class".into());
         let side = if internal { "internal" } else { "external" };
         let title = format!("D{} lead {} {side}", fmt(d), fmt(lead));
@@ -251,15 +254,23 @@ fn thread(r: &Request, notes: &mut Vec<String>) -> Result<Thread, String> {
         );
         let (major, minor) = (t.e0 + t.height, t.e0 - t.height);
         if internal { (minor, major, t.taper_on_diameter) } else { (major, minor, t.taper_on_diameter) }
-    } else if internal {
-        notes.push("internal: the last pass at D2 + 0.649519·P, cut with a tool flat of H/8 = 0.108·P".into());
-        (mid(m.minor, m.basic_minor), mid(m.pitch, m.basic_pitch) + 0.649_519 * p, 0.0)
     } else {
-        notes.push("external: the last pass at d2 − 0.57735·P, cut with a nose radius of H/6 = 0.144·P".into());
-        (mid(m.major, m.basic_major), mid(m.pitch, m.basic_pitch) - 0.577_35 * p, 0.0)
+        notes.push(format!(
+            "the last pass puts the pitch diameter in the middle of its tolerance with a 60° tool of nose radius {} (d2 = X ∓ 2r ± 0.866025·P)",
+            fmt(r.nose_radius)
+        ));
+        let crest = if internal { mid(m.minor, m.basic_minor) } else { mid(m.major, m.basic_major) };
+        (crest, last_pass(r, mid(m.pitch, m.basic_pitch), p, internal), 0.0)
     };
     let side = if internal { "internal" } else { "external" };
     Ok(Thread { title: format!("{} {side}", des.text.trim()), internal, lead: des.lead_mm, starts, crest, root, taper })
+}
+
+/// The diameter of the last pass that cuts the pitch diameter `d2` with the
+/// request's 60° tool (reference §9: d2 = X − 2r(1/sin 30° − 1) + P/(2·tan 30°)).
+fn last_pass(r: &Request, d2: f64, p: f64, internal: bool) -> f64 {
+    let v = 0.866_025_403_784_438_6 * p - 2.0 * r.nose_radius.max(0.0);
+    if internal { d2 + v } else { d2 - v }
 }
 
 /// The pass depths: table 4-3 scaled to `height` where it lists `pitch`,
@@ -297,7 +308,10 @@ fn spec(r: &Request) -> Result<(Spec, Vec<String>), String> {
     if !(height > 0.0 && height.is_finite() && t.lead.is_finite()) {
         return Err("the thread has no depth".into());
     }
-    let rpm = r.max_rpm.min(r.max_feed / t.lead).floor();
+    // The textbook's O1006 clearances, δ1 = 5 mm before the work and δ2 = 2 mm
+    // past the end (a relief groove), must cover the acceleration zones
+    // n·L/500 and n·L/1800: the speed is kept within them.
+    let rpm = r.max_rpm.min(r.max_feed / t.lead).min(500.0 * 5.0 / t.lead).min(1800.0 * 2.0 / t.lead).floor();
     if rpm.is_nan() || rpm < 1.0 {
         return Err(format!(
             "no spindle speed fits: the thread feed lead {} × 1 rev/min is over the machine's {} mm/min",
@@ -306,13 +320,13 @@ fn spec(r: &Request) -> Result<(Spec, Vec<String>), String> {
         ));
     }
     notes.push(format!(
-        "spindle S{} (machine limits {} rev/min, thread feed {} mm/min)",
+        "spindle S{}: within the machine's {} rev/min and {} mm/min of thread feed, with n·L/500 ≤ 5 mm of lead-in and n·L/1800 ≤ 2 mm of run-out past the end (leave a relief groove)",
         fmt(rpm),
         fmt(r.max_rpm),
         fmt(r.max_feed)
     ));
-    // Lead-in δ1: the textbook's 2–10 mm, at least two leads and n·L/500 (Fanuc's acceleration zone).
-    let delta1 = (3.0f64).max(2.0 * t.lead).max(rpm * t.lead / 500.0);
+    // Lead-in δ1: at least the textbook's 5 mm and two leads.
+    let delta1 = (5.0f64).max(2.0 * t.lead);
     let delta1 = (delta1 * 2.0).ceil() / 2.0;
     let sense = if z1 >= z0 { 1.0 } else { -1.0 };
     let za = z0 - sense * delta1;

@@ -60,6 +60,108 @@ const CASES: &[Case] = &[
         1,
         "2 starts",
     ),
+    // ---- shop floor ----
+    // Lead 6 at S3000: 18000 mm/min against machine.max_thread_feed 8000; 8000/6 = 1333.3 → S1333.
+    (Code::ThreadFeedLimit, G, &[], "S3000 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F6\nG00 X58\nZ70\n", 4, 1, "at most S1333"),
+    (
+        Code::SpindleLimit,
+        G,
+        &[],
+        "S5000 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F1\nG00 X58\nZ70\n",
+        4,
+        1,
+        "S5000 is above the machine's highest spindle speed of 4000",
+    ),
+    // G96 S150 at X47.1: 1000·150/(π·47.1) = 1013.7 rev/min.
+    (
+        Code::ThreadCss,
+        G,
+        &[],
+        "G96 S150 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n",
+        4,
+        1,
+        "1014 rev/min at X47.1",
+    ),
+    // S1500, lead 2: δ1 ≈ 1500·2/500 = 6 against the assumed 5 (O1006's lead-in).
+    (
+        Code::Delta1Speed,
+        G,
+        &[],
+        "S1500 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n",
+        3,
+        1,
+        "n·L/500 = 6 at S1500",
+    ),
+    // Work turned Z15…Z67, pass Z70 → Z13: δ2 = 2 against 2000·2/1800 = 2.2222.
+    (
+        Code::Delta2Speed,
+        G,
+        &[],
+        concat!("S2000 M03\n", "G00 X48 Z67\nG01 Z15 F0.2\nG00 X58 Z70\n", "X45.4\nG32 Z13 F2\nG00 X58\nZ70\n"),
+        5,
+        1,
+        "n·L/1800 = 2.2222",
+    ),
+    // Crest assumed at 45.4 + 2.6 = 48: depths 1.2 and 1.3, areas 1.44·t and 0.25·t against
+    // an even 1.69·t/2: 1.44/0.845 = 1.7041 > 1.5.
+    (
+        Code::ChipHeavyFirst,
+        G,
+        &[],
+        "G00 X58 Z70\nX45.6\nG32 Z13 F2\nG00 X58\nZ70\nX45.4\nG32 Z13\nG00 X58\nZ70\n",
+        2,
+        1,
+        "1.7041×",
+    ),
+    // 46 → 45.95: 0.025 radial, under chip.min_infeed 0.05.
+    (
+        Code::ChipThin,
+        G,
+        &[],
+        "G00 X58 Z70\nX46\nG32 Z13 F2\nG00 X58\nZ70\nX45.95\nG32 Z13\nG00 X58\nZ70\n",
+        6,
+        1,
+        "by only 0.025",
+    ),
+    // The second pass repeats the first at X46, short of full depth.
+    (
+        Code::ChipNone,
+        G,
+        &[],
+        "G00 X58 Z70\nX46\nG32 Z13 F2\nG00 X58\nZ70\nX46\nG32 Z13\nG00 X58\nZ70\nX45.4\nG32 Z13\nG00 X58\nZ70\n",
+        6,
+        1,
+        "pass 2 removes nothing",
+    ),
+    // d2 = 45.4 − 2·0.25 + 0.866025·2 = 46.6321 within 46.483 … 46.663.
+    (
+        Code::GaugeOk,
+        G,
+        &["tool.nose_radius=0.25"],
+        "(M48x2-6g)\nG00 X58 Z70\nX45.4\nG32 Z13 F2\nG00 X58\nZ70\n",
+        3,
+        1,
+        "pitch diameter 46.6321 (46.483 … 46.663, 6g): it gauges",
+    ),
+    // A sharp tool: d2 = 45.4 + 1.7321 = 47.1321 > 46.663.
+    (
+        Code::GaugeFail,
+        G,
+        &[],
+        "(M48x2-6g)\nG00 X58 Z70\nX45.4\nG32 Z13 F2\nG00 X58\nZ70\n",
+        3,
+        1,
+        "47.1321 is too large",
+    ),
+    (
+        Code::BadDesignation,
+        G,
+        &["thread.designation=M48x2-6k"],
+        "G00 X58 Z70\nX45.4\nG32 Z13 F2\nG00 X58\nZ70\n",
+        2,
+        1,
+        "is not a thread designation",
+    ),
     (Code::CrestAssumed, G, &[], include_str!("../examples/o1006.nc"), 5, 1, "crest assumed at 48"),
     (
         Code::DepthVsStandard,

@@ -116,6 +116,9 @@ struct GenerateArgs {
     /// Number of starts.
     #[arg(long)]
     starts: Option<u32>,
+    /// Nose radius of the threading tool (mm; 0 = sharp).
+    #[arg(long, default_value_t = 0.0)]
+    nose_radius: f64,
     /// Highest spindle speed (rev/min).
     #[arg(long, default_value_t = 1000.0)]
     max_rpm: f64,
@@ -154,6 +157,7 @@ fn generate(a: GenerateArgs) -> ExitCode {
         start_z: a.start_z,
         end_z: a.end_z,
         length: a.length,
+        nose_radius: a.nose_radius,
         max_rpm: a.max_rpm,
         max_feed: a.max_feed,
         dialect: a.dialect,
@@ -216,6 +220,9 @@ fn main() -> ExitCode {
                     _ => fmt(v),
                 };
                 out += &format!("{:<24} {:<10} {:<12} {}\n", def.name, value, def.unit, def.help);
+            }
+            for (def, v) in s.text_entries() {
+                out += &format!("{:<24} {:<10} {:<12} {}\n", def.name, format!("'{v}'"), "text", def.help);
             }
             emit(&out);
             ExitCode::SUCCESS
@@ -292,13 +299,99 @@ fn emit(text: &str) {
     let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), text.as_bytes());
 }
 
+/// The shop-floor lines of one thread: time, speed, clearances, helix angle, the thread check.
+fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
+    use std::fmt::Write;
+    let s = &t.shop;
+    let u = if inch { "in" } else { "mm" };
+    let opt = |v: Option<f64>| v.map_or_else(|| "?".to_string(), fmt);
+    match (s.cut_time_s, s.time_s, s.rpm) {
+        (Some(cut), Some(total), Some(n)) => {
+            let _ = writeln!(
+                out,
+                "  time: {} s cutting, {} s with rapids; {} rev/min, thread feed {} {u}/min (machine.max_thread_feed allows up to S{})",
+                fmt(cut),
+                fmt(total),
+                fmt(n),
+                opt(s.thread_feed),
+                opt(s.rpm_limit)
+            );
+        }
+        _ => {
+            let _ = writeln!(out, "  time: not known (no spindle speed S before the thread)");
+        }
+    }
+    if let (Some(n1), Some(n2)) = (s.lead_in_needed, s.run_out_needed) {
+        let src = match s.clearance_source {
+            Some(screwcut::shop::ClearanceSource::Outline) => "measured",
+            Some(screwcut::shop::ClearanceSource::Assumed) => "assumed",
+            None => "not known",
+        };
+        let _ = writeln!(
+            out,
+            "  speed: lead-in δ1 {} ({src}), {} needed at this speed; run-out δ2 {}, {} needed",
+            opt(s.lead_in),
+            fmt(n1),
+            opt(s.run_out),
+            fmt(n2)
+        );
+    }
+    if let (Some(h), Some(d2)) = (s.helix_angle_deg, s.pitch_diameter) {
+        let _ = writeln!(out, "  helix angle {}° at pitch diameter {}", fmt(h), fmt(d2));
+    }
+    if let Some(g) = &s.gauge {
+        gauge_lines(out, g);
+    }
+}
+
+/// The thread check of one thread: verdict, numbers, the fix and the notes.
+fn gauge_lines(out: &mut String, g: &screwcut::shop::Gauge) {
+    use std::fmt::Write;
+    let opt = |v: Option<f64>| v.map_or_else(|| "?".to_string(), fmt);
+    let from = match g.line {
+        Some(l) => format!("comment on line {l}"),
+        None => "setting thread.designation".to_string(),
+    };
+    let _ =
+        writeln!(out, "  thread check {} ({from}): {}", g.designation, if g.ok { "gauges" } else { "WILL NOT GAUGE" });
+    if let Some(taper) = g.taper {
+        let _ = writeln!(
+            out,
+            "    pitch diameter {} at the small end; taper {} on diameter (1/16 = 0.0625); gauge plane at Z{}",
+            fmt(g.pitch_diameter),
+            fmt(taper),
+            opt(g.gauge_plane_z)
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
+            fmt(g.pitch_diameter),
+            opt(g.pitch_diameter_min),
+            opt(g.pitch_diameter_max),
+            opt(g.major_diameter),
+            opt(g.major_diameter_min),
+            opt(g.major_diameter_max),
+            opt(g.minor_diameter),
+            opt(g.minor_diameter_min),
+            opt(g.minor_diameter_max)
+        );
+    }
+    if let Some(dx) = g.delta_x {
+        let _ = writeln!(out, "    fix: ΔX {} on the final pass centres the pitch diameter", fmt(dx));
+    }
+    for n in &g.notes {
+        let _ = writeln!(out, "    note: {n}");
+    }
+}
+
 fn summary(plan: &Plan, file: &str) -> String {
     use std::fmt::Write;
     let mut out = String::new();
     let count = |s: Severity| plan.diagnostics.iter().filter(|d| d.severity == s).count();
     let _ = writeln!(
         out,
-        "{file}: {}, {}; {} thread(s), {} move(s); {} alarm(s), {} warning(s), {} note(s)",
+        "{file}: {}, {}; {} thread(s), {} move(s); {} alarm(s), {} warning(s), {} note(s){}",
         plan.dialect.name(),
         match plan.units {
             screwcut::plan::Units::Mm => "mm",
@@ -308,7 +401,8 @@ fn summary(plan: &Plan, file: &str) -> String {
         plan.moves.len(),
         count(Severity::Error),
         count(Severity::Warning),
-        count(Severity::Info)
+        count(Severity::Info),
+        plan.time_s.map(|t| format!("; threading time {} s", fmt(t))).unwrap_or_default()
     );
     for (i, t) in plan.threads.iter().enumerate() {
         let lower = |v: String| v.to_lowercase();
@@ -340,14 +434,16 @@ fn summary(plan: &Plan, file: &str) -> String {
         );
         let _ = writeln!(
             out,
-            "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7}  lines",
-            "start", "pass", "X from", "Z from", "X to", "Z to", "depth", "infeed", "role"
+            "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>8} {:>8} {:>7}  lines",
+            "start", "pass", "X from", "Z from", "X to", "Z to", "depth", "infeed", "role", "area", "even", "time s"
         );
-        for p in &t.passes {
+        for (k, p) in t.passes.iter().enumerate() {
             let lines = p.lines.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(",");
+            let chip = t.shop.chip.get(k);
+            let opt = |v: Option<f64>| v.map_or_else(|| "-".to_string(), fmt);
             let _ = writeln!(
                 out,
-                "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7}  {}",
+                "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>8} {:>8} {:>7}  {}",
                 p.start,
                 p.index,
                 fmt(p.from.x),
@@ -357,9 +453,13 @@ fn summary(plan: &Plan, file: &str) -> String {
                 fmt(p.depth),
                 fmt(p.infeed),
                 format!("{:?}", p.role).to_lowercase(),
+                opt(chip.and_then(|c| c.area)),
+                opt(chip.and_then(|c| c.even_area)),
+                opt(t.shop.pass_time_s.get(k).copied()),
                 lines
             );
         }
+        shop_section(&mut out, t, plan.units == screwcut::plan::Units::Inch);
     }
     if !plan.diagnostics.is_empty() {
         let _ = writeln!(out, "\ndiagnostics:");

@@ -123,7 +123,8 @@ pub fn piece(
     let approach = r.m.last_x.0;
     r.arrive(seg.runout_to.unwrap_or(end), true, true, b.line);
     r.m.chain = true;
-    r.emit(Event::Piece(Piece { source, lead, angle, seg, line: b.line, span: b.span, approach, tool_angle }));
+    let spindle = r.spindle();
+    r.emit(Event::Piece(Piece { source, lead, angle, seg, line: b.line, span: b.span, approach, tool_angle, spindle }));
 }
 
 /// Parameter No.107: when non-zero the short axis retracts at that speed

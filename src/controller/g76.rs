@@ -184,6 +184,7 @@ fn second(r: &mut Reader, t: &ThreadRules, b: &Block, g: &Word) {
         angle: f.a as f64,
         left_side: -1.0,
         anchor: Anchor::Start,
+        spindle: r.spindle(),
     };
     r.emit(Event::Multi(Box::new(multi)));
     r.arrive(start, true, true, b.line);

@@ -105,6 +105,17 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
         return r.diag(code, g_span, msg);
     }
     let pts = geom.pass(0.0, 0.0, 0.0);
-    r.emit(Event::G92(G92Pass { geom, pts, lead, angle, starts, line: b.line, span: b.span, tool_angle }));
+    let spindle = r.spindle();
+    r.emit(Event::G92(Box::new(G92Pass {
+        geom,
+        pts,
+        lead,
+        angle,
+        starts,
+        line: b.line,
+        span: b.span,
+        tool_angle,
+        spindle,
+    })));
     r.arrive(a, true, true, b.line);
 }

@@ -251,6 +251,7 @@ fn g78_second(r: &mut Reader, b: &Block, g: &Word) {
         // `flank.r1_side` places G78's "left" flank.
         left_side: if r.s.int(P::FlankR1Side) == 1 { 1.0 } else { -1.0 },
         anchor: if r.s.int(P::G78FlankAnchor) == 1 { Anchor::Thread } else { Anchor::Start },
+        spindle: r.spindle(),
     };
     r.emit(Event::Multi(Box::new(multi)));
     r.arrive(start, true, true, b.line);

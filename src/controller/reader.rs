@@ -58,10 +58,19 @@ pub struct Reader<'a> {
     pub s: &'a Settings,
     /// The controller's unit rules.
     pub rules: &'static Rules,
+    /// A length without a decimal point is in least input increments (the rules and settings, read once).
+    pub increments: bool,
     /// Events of the block.
     pub events: &'a mut Vec<Event>,
     /// Diagnostics.
     pub diags: &'a mut Diagnostics,
+}
+
+impl Rules {
+    /// Whether a length without a decimal point is in least input increments under settings `s`.
+    pub fn increments(&self, s: &Settings) -> bool {
+        self.increments_without_point.is_some_and(|dpi| !s.flag(dpi))
+    }
 }
 
 impl Reader<'_> {
@@ -75,8 +84,16 @@ impl Reader<'_> {
         self.m.param(self.s, p)
     }
 
+    /// The spindle in force (S, G96, the G50 S clamp), for the thread events.
+    pub fn spindle(&self) -> crate::thread::Spindle {
+        crate::thread::Spindle { s: self.m.spindle, css: self.m.css, clamp: self.m.clamp }
+    }
+
     /// Gives an event.
     pub fn emit(&mut self, e: Event) {
+        if matches!(e, Event::Piece(_) | Event::G92(_)) {
+            self.m.grouping = true;
+        }
         self.events.push(e);
     }
 
@@ -88,10 +105,13 @@ impl Reader<'_> {
         }
     }
 
-    /// Ends the continuous thread and closes the threads being grouped.
+    /// Ends the continuous thread and closes the threads being grouped (when any may be open).
     pub fn close(&mut self) {
         self.end_chain();
-        self.events.push(Event::Close);
+        if self.m.grouping {
+            self.m.grouping = false;
+            self.events.push(Event::Close);
+        }
     }
 
     /// The current position, assuming `start.x`/`start.z` for unknown axes (reported once).
@@ -125,8 +145,7 @@ impl Reader<'_> {
 
     /// Reads a length word in program units, by the controller's decimal-point rule.
     pub fn length(&mut self, w: &Word) -> f64 {
-        let increments = self.rules.increments_without_point.is_some_and(|dpi| !self.s.flag(dpi));
-        if !increments || w.num.has_point {
+        if !self.increments || w.num.has_point {
             return w.value();
         }
         let inch = self.m.inch;

@@ -24,7 +24,7 @@ use crate::diagnostic::{Code, Finding};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::fmt;
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Thread, ThreadKind};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread, ThreadKind};
 
 /// A G76 block as LinuxCNC reads it; lengths in program units, X values radii.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,6 +61,8 @@ pub struct G76 {
     pub l: u32,
     /// Tool angle for chip areas (the cycle does not know it).
     pub tool_angle: f64,
+    /// The spindle in force.
+    pub spindle: Spindle,
 }
 
 /// The planned cycle: the thread (its passes' `moves` still empty), each
@@ -235,6 +237,7 @@ pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Findin
             angle: 0.0,
             area: areas[n],
             moves: PassMoves::default(),
+            spindle: g.spindle,
         });
         prev = d;
         at = p.at;
@@ -276,6 +279,7 @@ fn thread(g: &G76, passes: Vec<Pass>) -> Thread {
         passes,
         depth_dir: s,
         first_move: 0,
+        shop: Default::default(),
     }
 }
 
@@ -348,6 +352,7 @@ mod tests {
             e: 0.0,
             l: 0,
             tool_angle: 60.0,
+            spindle: Spindle::default(),
         }
     }
 

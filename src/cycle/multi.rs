@@ -5,7 +5,7 @@ use crate::diagnostic::{Code, Finding};
 use crate::num::{EPS, fmt};
 use crate::settings::{P, Settings};
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Source, Thread};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Source, Spindle, Thread};
 
 /// A multi-pass cycle (G76, G78) as its blocks gave it, ready to plan.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,6 +32,8 @@ pub struct Multi {
     pub left_side: f64,
     /// Where single-flank passes are anchored.
     pub anchor: Anchor,
+    /// The spindle when the cycle was read.
+    pub spindle: Spindle,
 }
 
 /// Where the passes of a single-flank infeed sit along Z.
@@ -150,6 +152,7 @@ impl MultiPlan<'_> {
             angle: 360.0 * s as f64 / m.starts as f64,
             area: self.areas[n],
             moves: PassMoves::default(),
+            spindle: m.spindle,
         };
         (pass, path)
     }
@@ -178,6 +181,7 @@ impl MultiPlan<'_> {
             passes,
             depth_dir: -g.out,
             first_move,
+            shop: Default::default(),
         }
     }
 }

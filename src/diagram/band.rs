@@ -9,10 +9,10 @@ use std::hash::BuildHasherDefault;
 use glam::DVec2;
 
 use crate::geom::Frame;
+use crate::hash::KeyHasher;
 use crate::motion::{Move, MoveKind, Point};
 use crate::thread::{Axis, CrestSource, Thread};
 
-use super::fingerprint::KeyHasher;
 use super::scene::Pt;
 
 /// Where a thread sits: its crest and root as functions of the long axis.

@@ -9,20 +9,16 @@
 //! - [`tooth()`]: one thread space of one thread at large scale ([`tooth`](mod@tooth)).
 //! - [`starts()`]: the start angles and axial offsets of one thread ([`starts`](mod@starts)).
 //!
-//! [`fingerprint`] keys the parts of a plan these read, so that unchanged
-//! scenes need not be built or sent again.
+//! How scenes travel to a browser (packed into typed arrays, keyed, put
+//! together from kept pieces) is the business of the wasm layer.
 
 pub mod band;
-pub mod editor;
-pub mod fingerprint;
-pub mod memo;
-pub mod packed;
+pub mod detail;
 pub mod scene;
 pub mod side;
 pub mod starts;
 pub mod tooth;
 
-pub use packed::{Packed, pack};
 pub use scene::{Item, Label, Rect, Scene, Shape, Style, ViewKind};
 pub use side::side;
 pub use starts::starts;

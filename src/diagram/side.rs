@@ -13,6 +13,7 @@ use crate::plan::Plan;
 use crate::thread::{Axis, CrestSource, Pass, Thread};
 
 pub use super::band::{Band, FeedIndex, deltas, work_extent, work_extent_in};
+use super::detail::{Detail, side_detail};
 use super::scene::{Anchor, Glyph, Item, Label, Pt, Rect, Scene, Shape, Style, ViewKind, num};
 
 /// Most motions drawn; a larger plan is drawn up to here, with a note.
@@ -122,30 +123,51 @@ pub fn pass_paths(plan: &Plan) -> Vec<PassPath> {
 pub struct Layout {
     /// The passes' motions, by cut start.
     pub paths: Vec<PassPath>,
-    /// Motions drawn: `moves[..drawn]`.
+    /// Motions of no pass are drawn from `moves[..drawn]` (at most
+    /// [`MAX_MOVES_DRAWN`] of them); passes are drawn whatever their index.
     pub drawn: usize,
-    /// Per drawn motion: whether a pass draws it.
+    /// Per motion: whether it belongs to a pass.
     pub owner: Vec<bool>,
     /// Whether the plan has threads (then the outline is not the focus).
     pub has_threads: bool,
     /// The feed motions by radius.
     pub feeds: FeedIndex,
+    /// What is drawn of each thread's passes (level of detail).
+    pub details: Vec<Detail>,
 }
 
 impl Layout {
     /// The layout of `plan`'s side section.
     pub fn of(plan: &Plan) -> Layout {
-        let paths = pass_paths(plan);
-        let drawn = plan.moves.len().min(MAX_MOVES_DRAWN);
-        let mut owner = vec![false; drawn];
-        for p in &paths {
+        let details: Vec<Detail> = plan.threads.iter().map(side_detail).collect();
+        let all = pass_paths(plan);
+        let mut owner = vec![false; plan.moves.len()];
+        // Every pass owns its motions, drawn or left out by the level of detail.
+        for p in &all {
             for k in p.indices() {
                 if let Some(o) = owner.get_mut(k) {
                     *o = true;
                 }
             }
         }
-        Layout { paths, drawn, owner, has_threads: !plan.threads.is_empty(), feeds: FeedIndex::new(&plan.moves) }
+        let paths = all.into_iter().filter(|p| details[p.thread].drawn[p.pass]).collect();
+        // The motions of no pass are drawn up to the MAX_MOVES_DRAWN-th of them.
+        let mut others = 0;
+        let drawn = owner
+            .iter()
+            .position(|o| {
+                others += usize::from(!o);
+                others > MAX_MOVES_DRAWN
+            })
+            .unwrap_or(plan.moves.len());
+        Layout {
+            paths,
+            drawn,
+            owner,
+            has_threads: !plan.threads.is_empty(),
+            feeds: FeedIndex::new(&plan.moves),
+            details,
+        }
     }
 
     /// The passes drawn from their own points (their motions are not among the drawn ones):
@@ -161,12 +183,13 @@ impl Layout {
             })
             .collect();
         let mut found = vec![false; base.last().map_or(0, |b| b + plan.threads.last().map_or(0, |t| t.passes.len()))];
-        for p in self.paths.iter().filter(|p| p.end() <= self.drawn) {
+        for p in &self.paths {
             found[base[p.thread] + p.pass] = true;
         }
         let mut out = Vec::new();
         for (ti, t) in plan.threads.iter().enumerate() {
-            out.extend((0..t.passes.len()).filter(|pi| !found[base[ti] + pi]).map(|pi| (ti, pi)));
+            let shown = &self.details[ti].drawn;
+            out.extend((0..t.passes.len()).filter(|pi| shown[*pi] && !found[base[ti] + pi]).map(|pi| (ti, pi)));
         }
         out
     }
@@ -184,14 +207,15 @@ pub fn motion_item(m: &Move, has_threads: bool) -> (Item, bool) {
     (Item::new(shape, style).lines([m.line]), focus)
 }
 
-/// The note that only the first `drawn` motions are drawn.
+/// The note that the motions of no pass are drawn only up to `moves[..drawn]`
+/// (the first [`MAX_MOVES_DRAWN`] of them).
 pub fn capped_note(plan: &Plan, drawn: usize) -> Option<Item> {
     let last = plan.moves.get(drawn.checked_sub(1)?)?;
     (drawn < plan.moves.len()).then(|| {
         Item::new(
             Shape::Text {
                 at: world(last.to),
-                label: Label::new("moves_capped", drawn.to_string()),
+                label: Label::new("moves_capped", MAX_MOVES_DRAWN.to_string()),
                 anchor: Anchor::Start,
                 dx: 6.0,
                 dy: 6.0,
@@ -249,6 +273,7 @@ pub fn side(plan: &Plan) -> Scene {
     let mut front: Vec<(Item, bool)> = Vec::new();
     for (ti, t) in plan.threads.iter().enumerate() {
         thread_items(plan, &layout.feeds, ti, t, &mut back, &mut front);
+        front.extend(detail_note(ti, t, &layout.details[ti]).map(|i| (i, false)));
     }
     for (item, focus) in back {
         scene.push(item, focus);
@@ -263,7 +288,7 @@ pub fn side(plan: &Plan) -> Scene {
     if let Some(note) = capped_note(plan, drawn) {
         front.push((note, false));
     }
-    for p in layout.paths.iter().filter(|p| p.end() <= drawn) {
+    for p in &layout.paths {
         pass_items(plan, p, &mut scene);
     }
     for (ti, pi) in layout.unmatched(plan) {
@@ -328,6 +353,34 @@ pub fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
         let item = Item { style: Style::ScrewIn, ..mark(pass.from) };
         out.push(item.lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true);
     }
+}
+
+/// A note on what the level of detail leaves out of thread `ti`'s drawing, if anything.
+pub fn detail_note(ti: usize, t: &Thread, d: &Detail) -> Option<Item> {
+    if !d.summarised() {
+        return None;
+    }
+    let band = Band::of(t)?;
+    let mut parts = Vec::new();
+    if d.merged_starts > 1 {
+        parts.push(format!("1/{}", d.merged_starts));
+    }
+    if d.every > 1 {
+        parts.push(format!("{}/{}", d.every, d.per_start));
+    }
+    let key = match (d.merged_starts > 1, d.every > 1) {
+        (true, true) => "detail_starts_passes",
+        (true, false) => "detail_starts",
+        _ => "detail_passes",
+    };
+    let label = Label::new(key, parts.join(" "));
+    let at = band.pt(band.l1, band.root(band.l1));
+    let dy = if band.dir < 0.0 { -14.0 } else { 14.0 };
+    Some(
+        Item::new(Shape::Text { at, label, anchor: Anchor::End, dx: 0.0, dy }, Style::Note)
+            .lines([t.line])
+            .of(ti, None),
+    )
 }
 
 /// The band, crest and root lines, δ zones and dimensions of one thread:

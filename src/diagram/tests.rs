@@ -1,6 +1,5 @@
 //! Scene tests on real programs and on a cycle-shaped plan.
 
-use super::packed::{STRIDE, pack};
 use super::scene::{Item, Scene, Shape, Style};
 use super::side::pass_paths;
 use super::side::{Band, FeedIndex, deltas, work_extent, work_extent_in};
@@ -191,6 +190,7 @@ fn cycle_plan() -> Plan {
                 angle: 180.0 * (start - 1) as f64,
                 area: crate::thread::v_area(60.0, prev, d),
                 moves: pass_moves,
+                spindle: Default::default(),
             });
             prev = d;
         }
@@ -214,8 +214,16 @@ fn cycle_plan() -> Plan {
         passes,
         depth_dir: -1.0,
         first_move: 1,
+        shop: Default::default(),
     };
-    Plan { dialect: Dialect::Gsk980tdc, units: Units::Mm, diagnostics: Vec::new(), moves, threads: vec![thread] }
+    Plan {
+        dialect: Dialect::Gsk980tdc,
+        units: Units::Mm,
+        diagnostics: Vec::new(),
+        moves,
+        threads: vec![thread],
+        time_s: None,
+    }
 }
 
 #[test]
@@ -342,29 +350,6 @@ fn starts_view_places_angles_and_offsets() {
     let tx = texts(&scene);
     assert!(tx.contains(&("start_angle", "2: 180°".into())) && tx.contains(&("", "2: 1".into())), "{tx:?}");
     assert!(dims(&scene).contains(&("pitch", "1".into())));
-}
-
-#[test]
-fn packing_keeps_every_item() {
-    let plan = plan_default(O1006, Dialect::Gsk980tdc);
-    let scene = side(&plan);
-    let p = pack(&scene);
-    assert_eq!(p.items.len(), scene.items.len() * STRIDE);
-    let labels = p.labels.split(packed::RECORD_SEP).count();
-    let labelled = scene.items.iter().filter(|i| matches!(i.shape, Shape::Dim { .. } | Shape::Text { .. })).count();
-    assert_eq!(labels, labelled);
-    // The first cut of the first pass: a polyline of 4 numbers with its thread, pass and line.
-    let k = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
-    let rec = &p.items[k * STRIDE..(k + 1) * STRIDE];
-    assert_eq!(rec[0], 0);
-    assert_eq!(rec[1], Style::Cut.code());
-    assert_eq!(&p.coords[rec[2] as usize..(rec[2] + rec[3]) as usize], &[70.0, 23.55, 13.0, 23.55]);
-    assert_eq!((rec[4], rec[5]), (1, 1));
-    assert_eq!(&p.lines[rec[6] as usize..(rec[6] + rec[7]) as usize], &[6]);
-    assert_eq!(
-        Style::ALL.iter().map(|s| s.code()).collect::<Vec<_>>(),
-        (0..Style::ALL.len() as u32).collect::<Vec<_>>()
-    );
 }
 
 #[test]

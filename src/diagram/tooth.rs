@@ -49,6 +49,25 @@ pub fn cuts(tool: Tool, passes: &[(usize, &Pass)], u0: f64, u1: f64) -> (Vec<Pas
     (out, surface)
 }
 
+/// The cuts of `passes` as groups that end at the passes marked in `shown`:
+/// each group's regions are what all its passes remove together (the level
+/// of detail of a thread of many passes).
+pub fn grouped_cuts(tool: Tool, passes: &[(usize, &Pass)], shown: &[bool], u0: f64, u1: f64) -> Vec<PassCut> {
+    let mut surface = Pl::flat(u0, u1);
+    let mut group_top = surface.clone();
+    let mut out = Vec::new();
+    for (k, &(index, p)) in passes.iter().enumerate() {
+        surface = surface.min(&tool.cut(p.depth, p.shift, u0, u1));
+        if shown[k] {
+            let regions = group_top.regions_above(&surface);
+            let a = regions.iter().map(|r| area(r)).sum();
+            out.push(PassCut { index, regions, area: a });
+            group_top = surface.clone();
+        }
+    }
+    out
+}
+
 /// Builds the tooth section of thread `ti`, start `start` (1-based).
 pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
     let t = plan.threads.get(ti)?;
@@ -64,7 +83,12 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
     let half = (tool.flat + h * tool.t + max_shift).max(pitch / 2.0);
     let l = pitch.max(half * 1.15);
     let (u0, u1) = (-l - pitch, l + pitch);
-    let (cut_list, surface) = cuts(tool, &passes, u0, u1);
+    let (all_cuts, surface) = cuts(tool, &passes, u0, u1);
+    // Level of detail: many passes are drawn as groups ending at every k-th pass.
+    let indices: Vec<usize> = passes.iter().map(|(i, _)| *i).collect();
+    let (keep, every) = super::detail::thin(&t.passes, &indices);
+    let shown: Vec<bool> = indices.iter().map(|i| keep.binary_search(i).is_ok()).collect();
+    let cut_list = if every > 1 { grouped_cuts(tool, &passes, &shown, u0, u1) } else { all_cuts };
     // Final profile with the neighbouring spaces (same profile a pitch away).
     let neighbours = surface.min(&surface.shifted(pitch, u0, u1)).min(&surface.shifted(-pitch, u0, u1));
     let bottom = -h * 1.35 - 0.1 * pitch;
@@ -98,9 +122,10 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
         }
     }
     scene.push(own(Shape::Polyline { points: prof }, Style::Profile), true);
-    let every = passes.len().div_ceil(MAX_DEPTH_LABELS).max(1);
+    let drawn: Vec<(usize, &Pass)> = passes.iter().zip(&shown).filter(|(_, s)| **s).map(|(p, _)| *p).collect();
+    let label_every = drawn.len().div_ceil(MAX_DEPTH_LABELS).max(1);
     let tick = 0.08 * l;
-    for (k, &(index, p)) in passes.iter().enumerate() {
+    for (k, &(index, p)) in drawn.iter().enumerate() {
         let of = |item: Item| item.lines(p.lines.clone()).of(ti, Some(index)).role(p.role);
         let (d, s) = (p.depth, p.shift);
         let rise = d + top;
@@ -115,7 +140,7 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
         scene.push(of(Item::new(Shape::Marker { at: pt(s, -d), glyph }, Style::Tool)), true);
         scene
             .push(of(Item::new(Shape::Polyline { points: vec![pt(l, -d), pt(l + tick, -d)] }, Style::DepthTick)), true);
-        if k % every == 0 || k + 1 == passes.len() {
+        if k % label_every == 0 || k + 1 == drawn.len() {
             let key = match p.role {
                 Role::Rough => "pass_depth",
                 Role::Finish => "pass_depth_finish",
@@ -153,6 +178,13 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
         let label = Label::new("start_of", format!("{start}/{}", t.starts));
         scene.push(
             own(Shape::Text { at: pt(l, top), label, anchor: Anchor::End, dx: 0.0, dy: 8.0 * flip }, Style::Note),
+            true,
+        );
+    }
+    if every > 1 {
+        let label = Label::new("detail_passes", format!("{every}/{}", passes.len()));
+        scene.push(
+            own(Shape::Text { at: pt(-l, top), label, anchor: Anchor::Start, dx: 0.0, dy: 8.0 * flip }, Style::Note),
             true,
         );
     }

@@ -5,8 +5,8 @@
 use js_sys::{Array, Object};
 use wasm_bindgen::JsValue;
 
-use super::set;
-use crate::diagram::fingerprint::js_key;
+use super::js::set;
+use super::keys::js_key;
 
 /// Parts of the answer that carry a key, in the order of `update`'s `known` argument.
 #[derive(Clone, Copy, PartialEq, Eq)]

@@ -100,12 +100,23 @@ fn start(s: &Spec, k: u32) -> (f64, f64) {
     (360.0 * f, s.za - s.sense() * s.lead * f)
 }
 
+/// Before start `k` of a thread cut by axial offsets: a comment and a
+/// G01 that does not move, which ends the thread before it (its passes are
+/// on another helix, not deeper passes of the same one).
+fn separate(o: &mut Out, s: &Spec, k: u32) {
+    o.comment(&format!("start {} of {}: lead x {k}/{} further back along Z", k + 1, s.starts, s.starts));
+    o.line(format!("{} {} F{}", o.w.motion[1], o.z(s.za), o.w.lead(0.2)));
+}
+
 /// Blocks per pass: infeed, cut, retract, return (G32 with `Q`, or LinuxCNC's G33).
 fn blockwise(o: &mut Out, s: &Spec) {
     let r0 = o.rapid();
     for k in 0..s.starts {
         let (angle, za) = start(s, k);
         let offset = !o.w.start_angle && k > 0;
+        if offset {
+            separate(o, s, k);
+        }
         for &h in &s.depths {
             if offset {
                 o.line(format!("{r0} {}", o.z(za)));
@@ -149,6 +160,9 @@ fn renhe(o: &mut Out, s: &Spec) -> Result<(), String> {
     o.line("G30 U0 W0");
     for k in 0..s.starts {
         let (_, za) = start(s, k);
+        if k > 0 {
+            separate(o, s, k);
+        }
         for &h in &s.depths {
             if k > 0 {
                 o.line(format!("G00 {}", o.z(za)));

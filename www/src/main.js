@@ -1,15 +1,15 @@
 // screwcut web app: the editor, the three views, the pass table, the
-// diagnostics list and the settings panel over the wasm planner. Every edit
-// re-plans at once; a program with an alarm keeps the last good drawing
-// visible, greyed.
+// diagnostics list and the settings panel. Planning and drawing run in the
+// engine (engine.js) — in a worker drawing on OffscreenCanvases where the
+// browser has them (client.js) — so typing never waits for them. A program
+// with an alarm keeps the last good drawing and table, greyed.
 
-import init, * as core from '../pkg/screwcut.js';
 import { createEditor } from './editor.js';
-import { SceneView } from './view.js';
 import { t, label, setLang, getLang } from './i18n.js';
 import { load, save, encodeFragment, decodeFragment } from './share.js';
-import { num, esc, passTableHead, passTableRowList } from './table.js';
-import { HeldParts } from './parts.js';
+import { num, esc } from './table.js';
+import { startEngine } from './client.js';
+import { VirtualRows, passHead, passRow, passLines, diagnosticRow } from './lists.js';
 
 const $ = (id) => document.getElementById(id);
 /** Sets an element's text unless it already reads so (a new text node means a new layout). */
@@ -17,8 +17,8 @@ const setText = (el, text) => {
   if (el.textContent !== text) el.textContent = text;
 };
 
-/** What the test and the curious can look at: timings and state. */
-const probe = { ready: false, updates: [], frames: [], errors: [], result: null, editorAt: null };
+/** What the tests and the curious can look at: timings and state. */
+const probe = { ready: false, updates: [], frames: [], errors: [], result: null, mode: null };
 window.__screwcut = probe;
 
 const state = {
@@ -28,19 +28,23 @@ const state = {
   lang: 'en',
 };
 
+let client;
+let dialects = [];
 let editor;
-let views;
-let styleNames;
 let settingsTable = [];
-let result = null; // the last update
-let lastGood = null; // the last update without alarm that drew something
+let result = null; // the lists of the last answer (threads, passes as columns, diagnostics)
+let lastGood = null; // the lists of the last answer without alarm
 let thread = 0;
 let start = 1;
-let pendingInput = null;
-let planQueued = false;
 let hover = null;
-let diagnosticsKey = -1; // key of the diagnostics the editor and the list show
-const held = new HeldParts(); // parts of the answers, by key: the planner sends a part only when its key changes
+let seq = 0;
+let inFlight = null; // {seq, text} of the plan the engine is working on
+let wanted = false; // the text changed while a plan was in flight
+let pendingInput = null; // timeStamp of the keystroke the next plan answers
+const inputs = new Map(); // seq → timeStamp of its keystroke
+let passRows;
+let diagnosticsShown = [];
+let severities = new Set(['error', 'warning', 'info']);
 
 function settingsText() {
   const s = state.settings[state.dialect] || {};
@@ -57,120 +61,101 @@ function persist() {
 
 // ---- planning ----
 
+/** Sends the text to the engine; while a plan is in flight, only the latest text follows it. */
 function replan() {
-  planQueued = false;
+  if (inFlight) {
+    wanted = true;
+    return;
+  }
+  wanted = false;
   const text = editor.text();
   state.program = text;
   persist();
-  const t0 = performance.now();
-  let r;
-  try {
-    r = held.fill(core.update(text, state.dialect, settingsText(), thread, start, diagnosticsKey, held.known()));
-  } catch (e) {
-    // A planner failure (which must not happen) keeps the page and the last drawing.
-    diagnosticsKey = -1;
-    held.clear();
-    probe.errors.push(String(e && e.message ? e.message : e));
-    showCrash();
-    return;
-  }
-  const t1 = performance.now();
-  for (const v of Object.values(views)) v.drawTime = 0;
-  apply(r);
-  const t2 = performance.now();
-  probe.updates.push({ plan: t1 - t0, draw: t2 - t1, total: t2 - t0, lines: editor.view.state.doc.lines, ...probe.parts });
-  if (probe.updates.length > 200) probe.updates.shift();
-  setText($('timing'), t('timing', { plan: (t1 - t0).toFixed(1), draw: (t2 - t1).toFixed(1) }));
+  seq += 1;
+  inFlight = { seq, text, t0: performance.now() };
   if (pendingInput !== null) {
-    const input = pendingInput;
+    inputs.set(seq, pendingInput);
     pendingInput = null;
-    const editorAt = probe.editorAt;
-    probe.editorAt = null;
-    requestAnimationFrame(() => {
-      // The views drew in this frame's callbacks; the canvases are rasterised
-      // when the frame is committed, after the callbacks, in the same task.
-      const canvas = views.side.drawTime + views.tooth.drawTime + views.starts.drawTime;
-      const raf = performance.now() - input;
-      afterTask(() => {
-        const frame = performance.now() - input;
-        probe.frames.push({ drawn: t2 - input, raf, frame, commit: frame - raf, canvas, editor: editorAt });
-      });
-    });
+  }
+  client.send({ type: 'plan', seq, text, dialect: state.dialect, settings: settingsText(), thread, start, input: inputs.get(seq) ?? null });
+}
+
+function onMessage(m) {
+  switch (m.type) {
+    case 'result':
+      return onResult(m);
+    case 'frame':
+      return onFrame(m);
+    case 'hover':
+      return onViewHover(m);
+    case 'pick':
+      return onPick(m.info);
+    case 'error':
+      probe.errors.push(m.message);
+      if (m.crashed) {
+        inFlight = null;
+        banner(t('crashed'));
+      }
+      return undefined;
+    case 'note':
+      probe.notes = [...(probe.notes || []), m.message];
+      return undefined;
+    default:
+      return undefined;
   }
 }
 
-/** Runs `f` in a new task: after a frame callback, once the frame is committed. */
-function afterTask(f) {
-  const ch = new MessageChannel();
-  ch.port1.onmessage = () => {
-    ch.port1.close();
-    f();
-  };
-  ch.port2.postMessage(0);
-}
-
-function queuePlan() {
-  if (pendingInput !== null && probe.editorAt === null) probe.editorAt = performance.now() - pendingInput;
-  if (planQueued) return;
-  planQueued = true;
-  queueMicrotask(replan);
-}
-
-function apply(r) {
+function onResult(m) {
+  const r = m.r;
+  if (r.threads === undefined) r.threads = result ? result.threads : [];
+  if (r.passes === undefined) r.passes = result ? result.passes : null;
+  if (r.diagnostics === null) r.diagnostics = result ? result.diagnostics : [];
+  else editor.setDiagnosticsSoon(r.diagnostics);
   const t0 = performance.now();
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
-  const changed = r.diagnostics !== null;
-  if (!changed) {
-    // Unchanged by line and column: the editor has mapped its own through the edit.
-    r.diagnostics = lastDiagnostics;
-  } else {
-    lastDiagnostics = r.diagnostics;
-    diagnosticsKey = r.diagnosticsKey;
-    editor.setDiagnosticsSoon(r.diagnostics);
-  }
+  if (r.good) lastGood = r;
+  renderLists(r);
   const t1 = performance.now();
-  if (changed) renderDiagnostics(r.diagnostics);
-  renderThreads(r);
-  renderSettingErrors(r.settingErrors);
-  const t2 = performance.now();
-  setText($('summary'), t('summary', {
-    threads: r.threads.length,
-    moves: r.moves,
-    alarms: r.alarms,
-    warnings: r.warnings,
-    notes: r.notes,
-  }));
-  if (r.alarms > 0 && lastGood) {
-    views.side.setScene(lastGood.side, true);
-    views.tooth.setScene(lastGood.tooth, true);
-    views.starts.setScene(lastGood.starts, true);
-    banner(t('stale'));
-  } else {
-    if (r.good) lastGood = r;
-    views.side.setScene(r.side, false);
-    views.tooth.setScene(r.tooth, false);
-    views.starts.setScene(r.starts, false);
-    banner(null);
+  if (m.timing) {
+    const total = inFlight && inFlight.seq === m.seq ? performance.now() - inFlight.t0 : null;
+    probe.updates.push({ seq: m.seq, ...m.timing, lists: t1 - t0, total, lines: editor.view.state.doc.lines, resumedAt: r.resumedAt });
+    if (probe.updates.length > 200) probe.updates.shift();
+    setText($('timing'), t('timing', { plan: m.timing.plan.toFixed(1), draw: m.timing.views.toFixed(1) }));
   }
-  const t3 = performance.now();
-  views.side.setThread(thread);
-  refreshHighlight();
-  probe.parts = { lint: t1 - t0, lists: t2 - t1, views: t3 - t2, highlight: performance.now() - t3 };
+  if (inFlight && inFlight.seq === m.seq) {
+    inFlight = null;
+    if (wanted || editor.text() !== state.program) replan();
+  }
   if (!probe.ready) {
     probe.ready = true;
     document.body.dataset.ready = 'true';
   }
 }
 
-function showCrash() {
-  if (lastGood) {
-    views.side.setScene(lastGood.side, true);
-    views.tooth.setScene(lastGood.tooth, true);
-    views.starts.setScene(lastGood.starts, true);
-  }
-  banner(t('crashed'));
+/** The drawing that includes an edit is on screen: mark it for whoever measures. */
+function onFrame(m) {
+  const input = m.input ?? inputs.get(m.seq);
+  inputs.delete(m.seq);
+  if (input === undefined || input === null) return;
+  performance.mark('screwcut:frame', { detail: { input } });
+  probe.frames.push({ seq: m.seq, frame: performance.now() - input });
+  if (probe.frames.length > 200) probe.frames.shift();
+}
+
+// ---- lists ----
+
+function renderLists(r) {
+  const stale = r.alarms > 0 && lastGood && lastGood !== r;
+  setText(
+    $('summary'),
+    t('summary', { threads: r.threads.length, moves: r.moves, alarms: r.alarms, warnings: r.warnings, notes: r.notes }),
+  );
+  banner(stale ? t('stale') : null);
+  renderThreads(stale ? lastGood : r, stale);
+  renderDiagnostics(r.diagnostics);
+  renderSettingErrors(r.settingErrors);
 }
 
 function banner(text) {
@@ -179,56 +164,14 @@ function banner(text) {
   b.textContent = text || '';
 }
 
-/** Chooses the thread (and start) the tooth and starts views and the table show. */
-function selectThread(ti, st = 1) {
-  if (!result || ti === null || ti < 0 || ti >= result.threads.length) return;
-  if (ti === thread && st === start && result.passes) return;
-  thread = ti;
-  start = st;
-  let s;
-  try {
-    s = core.thread_scenes(ti, st);
-  } catch (e) {
-    probe.errors.push(String(e && e.message ? e.message : e));
-    return;
-  }
-  held.fill(s);
-  result.thread = s.thread;
-  result.passes = s.passes;
-  result.tooth = s.tooth;
-  result.starts = s.starts;
-  views.side.setThread(ti);
-  renderThreads(result);
-  if (!(result.alarms > 0 && lastGood)) {
-    views.tooth.setScene(s.tooth, false);
-    views.starts.setScene(s.starts, false);
-  }
-  refreshHighlight();
-}
-
-// ---- lists ----
-
-let lastTable = ''; // the table head shown
-let lastRows = []; // the rows shown
-let shownThreads = null; // what the selector and the table were last rendered from
-const options = new WeakMap(); // thread summary → {i, lang, html} of its option
-/** The selector's option of thread summary `th` at index `i` (kept per summary: an unchanged one is not formatted again). */
-function optionOf(th, i, lang) {
-  const o = options.get(th);
-  if (o && o.i === i && o.lang === lang) return o.html;
-  const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×`;
-  const html = `<option value="${i}">${esc(text)}</option>`;
-  options.set(th, { i, lang, html });
-  return html;
-}
-
-function renderThreads(r) {
-  const shown = { threads: r.threads, thread: r.thread, passes: r.passes, start, lang: getLang() };
-  if (shownThreads && Object.keys(shown).every((k) => shown[k] === shownThreads[k])) return;
-  shownThreads = shown;
+function renderThreads(r, stale) {
   const sel = $('thread');
-  const lang = getLang();
-  const options = r.threads.map((th, i) => optionOf(th, i, lang)).join('');
+  const options = r.threads
+    .map((th, i) => {
+      const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×`;
+      return `<option value="${i}">${esc(text)}</option>`;
+    })
+    .join('');
   if (sel.dataset.html !== options) {
     sel.innerHTML = options;
     sel.dataset.html = options;
@@ -247,43 +190,33 @@ function renderThreads(r) {
     s.value = String(Math.min(start, th.starts));
   }
   $('no-threads').hidden = r.threads.length > 0;
-  const head = passTableHead(t);
-  if (head !== lastTable) {
-    lastTable = head;
+  const head = passHead(t, r.units);
+  if ($('passes').tHead.dataset.html !== head) {
     $('passes').tHead.innerHTML = head;
+    $('passes').tHead.dataset.html = head;
   }
-  // Row by row: an edit usually changes a row or two.
-  const rows = passTableRowList(r.passes, t);
-  const body = $('passes').tBodies[0];
-  if (body.rows.length !== lastRows.length || Math.abs(rows.length - lastRows.length) > 50) {
-    body.innerHTML = rows.join('');
-  } else {
-    const n = Math.min(rows.length, lastRows.length);
-    for (let i = 0; i < n; i++) if (rows[i] !== lastRows[i]) body.rows[i].outerHTML = rows[i];
-    for (let i = lastRows.length - 1; i >= rows.length; i--) body.rows[i].remove();
-    if (rows.length > n) body.insertAdjacentHTML('beforeend', rows.slice(n).join(''));
-  }
-  lastRows = rows;
+  $('passes').classList.toggle('stale', !!stale);
+  const c = r.passes;
+  // The Start selector filters the table to one start of a multi-start thread.
+  const order = [];
+  if (c) for (let i = 0; i < c.n; i++) if (!th || th.starts <= 1 || c.start[i] === start) order.push(i);
+  passRows.order = order;
+  passRows.set(order.length, (k, hot) => passRow(c, order[k], t, hot, stale));
 }
 
-let lastDiags = []; // signatures of the entries the list shows
-let lastDiagnostics = [];
-const diagHtml = (d, i) =>
-  `<li data-i="${i}" class="${d.severity}"><span class="pos">${d.line}:${d.column}</span><span class="sev">${t(d.severity)}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`;
-/** Updates the list item by item: an edit usually changes a few entries of many. */
 function renderDiagnostics(list) {
+  const shown = list.map((d, i) => [d, i]).filter(([d]) => severities.has(d.severity));
+  diagnosticsShown = shown;
+  const MAX = 2000;
   const ul = $('diagnostics');
-  const sigs = list.map((d) => `${d.severity}|${d.line}|${d.column}|${d.code}|${d.message}`);
-  if (ul.children.length !== lastDiags.length) lastDiags = [];
-  if (lastDiags.length === 0 || Math.abs(sigs.length - lastDiags.length) > 200) {
-    ul.innerHTML = list.map(diagHtml).join('');
-  } else {
-    const n = Math.min(sigs.length, lastDiags.length);
-    for (let i = 0; i < n; i++) if (sigs[i] !== lastDiags[i]) ul.children[i].outerHTML = diagHtml(list[i], i);
-    for (let i = lastDiags.length - 1; i >= sigs.length; i--) ul.children[i].remove();
-    if (sigs.length > n) ul.insertAdjacentHTML('beforeend', list.slice(n).map((d, k) => diagHtml(d, n + k)).join(''));
+  const html = shown.slice(0, MAX).map(([d, i]) => diagnosticRow(d, i, t, false)).join('');
+  if (ul.dataset.html !== html) {
+    ul.innerHTML = html + (shown.length > MAX ? `<li class="more">${esc(t('more', { n: shown.length - MAX }))}</li>` : '');
+    ul.dataset.html = html;
   }
-  lastDiags = sigs;
+  const counts = { error: 0, warning: 0, info: 0 };
+  for (const d of list) counts[d.severity]++;
+  for (const sev of Object.keys(counts)) setText(document.querySelector(`#sev-filter [data-sev="${sev}"] .n`), String(counts[sev]));
   $('no-diagnostics').hidden = list.length > 0;
 }
 
@@ -291,59 +224,63 @@ function renderDiagnostics(list) {
 
 /** Highlights what `hover` points at, else what the cursor line draws. */
 function refreshHighlight() {
-  const sets = { side: new Set(), tooth: new Set(), starts: new Set() };
-  let lines = [];
-  if (hover && hover.pass >= 0) {
-    for (const k of Object.keys(sets)) for (const i of views[k].itemsOfPass(hover.thread, hover.pass)) sets[k].add(i);
-    const p = result && hover.thread === thread && result.passes ? result.passes[hover.pass] : null;
-    lines = p ? p.lines : hover.lines;
-    document.querySelectorAll('#passes tbody tr.hot').forEach((tr) => tr.classList.remove('hot'));
-    if (hover.thread === thread) $('passes').tBodies[0].rows[hover.pass]?.classList.add('hot');
-  } else {
-    lines = hover ? hover.lines : [editor.cursorLine()];
-    for (const k of Object.keys(sets)) for (const l of lines) for (const i of views[k].itemsOfLine(l)) sets[k].add(i);
-    document.querySelectorAll('#passes tbody tr.hot').forEach((tr) => tr.classList.remove('hot'));
-  }
-  for (const k of Object.keys(sets)) views[k].setHighlight(sets[k]);
-  editor.markLines(hover ? lines : []);
+  const lines = hover ? hover.lines : [];
+  client.send({ type: 'highlight', hover, cursor: editor.cursorLine() });
+  editor.markLines(lines);
+  const k = hover && hover.pass >= 0 && hover.thread === thread ? passRows.order.indexOf(hover.pass) : -1;
+  passRows.mark(k, hover && hover.fromView);
 }
 
-function onHover(info) {
-  hover = info;
+function onViewHover(m) {
+  const info = m.info;
+  hover = info && (info.pass >= 0 || info.lines.length) ? { thread: info.thread, pass: info.pass, lines: passLinesOf(info), fromView: true } : null;
   refreshHighlight();
-  tip(info);
+  tip(info, m.clientX, m.clientY);
+}
+
+/** The lines a hovered item stands for: its pass's four blocks when it is a pass of the chosen thread. */
+function passLinesOf(info) {
+  if (info.pass >= 0 && info.thread === thread && result && result.passes) return passLines(result.passes, info.pass);
+  return info.lines;
 }
 
 /** A tooltip for what the pointer is over in a drawing. */
-function tip(info) {
+function tip(info, x, y) {
   const el = $('tip');
-  if (!info || info.x === undefined) {
+  if (!info || x === undefined) {
     el.hidden = true;
     return;
   }
   let text = `${t('col_lines')} ${info.lines.join(', ')}`;
-  const p = info.pass >= 0 && info.thread === thread && result && result.passes ? result.passes[info.pass] : null;
-  if (p) {
+  const c = result && result.passes;
+  if (info.pass >= 0 && info.thread === thread && c && info.pass < c.n) {
+    const i = info.pass;
+    const multi = result.threads[thread] && result.threads[thread].starts > 1;
     text =
-      `${t('thread')} ${info.thread + 1} · ${t('col_pass')} ${p.index}` +
-      (p.start > 1 || (result.threads[thread] && result.threads[thread].starts > 1) ? ` · ${t('col_start')} ${p.start}` : '') +
-      ` · X${num(p.from[0])} Z${num(p.from[1])}→${num(p.to[1])} · ${t('col_depth')} ${num(p.depth)} · ${t(p.role)} · ${text}`;
+      `${t('thread')} ${info.thread + 1} · ${t('col_pass')} ${c.index[i]}` +
+      (multi ? ` · ${t('col_start')} ${c.start[i]}` : '') +
+      ` · X${num(c.x[i])} Z${num(c.z[i])}→${num(c.zEnd[i])} · ${t('col_depth')} ${num(c.depth[i])} · ${t(['rough', 'finish', 'spring'][c.role[i]])} · ${t('col_lines')} ${passLines(c, i).join(', ')}`;
   }
   el.textContent = text;
   el.hidden = false;
-  moveTip(info.x, info.y);
-}
-
-function moveTip(x, y) {
-  const el = $('tip');
   el.style.left = `${Math.min(x + 14, window.innerWidth - el.offsetWidth - 8)}px`;
   el.style.top = `${y + 16}px`;
 }
 
 function onPick(info) {
+  if (!info) return;
   if (info.thread >= 0 && info.thread !== thread) selectThread(info.thread);
   const line = info.lines.length ? info.lines[0] : null;
   if (line) editor.goto(line);
+}
+
+/** Chooses the thread (and start) the tooth and starts views and the table show. */
+function selectThread(ti, st = 1) {
+  if (!result || ti === null || ti < 0 || ti >= result.threads.length) return;
+  if (ti === thread && st === start && result.passes) return;
+  thread = ti;
+  start = st;
+  client.send({ type: 'select', thread: ti, start: st });
 }
 
 function onCursor(line) {
@@ -351,13 +288,13 @@ function onCursor(line) {
     const ti = result.threads.findIndex((th) => line >= th.line && line <= th.end_line);
     if (ti >= 0 && ti !== thread) selectThread(ti);
   }
-  if (!hover) refreshHighlight();
+  if (!hover) client.send({ type: 'highlight', hover: null, cursor: line });
 }
 
 // ---- settings ----
 
-function buildSettings() {
-  settingsTable = core.settings_table(state.dialect);
+async function buildSettings() {
+  settingsTable = await client.request('table', { what: 'settings', dialect: state.dialect });
   const values = state.settings[state.dialect] || {};
   const zh = getLang() === 'zh';
   const html = settingsTable
@@ -388,9 +325,7 @@ function onSettingInput(e) {
   const name = el.dataset.name;
   if (!name) return;
   const def = settingsTable.find((s) => s.name === name);
-  let value;
-  if (el.type === 'checkbox') value = el.checked ? '1' : '0';
-  else value = el.value.trim();
+  const value = el.type === 'checkbox' ? (el.checked ? '1' : '0') : el.value.trim();
   const mine = (state.settings[state.dialect] ||= {});
   const isDefault =
     def && ((def.kind === 'choice' && def.choices[def.default] === value) || (def.kind !== 'choice' && value !== '' && Number(value) === def.default));
@@ -415,8 +350,7 @@ async function loadExamples() {
   try {
     const res = await fetch('examples/index.json');
     const list = await res.json();
-    const sel = $('examples');
-    sel.dataset.list = JSON.stringify(list);
+    $('examples').dataset.list = JSON.stringify(list);
     renderExamples();
     return list;
   } catch (e) {
@@ -437,14 +371,14 @@ function renderExamples() {
 async function openExample(entry) {
   const res = await fetch(`examples/${encodeURIComponent(entry.file)}`);
   const text = await res.text();
-  if (entry.dialect) setDialect(entry.dialect, false);
+  if (entry.dialect) await setDialect(entry.dialect, false);
   editor.setText(text);
 }
 
-function setDialect(name, plan = true) {
-  state.dialect = name;
-  $('dialect').value = name;
-  buildSettings();
+async function setDialect(name, plan = true) {
+  state.dialect = dialects.some((d) => d.name === name) ? name : 'gsk980tdc';
+  $('dialect').value = state.dialect;
+  await buildSettings();
   persist();
   if (plan) replan();
 }
@@ -478,30 +412,35 @@ async function share() {
   }
 }
 
-function bindViewBar(panelId, view, name) {
-  const panel = $(panelId);
-  panel.querySelector('.bar').addEventListener('click', async (e) => {
-    const act = e.target.dataset && e.target.dataset.act;
-    if (act === 'fit') view.fit();
-    if (act === 'stretch') e.target.setAttribute('aria-pressed', String(view.toggleStretch()));
-    if (act === 'svg') {
-      const svg = view.toSVG();
-      if (svg) download(`screwcut-${name}.svg`, new Blob([svg], { type: 'image/svg+xml' }));
-    }
-    if (act === 'png') {
-      const png = await view.toPNG(2);
-      if (png) download(`screwcut-${name}.png`, png);
-    }
-  });
+function bindViewBar(panelId, name) {
+  $(panelId)
+    .querySelector('.bar')
+    .addEventListener('click', async (e) => {
+      const act = e.target.dataset && e.target.dataset.act;
+      if (act === 'fit') client.send({ type: 'input', name, op: 'fit' });
+      if (act === 'stretch') e.target.setAttribute('aria-pressed', String(await client.request('input', { name, op: 'stretch' })));
+      if (act === 'svg' || act === 'png') {
+        const data = await client.request('export', { name, format: act, scale: 2 });
+        if (data) download(`screwcut-${name}.${act}`, act === 'svg' ? new Blob([data], { type: 'image/svg+xml' }) : data);
+      }
+    });
 }
 
 // ---- start ----
 
 async function main() {
   window.addEventListener('error', (e) => probe.errors.push(String(e.message)));
-  await init({ module_or_path: new URL('screwcut_bg.wasm', document.baseURI) });
-  styleNames = core.style_names();
-  probe.core = core;
+  const params = new URLSearchParams(location.search);
+  const started = await startEngine({
+    wasmUrl: new URL('screwcut_bg.wasm', document.baseURI),
+    workerUrl: new URL('worker.js', document.baseURI),
+    mode: params.get('engine'),
+    onMessage,
+  });
+  client = started.client;
+  dialects = started.dialects;
+  probe.mode = client.mode;
+  probe.inspect = (what, name, format) => client.request('inspect', { what, name, format });
   probe.text = () => (editor ? editor.text() : null);
   probe.editor = () => editor;
   probe.dialect = () => state.dialect;
@@ -515,36 +454,43 @@ async function main() {
   } else if (navigator.language && navigator.language.startsWith('zh')) {
     state.lang = 'zh';
   }
-  if (!core.dialects().some((d) => d.name === state.dialect)) state.dialect = 'gsk980tdc';
+  if (!dialects.some((d) => d.name === state.dialect)) state.dialect = 'gsk980tdc';
   if (linked) {
     // The link's program becomes the kept one; a reload shows later edits, not the link again.
     save(state);
     history.replaceState(null, '', location.pathname + location.search);
   }
   setLang(state.lang);
+  client.send({ type: 'lang', lang: state.lang });
   $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
-  $('dialect').innerHTML = core
-    .dialects()
-    .map((d) => `<option value="${d.name}">${esc(d.title)}</option>`)
-    .join('');
+  $('dialect').innerHTML = dialects.map((d) => `<option value="${d.name}">${esc(d.title)}</option>`).join('');
   $('dialect').value = state.dialect;
-  buildSettings();
+  await buildSettings();
 
-  const tr = (key, value) => label(key, value);
-  const mk = (id, name) =>
-    new SceneView($(id), { styleNames, tr, onHover, onPick, onMove: moveTip, name, stretch: name === 'side' });
-  views = { side: mk('side', 'side'), tooth: mk('tooth', 'tooth'), starts: mk('starts', 'starts') };
-  probe.views = views;
-  bindViewBar('side-panel', views.side, 'side');
+  client.bindView('side', $('side'), { stretch: true });
+  client.bindView('tooth', $('tooth'));
+  client.bindView('starts', $('starts'));
   document.querySelector('#side-panel [data-act="stretch"]').setAttribute('aria-pressed', 'true');
-  bindViewBar('tooth-panel', views.tooth, 'tooth');
-  bindViewBar('starts-panel', views.starts, 'starts');
+  bindViewBar('side-panel', 'side');
+  bindViewBar('tooth-panel', 'tooth');
+  bindViewBar('starts-panel', 'starts');
 
-  editor = createEditor($('editor'), { doc: state.program, onChange: queuePlan, onCursor });
+  const scroller = $('passes').closest('.scroll');
+  passRows = new VirtualRows(scroller, $('passes').tBodies[0], {
+    rowHeight: 22,
+    spacer: (h) => `<tr class="spacer" aria-hidden="true" style="height:${h}px"><td colspan="10"></td></tr>`,
+  });
+  passRows.order = [];
+
+  editor = createEditor($('editor'), { doc: state.program, onChange: replan, onCursor });
   editor.view.dom.addEventListener('keydown', (e) => (pendingInput = e.timeStamp), true);
-  editor.view.dom.addEventListener('beforeinput', (e) => {
-    if (pendingInput === null) pendingInput = e.timeStamp;
-  }, true);
+  editor.view.dom.addEventListener(
+    'beforeinput',
+    (e) => {
+      if (pendingInput === null) pendingInput = e.timeStamp;
+    },
+    true,
+  );
 
   const list = await loadExamples();
   if (!saved) {
@@ -555,7 +501,7 @@ async function main() {
     }
   }
   replan();
-  finishSetup();
+  return finishSetup();
 }
 
 function finishSetup() {
@@ -568,9 +514,9 @@ function finishSetup() {
   });
   $('settings-form').addEventListener('change', onSettingInput);
   $('settings-form').addEventListener('submit', (e) => e.preventDefault());
-  $('settings-reset').addEventListener('click', () => {
+  $('settings-reset').addEventListener('click', async () => {
     state.settings[state.dialect] = {};
-    buildSettings();
+    await buildSettings();
     persist();
     replan();
   });
@@ -579,51 +525,65 @@ function finishSetup() {
     $('settings-toggle').setAttribute('aria-pressed', String(!$('settings').hidden));
   });
   $('share').addEventListener('click', share);
-  $('plan-json').addEventListener('click', () => {
-    const json = core.plan_json(editor.text(), state.dialect, settingsText());
+  $('plan-json').addEventListener('click', async () => {
+    const json = await client.request('json');
     download('screwcut-plan.json', new Blob([json], { type: 'application/json' }));
   });
-  $('lang').addEventListener('click', () => {
+  $('lang').addEventListener('click', async () => {
     state.lang = getLang() === 'zh' ? 'en' : 'zh';
     setLang(state.lang);
+    client.send({ type: 'lang', lang: state.lang });
     $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
     renderExamples();
-    buildSettings();
+    await buildSettings();
     persist();
-    lastTable = '';
-    lastRows = [];
-    lastDiags = [];
-    renderDiagnostics(lastDiagnostics);
-    replan();
+    if (result) renderLists(result);
   });
   $('thread').addEventListener('change', (e) => selectThread(Number(e.target.value), 1));
-  $('start').addEventListener('change', (e) => selectThread(thread, Number(e.target.value)));
+  $('start').addEventListener('change', (e) => {
+    start = Number(e.target.value);
+    selectThread(thread, start);
+    if (result) renderThreads(result, false);
+  });
   const tbody = $('passes').tBodies[0];
+  const rowPass = (e) => {
+    const tr = e.target.closest('tr[data-pass]');
+    return tr ? Number(tr.dataset.pass) : -1;
+  };
   tbody.addEventListener('mouseover', (e) => {
-    const tr = e.target.closest('tr');
-    if (!tr || !result || !result.passes) return;
-    const i = Number(tr.dataset.pass);
-    const p = result.passes[i];
-    if (p) onHover({ thread, pass: i, lines: p.lines });
+    const i = rowPass(e);
+    if (i < 0 || !result || !result.passes) return;
+    hover = { thread, pass: i, lines: passLines(result.passes, i) };
+    refreshHighlight();
     $('tip').hidden = true;
   });
-  tbody.addEventListener('mouseleave', () => onHover(null));
+  tbody.addEventListener('mouseleave', () => {
+    hover = null;
+    refreshHighlight();
+  });
   tbody.addEventListener('click', (e) => {
-    const tr = e.target.closest('tr');
-    const p = tr && result && result.passes ? result.passes[Number(tr.dataset.pass)] : null;
-    if (p) editor.goto(p.lines[0]);
+    const i = rowPass(e);
+    if (i >= 0 && result && result.passes) editor.goto(passLines(result.passes, i)[0]);
   });
   $('diagnostics').addEventListener('click', (e) => {
-    const li = e.target.closest('li');
+    const li = e.target.closest('li[data-i]');
     const d = li && result ? result.diagnostics[Number(li.dataset.i)] : null;
     if (d) editor.goto(d.line, d.column);
   });
-  window.addEventListener('hashchange', () => {
+  $('sev-filter').addEventListener('change', (e) => {
+    const sev = e.target.closest('[data-sev]')?.dataset.sev;
+    if (!sev) return;
+    if (e.target.checked) severities.add(sev);
+    else severities.delete(sev);
+    severities = new Set(severities);
+    if (result) renderDiagnostics(result.diagnostics);
+  });
+  window.addEventListener('hashchange', async () => {
     const s = decodeFragment(location.hash);
     if (s && typeof s.program === 'string') {
-      if (typeof s.dialect === 'string') setDialect(s.dialect, false);
+      if (typeof s.dialect === 'string') await setDialect(s.dialect, false);
       if (s.settings) state.settings = s.settings;
-      buildSettings();
+      await buildSettings();
       editor.setText(s.program);
       history.replaceState(null, '', location.pathname + location.search);
     }

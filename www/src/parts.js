@@ -4,9 +4,9 @@
 // as the entries that changed. The side section comes as
 // pieces (each thread's band and dimensions, runs of passes, blocks of other
 // motions) of which only those the page does not hold are sent; the page
-// puts the packed scene together (src/diagram/packed.rs, src/diagram/memo.rs).
+// puts the packed scene together (src/wasm/pack.rs, src/wasm/memo.rs).
 
-const STRIDE = 10;
+import { layout } from './render.js';
 
 /** The parts, in the order of `update`'s `known` keys. */
 export const PARTS = ['threads', 'passes', 'side', 'tooth', 'starts'];
@@ -62,6 +62,7 @@ export class HeldParts {
 
   /** The packed side section from pieces `a`: those sent and those held; holds the ones it uses. */
   assemble(a) {
+    const L = layout();
     const fresh = new Map();
     const e = a.ends;
     let s = [0, 0, 0, 0, 0];
@@ -106,10 +107,10 @@ export class HeldParts {
       items.set(p.items, i);
       lines.set(p.lines, l);
       // Offsets and label numbers of a piece are its own: move them to the scene's.
-      for (let o = i, end = i + p.items.length; o < end; o += STRIDE) {
-        items[o + 2] += c;
-        items[o + 6] += l;
-        if (items[o + 8] > 0) items[o + 8] += count;
+      for (let o = i, end = i + p.items.length; o < end; o += L.stride) {
+        items[o + L.coord_start] += c;
+        items[o + L.line_start] += l;
+        if (items[o + L.label] > 0) items[o + L.label] += count;
       }
       if (p.count > 0) {
         labels.push(p.labels);

@@ -1,13 +1,31 @@
 // Scene rendering shared by the canvas views and the SVG/PNG export.
 //
-// A scene comes from the wasm core as typed arrays (see src/diagram/packed.rs):
-// `items` holds STRIDE u32s per item, `coords` the numbers of each shape,
-// `lines` the source lines, `labels` the label records. Rendering walks the
-// arrays directly; a painter (canvas or SVG) draws screen-space primitives.
+// A scene comes from the wasm core as typed arrays (see src/wasm/pack.rs):
+// `items` holds one record of `stride` u32s per item, `coords` the numbers of
+// each shape, `lines` the source lines, `labels` the label records. The
+// record layout is defined once in Rust and read here by name
+// (`setLayout(core.scene_layout())` before the first scene). Rendering walks
+// the arrays directly; a painter (canvas or SVG) draws screen-space primitives.
 
-export const STRIDE = 10;
-const SHAPE = { polyline: 0, polygon: 1, circle: 2, arrow: 3, dim: 4, text: 5, marker: 6 };
-const ANCHORS = ['start', 'middle', 'end'];
+/** The record layout: `stride`, field offsets by name, shape codes by name, anchor names. */
+let STRIDE = 10;
+let F = null;
+let SHAPE = null;
+let ANCHORS = null;
+
+/** Takes the scene record layout served by the core (`scene_layout()`). */
+export function setLayout(layout) {
+  STRIDE = layout.stride;
+  F = { ...layout.fields };
+  SHAPE = Object.fromEntries(layout.shapes.map((name, i) => [name, i]));
+  ANCHORS = [...layout.anchors];
+}
+
+/** The layout taken by `setLayout` (field offsets by name and the stride). */
+export function layout() {
+  if (!F) throw new Error('render.js: setLayout(core.scene_layout()) was not called');
+  return { stride: STRIDE, ...F };
+}
 /** Above this many threads with dimensions, only the chosen thread's are drawn. */
 export const MAX_ANNOTATED = 6;
 
@@ -39,6 +57,7 @@ export const PENS = {
 };
 const ROLE_STROKE = [null, null, '#059669', '#7c3aed']; // none, rough, finish, spring
 const HIGHLIGHT = '#f59e0b';
+const HIGHLIGHT_TEXT = '#b45309';
 const FONT = '12px system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif';
 
 /** Area fill colour of pass `i` (distinct hues, finishing passes green). */
@@ -105,17 +124,19 @@ function greyPen(pen) {
 /** Decodes the label records once per scene. */
 export function prepare(scene, styleNames) {
   if (scene.prepared) return scene;
+  layout();
   const labels = scene.labels.length ? scene.labels.split('\u001e').map((r) => r.split('\u001f')) : [];
   const n = scene.items.length / STRIDE;
   const styles = new Array(n);
-  for (let i = 0; i < n; i++) styles[i] = styleNames[scene.items[i * STRIDE + 1]];
+  for (let i = 0; i < n; i++) styles[i] = styleNames[scene.items[i * STRIDE + F.style]];
   // Threads that carry dimensions and texts: many of them are drawn for the chosen thread only.
   const annotated = new Set();
   for (let i = 0; i < n; i++) {
     const o = i * STRIDE;
-    if ((scene.items[o] === SHAPE.dim || scene.items[o] === SHAPE.text) && scene.items[o + 4]) annotated.add(scene.items[o + 4]);
+    const shape = scene.items[o + F.shape];
+    if ((shape === SHAPE.dim || shape === SHAPE.text) && scene.items[o + F.thread]) annotated.add(scene.items[o + F.thread]);
   }
-  scene.prepared = { labels, styles, count: n, annotated: annotated.size };
+  scene.prepared = { labels, styles, count: n, annotated: annotated.size, layout: layout() };
   return scene;
 }
 
@@ -125,7 +146,7 @@ export function itemsOfLine(scene, line) {
   const lines = scene.lines;
   const out = [];
   for (let o = 0, i = 0; o < it.length; o += STRIDE, i++) {
-    for (let k = it[o + 6], e = k + it[o + 7]; k < e; k++) {
+    for (let k = it[o + F.line_start], e = k + it[o + F.line_len]; k < e; k++) {
       if (lines[k] === line) {
         out.push(i);
         break;
@@ -139,7 +160,7 @@ export function itemsOfLine(scene, line) {
 export function itemsOfPass(scene, thread, pass) {
   const it = scene.items;
   const out = [];
-  for (let o = 0, i = 0; o < it.length; o += STRIDE, i++) if (it[o + 4] === thread + 1 && it[o + 5] === pass + 1) out.push(i);
+  for (let o = 0, i = 0; o < it.length; o += STRIDE, i++) if (it[o + F.thread] === thread + 1 && it[o + F.pass] === pass + 1) out.push(i);
   return out;
 }
 
@@ -147,8 +168,8 @@ export function itemsOfPass(scene, thread, pass) {
 export function itemInfo(scene, i) {
   const it = scene.items;
   const o = i * STRIDE;
-  const lines = Array.from(scene.lines.subarray(it[o + 6], it[o + 6] + it[o + 7]));
-  return { thread: it[o + 4] - 1, pass: it[o + 5] - 1, lines, style: scene.prepared.styles[i] };
+  const lines = Array.from(scene.lines.subarray(it[o + F.line_start], it[o + F.line_start] + it[o + F.line_len]));
+  return { thread: it[o + F.thread] - 1, pass: it[o + F.pass] - 1, lines, style: scene.prepared.styles[i] };
 }
 
 /** A world→screen transform: X = tx + sx·x, Y = ty − sy·y. */
@@ -199,25 +220,26 @@ export function drawScene(painter, scene, xf, opts) {
   const X = (x) => xf.tx + xf.sx * x;
   const Y = (y) => xf.ty - xf.sy * y;
   const hi = opts.highlight;
+  // The cursor line's mark is lighter than what the pointer is over.
+  const haloAlpha = opts.light ? 0.22 : 0.45;
   const placed = [];
   const view = { w: opts.width, h: opts.height };
   const colourPen = (i) => {
     const o = i * STRIDE;
-    const shape = items[o];
+    const shape = items[o + F.shape];
     const base = PENS[styles[i]] || PENS.note;
-    const role = shape <= SHAPE.arrow ? items[o + 9] : 0;
-    if (styles[i] === 'area') return { ...base, fill: areaColour(items[o + 5] - 1, role) };
+    const role = shape <= SHAPE.arrow ? items[o + F.extra] : 0;
+    if (styles[i] === 'area') return { ...base, fill: areaColour(items[o + F.pass] - 1, role) };
     if (role >= 2 && ROLE_STROKE[role] && base.stroke) return { ...base, stroke: ROLE_STROKE[role] };
     return base;
   };
   const penOf = opts.stale ? (i) => greyPen(colourPen(i)) : colourPen;
   const drawItem = (i, glow) => {
     const o = i * STRIDE;
-    const shape = items[o];
-    let pen = penOf(i);
-    if (glow) pen = { ...pen, stroke: HIGHLIGHT, width: (pen.width || 1) + 2.5, alpha: 1, text: '#b45309', dash: pen.dash };
-    const c = items[o + 2];
-    const n = items[o + 3];
+    const shape = items[o + F.shape];
+    const pen = penOf(i);
+    const c = items[o + F.coord_start];
+    const n = items[o + F.coord_len];
     switch (shape) {
       case SHAPE.polyline:
       case SHAPE.polygon: {
@@ -227,26 +249,30 @@ export function drawScene(painter, scene, xf, opts) {
           pts[k + 1] = Y(coords[c + k + 1]);
         }
         const closed = shape === SHAPE.polygon;
-        if (glow && closed) painter.path(pts, true, { fill: 'rgba(245,158,11,0.45)', stroke: HIGHLIGHT, width: 1.5 });
+        // A highlight is a halo under the item, which keeps its own colours on top.
+        if (glow === 'halo') painter.path(pts, closed, closed ? { stroke: HIGHLIGHT, width: 3, alpha: 2 * haloAlpha } : { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
         else painter.path(pts, closed, pen);
         break;
       }
       case SHAPE.circle:
-        painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, pen);
+        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
+        else painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, pen);
         break;
       case SHAPE.arrow:
-        arrow(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), pen);
+        if (glow === 'halo') painter.path(new Float64Array([X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]), false, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
+        else arrow(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), pen);
         break;
       case SHAPE.dim:
+        if (glow === 'halo') break;
         dimension(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), coords[c + 4],
-          labelText(scene, items[o + 8], opts.tr), pen, view);
+          labelText(scene, items[o + F.label], opts.tr), glow ? { ...pen, stroke: HIGHLIGHT_TEXT, text: HIGHLIGHT_TEXT } : pen, view);
         break;
       case SHAPE.text: {
-        const s = labelText(scene, items[o + 8], opts.tr);
-        if (!s) break;
+        const s = labelText(scene, items[o + F.label], opts.tr);
+        if (!s || glow === 'halo') break;
         const x = X(coords[c]) + coords[c + 2];
         const y = Y(coords[c + 1]) - coords[c + 3];
-        const anchor = ANCHORS[items[o + 9]] || 'start';
+        const anchor = ANCHORS[items[o + F.extra]] || 'start';
         if (!glow) {
           // Skip a text that would overprint one already drawn.
           const w = painter.measure(s);
@@ -255,11 +281,12 @@ export function drawScene(painter, scene, xf, opts) {
           if (placed.some((b) => box[0] < b[2] && b[0] < box[2] && box[1] < b[3] && b[1] < box[3])) break;
           placed.push(box);
         }
-        painter.text(x, y, s, pen, anchor, 'middle');
+        painter.text(x, y, s, glow ? { ...pen, text: HIGHLIGHT_TEXT } : pen, anchor, 'middle');
         break;
       }
       case SHAPE.marker:
-        marker(painter, X(coords[c]), Y(coords[c + 1]), items[o + 9], pen);
+        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), 7, { fill: HIGHLIGHT, alpha: haloAlpha });
+        else marker(painter, X(coords[c]), Y(coords[c + 1]), items[o + F.extra], pen);
         break;
     }
   };
@@ -285,13 +312,13 @@ export function drawScene(painter, scene, xf, opts) {
   const mask = slots.length - 1;
   for (let i = 0; i < count; i++) {
     const o = i * STRIDE;
-    const shape = items[o];
+    const shape = items[o + F.shape];
     if (shape !== SHAPE.polyline && shape !== SHAPE.polygon) {
       rest.push(i);
       continue;
     }
-    const c = items[o + 2];
-    const n = items[o + 3];
+    const c = items[o + F.coord_start];
+    const n = items[o + F.coord_len];
     let x0 = Infinity;
     let y0 = Infinity;
     let x1 = -Infinity;
@@ -311,9 +338,9 @@ export function drawScene(painter, scene, xf, opts) {
     }
     if (cull && (x1 < -M || y1 < -M || x0 > right || y0 > bottom)) continue;
     const style = styles[i];
-    const role = items[o + 9];
+    const role = items[o + F.extra];
     // A pen per style, role and shape; area fills also per pass (a colour each).
-    const key = style === 'area' ? `area:${items[o + 4]}:${items[o + 5]}:${role}` : (items[o + 1] * 8 + role) * 8 + shape;
+    const key = style === 'area' ? `area:${items[o + F.thread]}:${items[o + F.pass]}:${role}` : (items[o + F.style] * 8 + role) * 8 + shape;
     let b = batches.get(key);
     if (!b) {
       b = { id: order.length, first: i, spans: [] };
@@ -326,7 +353,7 @@ export function drawScene(painter, scene, xf, opts) {
     let repeat = false;
     for (let j = slots[slot]; j !== 0; slot = (slot + 1) & mask, j = slots[slot]) {
       const q = (j - 1) * STRIDE;
-      if (batchOf[j - 1] === b.id && items[q + 3] === n && samePoints(buf, items[q + 2], c, n)) {
+      if (batchOf[j - 1] === b.id && items[q + F.coord_len] === n && samePoints(buf, items[q + F.coord_start], c, n)) {
         repeat = true;
         break;
       }
@@ -337,16 +364,22 @@ export function drawScene(painter, scene, xf, opts) {
   }
   for (const b of order) {
     const o = b.first * STRIDE;
-    painter.paths(buf, b.spans, items[o] === SHAPE.polygon, penOf(b.first));
+    painter.paths(buf, b.spans, items[o + F.shape] === SHAPE.polygon, penOf(b.first));
   }
   // With many threads, dimensions and texts of the chosen thread only.
   const only = scene.prepared.annotated > MAX_ANNOTATED ? (opts.thread ?? 0) + 1 : 0;
   for (const i of rest) {
     const o = i * STRIDE;
-    if (only && items[o + 4] && items[o + 4] !== only && (items[o] === SHAPE.dim || items[o] === SHAPE.text)) continue;
+    const shape = items[o + F.shape];
+    if (only && items[o + F.thread] && items[o + F.thread] !== only && (shape === SHAPE.dim || shape === SHAPE.text)) continue;
     drawItem(i, false);
   }
-  if (hi && hi.size && !opts.stale) for (const i of hi) if (i < count) drawItem(i, true);
+  if (hi && hi.size && !opts.stale) {
+    // Every halo first, then the items over them in their own colours:
+    // a highlight marks what it highlights without washing it out.
+    for (const i of hi) if (i < count) drawItem(i, 'halo');
+    for (const i of hi) if (i < count) drawItem(i, true);
+  }
   painter.end();
 }
 
@@ -508,16 +541,7 @@ export function canvasPainter(ctx) {
     circle(x, y, r, pen) {
       ctx.beginPath();
       ctx.arc(x, y, Math.max(r, 0), 0, Math.PI * 2);
-      if (pen.fill) {
-        ctx.fillStyle = pen.fill;
-        ctx.fill();
-      }
-      if (pen.stroke) {
-        ctx.setLineDash(pen.dash || []);
-        ctx.strokeStyle = pen.stroke;
-        ctx.lineWidth = pen.width || 1;
-        ctx.stroke();
-      }
+      this.finish(true, pen);
     },
     text(x, y, s, pen, anchor, baseline, angle = 0) {
       ctx.save();
@@ -611,9 +635,9 @@ export function svgPainter(width, height) {
 export function itemDistance(scene, i, xf, px, py) {
   const { items, coords } = scene;
   const o = i * STRIDE;
-  const shape = items[o];
-  const c = items[o + 2];
-  const n = items[o + 3];
+  const shape = items[o + F.shape];
+  const c = items[o + F.coord_start];
+  const n = items[o + F.coord_len];
   const X = (x) => xf.tx + xf.sx * x;
   const Y = (y) => xf.ty - xf.sy * y;
   if (shape === SHAPE.polyline || shape === SHAPE.polygon) {

@@ -2,7 +2,8 @@
 //!
 //! The site is: `index.html`, `docs.html` and the other files of
 //! `www/static/`, `app.js` (the app bundled by esbuild, with the
-//! wasm-bindgen glue), `screwcut-preview.js` (the embeddable
+//! wasm-bindgen glue), `worker.js` (its planning and drawing worker),
+//! `screwcut-preview.js` (the embeddable
 //! `<screwcut-preview>` element, bundled the same way without the editor),
 //! `screwcut_bg.wasm` (the core, size-optimised by the binaryen pinned in
 //! `www/package.json`; shared by both bundles) and `examples/` (every file
@@ -201,8 +202,9 @@ fn passed_count(line: &str) -> Option<u32> {
 
 /// Builds the site, serves it on a free local port and runs the Playwright
 /// tests in `tests/browser/` against it with the system Chromium: the app
-/// (`test.mjs`), then the documentation page of embedded previews
-/// (`docs.test.mjs`); fails when either fails.
+/// (`test.mjs`), its engine in a worker and on the page and a program too
+/// big to draw whole (`engine.test.mjs`), then the documentation page of
+/// embedded previews (`docs.test.mjs`); fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -216,8 +218,9 @@ pub fn browser_tests() -> Result {
     std::thread::spawn(move || serve_forever(listener, out));
     let url = format!("http://127.0.0.1:{port}/");
     let app = run("node", &["test.mjs", &url], Some(&dir));
+    let engine = run("node", &["engine.test.mjs", &url], Some(&dir));
     let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
-    app.and(docs)
+    app.and(engine).and(docs)
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
@@ -249,7 +252,9 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     }
     std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let esbuild = path_str(&www.join("node_modules").join(".bin").join("esbuild"))?;
-    for (entry, file) in [("src/main.js", "app.js"), ("src/embed/element.js", "screwcut-preview.js")] {
+    let entries =
+        [("src/main.js", "app.js"), ("src/worker.js", "worker.js"), ("src/embed/element.js", "screwcut-preview.js")];
+    for (entry, file) in entries {
         let outfile = format!("--outfile={}", path_str(&out.join(file))?);
         let mut args = vec![entry, "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];
         if release {

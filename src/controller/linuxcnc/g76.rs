@@ -71,6 +71,7 @@ pub fn block(r: &mut Reader, b: &Block) {
         e: read_e(r, b),
         l: read_l(r, b),
         tool_angle: r.param(P::LinuxToolAngle),
+        spindle: r.spindle(),
     };
     r.emit(Event::LinuxG76(Box::new(cycle)));
     r.arrive(Point::new(2.0 * x_end, z1), true, true, b.line);

@@ -111,7 +111,7 @@ pub struct ThreadInfo {
 }
 
 /// One pass of the chosen thread.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, PartialEq)]
 pub struct PassInfo {
     /// Start number.
     pub start: u32,
@@ -139,6 +139,37 @@ pub struct PassInfo {
     pub runout_to: Option<[f64; 2]>,
     /// Start of the screw-in.
     pub screw_in_from: Option<[f64; 2]>,
+}
+
+/// The passes of answer `v`'s property `key`, from their columns.
+pub fn passes(v: &JsValue, key: &str) -> Vec<PassInfo> {
+    let c = get(v, key);
+    let n = num(&c, "n") as usize;
+    let f = |name: &str| Float64Array::from(get(&c, name)).to_vec();
+    let u = |name: &str| Uint32Array::from(get(&c, name)).to_vec();
+    let (x, z, xe, ze, depth, infeed, area, shift, angle) =
+        (f("x"), f("z"), f("xEnd"), f("zEnd"), f("depth"), f("infeed"), f("area"), f("shift"), f("angle"));
+    let (rx, rz, sx, sz) = (f("runoutX"), f("runoutZ"), f("screwX"), f("screwZ"));
+    let (start, index, line_start, lines) = (u("start"), u("index"), u("lineStart"), u("lines"));
+    let role = js_sys::Uint8Array::from(get(&c, "role")).to_vec();
+    let opt = |a: f64, b: f64| (!a.is_nan()).then_some([a, b]);
+    (0..n)
+        .map(|i| PassInfo {
+            start: start[i],
+            index: index[i],
+            from: [x[i], z[i]],
+            to: [xe[i], ze[i]],
+            depth: depth[i],
+            infeed: infeed[i],
+            role: ["rough", "finish", "spring"][role[i] as usize].to_string(),
+            lines: lines[line_start[i] as usize..line_start[i + 1] as usize].to_vec(),
+            shift: shift[i],
+            angle: angle[i],
+            area: (!area[i].is_nan()).then_some(area[i]),
+            runout_to: opt(rx[i], rz[i]),
+            screw_in_from: opt(sx[i], sz[i]),
+        })
+        .collect()
 }
 
 /// A refused setting.

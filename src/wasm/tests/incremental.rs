@@ -35,7 +35,7 @@ fn edit_line(text: &str, n: isize, f: impl Fn(&str) -> String) -> String {
 fn snapshot(r: &JsValue) -> String {
     let diags: Vec<Diag> = field(r, "diagnostics");
     let threads: Vec<ThreadInfo> = field(r, "threads");
-    let passes: Vec<PassInfo> = field(r, "passes");
+    let passes: Vec<PassInfo> = passes(r, "passes");
     let scene_text = |key: &str| {
         let v = get(r, key);
         if v.is_null() {
@@ -176,7 +176,7 @@ fn parts_the_caller_has_are_not_sent_again() {
     let r3 = again(&late, &r2, 29, 1);
     assert_eq!(sent(&r3), ["passes", "tooth", "starts"]);
     assert_eq!(num(&r3, "threadsKey"), last);
-    let passes: Vec<PassInfo> = field(&r3, "passes");
+    let passes: Vec<PassInfo> = passes(&r3, "passes");
     assert!(close(passes[0].from[0], 38.0), "{:?}", passes[0].from);
     // Another edit to that pass: its start angles stay as they were, so the starts view is not sent.
     let later = edit_line(&late, -9, |_| "X38.05".into());
@@ -228,7 +228,7 @@ fn plan_summary_counts_without_drawing() {
     // It keeps nothing: the last plan is still the one update made.
     plan(G76_FANUC, "fanuc0i", "");
     wasm::plan_summary(O1006, "gsk980tdc", "").unwrap();
-    let p: Vec<PassInfo> = field(&wasm::thread_scenes(0, 1).unwrap(), "passes");
+    let p: Vec<PassInfo> = passes(&wasm::thread_scenes(0, 1).unwrap(), "passes");
     assert!(close(p[0].depth, 1.8));
 }
 
@@ -265,4 +265,27 @@ fn the_side_section_comes_as_pieces_to_a_caller_with_keys() {
     let full = plan(&text, "gsk980tdc", "");
     assert!(get(&get(&full, "side"), "pieces").is_undefined());
     assert!(scene(&get(&full, "side")).items.len() > 500);
+}
+
+/// Every view keeps its own session: two programs planned in turn by two
+/// sessions each resume from their own snapshot after a late edit, where
+/// one shared planner would have re-read the whole program on every switch.
+#[wasm_bindgen_test]
+fn each_view_keeps_its_own_session() {
+    let (a, b) = (wasm::Session::new(), wasm::Session::new());
+    let text_a = program(40);
+    let text_b = program(30).replace("G32 Z13 F2", "G32 Z14 F2");
+    let up = |s: &wasm::Session, t: &str| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    up(&a, &text_a);
+    up(&b, &text_b);
+    // A late edit to each, alternating: both resume near the end.
+    let a2 = edit_line(&text_a, -3, |l| l.replace("Z70", "Z71"));
+    let b2 = edit_line(&text_b, -3, |l| l.replace("Z70", "Z71"));
+    let ra = up(&a, &a2);
+    let rb = up(&b, &b2);
+    let lines_a = text_a.lines().count() as f64;
+    assert!(num(&ra, "resumedAt") > lines_a / 2.0, "a resumed at {}", num(&ra, "resumedAt"));
+    assert!(num(&rb, "resumedAt") > 100.0, "b resumed at {}", num(&rb, "resumedAt"));
+    // Each answers as a plan from scratch would.
+    assert_eq!(snapshot(&ra), snapshot(&wasm::Session::new().update(&a2, "gsk980tdc", "", 0, 1, -1.0, None).unwrap()));
 }

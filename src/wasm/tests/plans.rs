@@ -55,7 +55,7 @@ fn o1006_plans_five_passes_to_the_last_digit() {
     assert_eq!((t.line, t.end_line, t.source.as_str(), t.kind.as_str()), (5, 24, "g32", "straight"));
     assert_eq!((t.lead, t.pitch, t.starts, t.internal, t.passes), (2.0, 2.0, 1, false, 5));
     assert_eq!((t.crest, t.crest_source.as_str(), t.height), (48.0, "assumed", 1.3));
-    let passes: Vec<PassInfo> = field(&r, "passes");
+    let passes: Vec<PassInfo> = passes(&r, "passes");
     let xs: Vec<f64> = passes.iter().map(|p| p.from[0]).collect();
     assert_close(&xs, &[47.1, 46.5, 45.9, 45.5, 45.4]);
     assert_close(&passes.iter().map(|p| p.depth).collect::<Vec<_>>(), &[0.45, 0.75, 1.05, 1.25, 1.3]);
@@ -84,12 +84,12 @@ fn cycles_plan_their_passes() {
         (t[0].source.as_str(), t[0].lead, t[0].height, t[0].crest, t[0].crest_source.as_str()),
         ("g76", 6.0, 3.68, 68.0, "cycle")
     );
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     assert_close(&p.iter().map(|p| p.depth).collect::<Vec<_>>(), &[1.8, 2.545584, 3.117691, 3.48, 3.68]);
     assert_eq!(p.last().unwrap().role, "finish");
     // G78 degressive: 0.4, 0.4√2, 0.4√3, 0.8, then steps of Δdmin 0.1 to 1.25, finish 1.3 and a spring pass.
     let r = plan(G78_M30X2, "gsk980tdc", "");
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     let depths: Vec<f64> = p.iter().map(|p| p.depth).collect();
     assert_close(&depths, &[0.4, 0.565685, 0.69282, 0.8, 0.9, 1.0, 1.1, 1.2, 1.25, 1.3, 1.3]);
     let roles: Vec<&str> = p.iter().map(|p| p.role.as_str()).collect();
@@ -99,7 +99,7 @@ fn cycles_plan_their_passes() {
     let r = plan(G78_ALTERNATING, "gsk980tdc", "");
     let t: Vec<ThreadInfo> = field(&r, "threads");
     assert_eq!(t[0].infeed, "alternating");
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     let shifts: Vec<f64> = p.iter().map(|p| p.shift).collect();
     assert!(shifts[..4].windows(2).all(|w| w[0] * w[1] < 0.0), "{shifts:?}");
     let tan30 = 30f64.to_radians().tan();
@@ -110,7 +110,7 @@ fn cycles_plan_their_passes() {
     let r = plan(G92_TWO_START, "gsk980tdc", "");
     let t: Vec<ThreadInfo> = field(&r, "threads");
     assert_eq!((t[0].source.as_str(), t[0].starts, t[0].lead, t[0].pitch, t[0].passes), ("g92", 2, 3.0, 1.5, 8));
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     let starts: Vec<(u32, f64)> = p.iter().map(|p| (p.start, p.angle)).collect();
     assert_eq!(starts[..2], [(1, 0.0), (2, 180.0)]);
     assert_close(&p.iter().step_by(2).map(|p| p.from[0]).collect::<Vec<_>>(), &[23.2, 22.6, 22.2, 22.05]);
@@ -207,7 +207,7 @@ fn settings_are_applied_or_refused_with_a_reason() {
     let r = plan(O1006, "gsk980tdc", "textbook.depth_factor=1.2");
     let t: Vec<ThreadInfo> = field(&r, "threads");
     assert!(close(t[0].crest, 47.8));
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     assert!(close(p[0].depth, 0.35) && close(p[4].depth, 1.2));
     assert!(array(&get(&r, "settingErrors")).is_empty());
     // Refused lines are listed, the rest applies.
@@ -290,12 +290,12 @@ fn embeds_sharing_one_instance_do_not_see_each_other() {
     let coords = |r: &JsValue| Float64Array::from(get(&get(r, "side"), "coords")).to_vec();
     assert_eq!(coords(&a1), coords(&a2));
     assert_ne!(coords(&a1), coords(&b));
-    let pa: Vec<PassInfo> = field(&a2, "passes");
-    let pb: Vec<PassInfo> = field(&b, "passes");
+    let pa: Vec<PassInfo> = passes(&a2, "passes");
+    let pb: Vec<PassInfo> = passes(&b, "passes");
     assert_eq!((pa.len(), pb.len()), (5, 5));
     assert!(close(pb[0].depth, 1.8));
     // thread_scenes works on the last plan (O1006 again).
     let s = wasm::thread_scenes(0, 1).unwrap();
-    let p: Vec<PassInfo> = field(&s, "passes");
+    let p: Vec<PassInfo> = passes(&s, "passes");
     assert!(close(p[0].from[0], 47.1));
 }

@@ -79,7 +79,7 @@ fn o1006_tooth_scene_shows_each_depth() {
     let mut passes: Vec<u32> = areas.iter().filter_map(|a| a.pass).collect();
     passes.dedup();
     assert_eq!(passes, [0, 1, 2, 3, 4]);
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = super::helpers::passes(&r, "passes");
     let total: f64 = p.iter().map(|p| p.area.unwrap()).sum();
     let v = 1.3 * 1.3 * 30f64.to_radians().tan();
     assert!((total - v).abs() < 1e-3, "area {total} vs V of depth 1.3: {v}");
@@ -96,7 +96,7 @@ fn o1006_tooth_scene_shows_each_depth() {
 fn flank_infeed_moves_the_tool_along_a_flank() {
     let r = plan(G78_ALTERNATING, "gsk980tdc", "");
     let s = scene(&get(&r, "tooth"));
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     let tips = s.of("tool", Some("marker"));
     assert_eq!(tips.len(), p.len());
     for (m, p) in tips.iter().zip(&p) {
@@ -188,6 +188,22 @@ fn thread_and_start_choices_are_clamped() {
     // Renhe's two threads: the second one chosen.
     let r = wasm::update(RENHE_TAILS, "renhe", "", 1, 1, -1.0, None).unwrap();
     assert_eq!(num(&r, "thread"), 1.0);
-    let p: Vec<PassInfo> = field(&r, "passes");
+    let p: Vec<PassInfo> = passes(&r, "passes");
     assert_eq!(p[0].lines, [10, 11, 12]);
+}
+
+/// The record layout is defined once in Rust and read by name: every field
+/// of `pack::FIELDS` at its index, the names lists indexed by their codes.
+#[wasm_bindgen_test]
+fn scene_layout_names_every_field() {
+    let l = wasm::scene_layout();
+    assert_eq!(num(&l, "stride") as usize, crate::wasm::pack::STRIDE);
+    let fields = get(&l, "fields");
+    for (i, name) in crate::wasm::pack::FIELDS.iter().enumerate() {
+        assert_eq!(num(&fields, name) as usize, i, "{name}");
+    }
+    let styles = array(&get(&l, "styles"));
+    assert_eq!(styles[crate::diagram::Style::Cut.code() as usize].as_string().as_deref(), Some("cut"));
+    let shapes = array(&get(&l, "shapes"));
+    assert_eq!(shapes[4].as_string().as_deref(), Some("dim"));
 }

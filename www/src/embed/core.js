@@ -2,7 +2,8 @@
 // loaded the first time an element starts, and one IntersectionObserver
 // that starts each element when it comes near the viewport.
 
-import init, { update, style_names as styleNamesOf } from '../../pkg/screwcut.js';
+import init, { Session, style_names as styleNamesOf, scene_layout as sceneLayout } from '../../pkg/screwcut.js';
+import { setLayout } from '../render.js';
 
 /** The directory of this script: the wasm and, by default, the app are next to it. */
 export const HERE = new URL('./', import.meta.url);
@@ -11,13 +12,14 @@ let loading = null;
 let styleNames = null;
 
 /**
- * Loads the planner once for the whole page; resolves to
- * `{update, styleNames}` (see src/wasm.rs for `update`).
+ * Loads the planner once for the whole page; resolves to `{Session,
+ * styleNames}`. Each element plans in a `Session` of its own (src/wasm/session.rs).
  */
 export function loadCore() {
   loading ||= init({ module_or_path: new URL('screwcut_bg.wasm', HERE) }).then(() => {
     styleNames = styleNamesOf();
-    return { update, styleNames };
+    setLayout(sceneLayout());
+    return { Session, styleNames };
   });
   return loading;
 }

@@ -15,14 +15,16 @@
 // type; without it the program is listed read-only, unless `hide-code`), `app` (the full app the "Open in editor" link goes to; default: a
 // <meta name="screwcut-app" content="..."> of the page, else the app next to
 // this script), `lang` (en, zh). Every element on a page shares one wasm
-// instance, loaded when the first element comes into view; each element
-// plans and draws when it is scrolled near. Properties: `program` (get/set),
+// instance, loaded when the first element comes into view, and plans in a
+// session of its own; each element plans and draws when it is scrolled near. Properties: `program` (get/set),
 // `result` (the planner's last answer), `start()`. Event `screwcut-plan`
 // after every plan, with counts in `detail`.
 
-import { SceneView } from '../view.js';
+import { SceneView } from '../sceneview.js';
+import { bindCanvas } from '../input.js';
 import { textIn, labelIn } from '../i18n.js';
-import { esc, num, passTableHead, passTableRows } from '../table.js';
+import { esc, num } from '../table.js';
+import { VirtualRows, passHead, passRow, passObjects } from '../lists.js';
 import { jsonFragment } from '../fragment.js';
 import { HERE, loadCore, startWhenVisible, forget } from './core.js';
 import { HeldParts } from '../parts.js';
@@ -118,7 +120,9 @@ export class ScrewcutPreview extends HTMLElement {
 
   _build() {
     this._built = true;
-    for (const v of Object.values(this._views)) v.destroy();
+    for (const b of this._bindings || []) b.destroy();
+    this._bindings = [];
+    this._rows = null;
     this._views = {};
     const views = parseViews(this.getAttribute('view'));
     this._viewNames = views;
@@ -176,18 +180,36 @@ export class ScrewcutPreview extends HTMLElement {
     for (const name of this._viewNames) {
       if (name === 'table') continue;
       const canvas = this.shadowRoot.querySelector(`.view[data-view="${name}"] canvas`);
-      this._views[name] = new SceneView(canvas, {
-        styleNames: this._styleNames,
-        tr,
-        name,
-        stretch: name === 'side',
-        wheel: 'ctrl',
-        onHover: (info) => this._onHover(info),
-        onMove: (x, y) => this._moveTip(x, y),
-        onPick: (info) => {
-          if (this._editor && info.lines.length) this._gotoLine(info.lines[0]);
+      const view = new SceneView(canvas, { styleNames: this._styleNames, tr, name, stretch: name === 'side' });
+      this._views[name] = view;
+      const binding = bindCanvas(
+        canvas,
+        {
+          resize: (w, h, dpr) => view.setSize(w, h, dpr),
+          pan: (dx, dy) => view.pan(dx, dy),
+          zoom: (x, y, k) => view.zoomAt(x, y, k),
+          fit: () => view.fit(),
+          hover: (x, y, clientX, clientY) => {
+            const i = view.pick(x, y);
+            if (i !== view.hovered) {
+              view.hovered = i;
+              this._onHover(i >= 0 ? { ...view.info(i), x: clientX, y: clientY } : null);
+            } else if (i >= 0) this._moveTip(clientX, clientY);
+          },
+          leave: () => {
+            if (view.hovered >= 0) {
+              view.hovered = -1;
+              this._onHover(null);
+            }
+          },
+          pick: (x, y) => {
+            const info = view.info(view.pick(x, y));
+            if (info && this._editor && info.lines.length) this._gotoLine(info.lines[0]);
+          },
         },
-      });
+        { wheel: 'ctrl' },
+      );
+      this._bindings.push(binding);
     }
   }
 
@@ -207,6 +229,7 @@ export class ScrewcutPreview extends HTMLElement {
       if (text !== null) this._text = text;
       this._renderListing();
       this._core = core;
+      this._session ||= new core.Session();
       this._styleNames = core.styleNames;
       if (this._editor) this._editor.value = this.program;
       this._setState('ready');
@@ -240,11 +263,16 @@ export class ScrewcutPreview extends HTMLElement {
     const thread = this._thread ?? parseThread(this.getAttribute('thread'));
     let r;
     try {
-      r = this._held.fill(this._core.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
+      r = this._held.fill(this._session.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
     } catch (e) {
       this._held.clear();
       this._fail(e, true);
       return;
+    }
+    // The planner sends the passes as columns; the element's `result` keeps one object per pass.
+    if (r.passes && !Array.isArray(r.passes)) {
+      r.passColumns = r.passes;
+      r.passes = passObjects(r.passes);
     }
     this._result = r;
     const stale = r.alarms > 0 && this._lastGood;
@@ -254,7 +282,7 @@ export class ScrewcutPreview extends HTMLElement {
       view.setScene(shown[name], !!stale);
       view.setThread(shown.thread ?? 0);
     }
-    this._renderTable(shown);
+    this._renderTable(shown, !!stale);
     this._renderBar(r, !!stale);
     this._renderDiagnostics(r.diagnostics);
     this._updateLink();
@@ -294,11 +322,20 @@ export class ScrewcutPreview extends HTMLElement {
     for (const l of lines) this._listing.querySelector(`span[data-line="${l}"]`)?.classList.add('hot');
   }
 
-  _renderTable(r) {
+  _renderTable(r, stale) {
     if (!this._table) return;
     const t = (key) => this._t(key);
-    this._table.tHead.innerHTML = passTableHead(t);
-    this._table.tBodies[0].innerHTML = passTableRows(r.passes, t);
+    const head = passHead(t, r.units);
+    if (this._table.tHead.dataset.html !== head) {
+      this._table.tHead.innerHTML = head;
+      this._table.tHead.dataset.html = head;
+    }
+    this._rows ||= new VirtualRows(this._table.closest('.view.table'), this._table.tBodies[0], {
+      rowHeight: 21,
+      spacer: (h) => `<tr class="spacer" aria-hidden="true" style="height:${h}px"><td colspan="10"></td></tr>`,
+    });
+    const c = r.passColumns;
+    this._rows.set(c ? c.n : 0, (i, hot) => passRow(c, i, t, hot, stale));
   }
 
   _renderBar(r, stale) {
@@ -358,8 +395,7 @@ export class ScrewcutPreview extends HTMLElement {
     for (const view of Object.values(this._views)) {
       view.setHighlight(info && info.pass >= 0 ? new Set(view.itemsOfPass(info.thread, info.pass)) : null);
     }
-    const rows = this._table ? this._table.tBodies[0].rows : [];
-    for (const row of rows) row.classList.toggle('hot', !!info && info.thread === r?.thread && Number(row.dataset.pass) === info.pass);
+    this._rows?.mark(info && info.thread === r?.thread ? info.pass : -1);
     if (!info) {
       tip.hidden = true;
       this._markLines([]);

@@ -1,7 +1,9 @@
 //! Scenes as flat arrays, for moving bulk geometry across the wasm boundary
 //! as typed arrays instead of one JS object per point.
 //!
-//! Every item is [`STRIDE`] `u32`s in `items`:
+//! Every item is [`STRIDE`] `u32`s in `items`, named by [`FIELDS`] (the one
+//! definition of the record: the JavaScript side reads the field offsets by
+//! name from it):
 //! `[shape, style, coord_start, coord_len, thread + 1, pass + 1, line_start, line_len, label + 1, extra]`
 //! (0 for "none" in the thread, pass and label fields). `coords` holds the
 //! numbers of each shape: polyline/polygon `x0 y0 x1 y1 …`; circle `cx cy r`;
@@ -14,10 +16,23 @@ use serde::Serialize;
 
 use crate::thread::Role;
 
-use super::scene::{Anchor, Glyph, Item, Rect, Scene, Shape, ViewKind};
+use crate::diagram::scene::{Anchor, Glyph, Item, Rect, Scene, Shape, ViewKind};
+
+/// The fields of an item record, in order.
+pub const FIELDS: [&str; 10] =
+    ["shape", "style", "coord_start", "coord_len", "thread", "pass", "line_start", "line_len", "label", "extra"];
 
 /// Number of `u32`s per item.
-pub const STRIDE: usize = 10;
+pub const STRIDE: usize = FIELDS.len();
+
+/// Anchor codes of texts, in the order of their numbers.
+pub const ANCHORS: [&str; 3] = ["start", "middle", "end"];
+
+/// Glyph codes of markers, in the order of their numbers.
+pub const GLYPHS: [&str; 3] = ["dot", "bar", "cross"];
+
+/// Role codes of pass items (0: no role), in the order of their numbers.
+pub const ROLES: [&str; 4] = ["", "rough", "finish", "spring"];
 
 /// Shape codes, in the order of their numbers.
 pub const SHAPES: [&str; 7] = ["polyline", "polygon", "circle", "arrow", "dim", "text", "marker"];
@@ -149,4 +164,40 @@ fn push_item(p: &mut Packed, item: &Item, label_count: &mut u32) {
         label,
         extra,
     ]);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagram::{Style, side};
+    use crate::{Dialect, plan::plan_default};
+
+    #[test]
+    fn packing_keeps_every_item() {
+        let plan = plan_default(include_str!("../../examples/o1006.nc"), Dialect::Gsk980tdc);
+        let scene = side(&plan);
+        let p = pack(&scene);
+        assert_eq!(p.items.len(), scene.items.len() * STRIDE);
+        let labels = p.labels.split(RECORD_SEP).count();
+        let labelled = scene.items.iter().filter(|i| matches!(i.shape, Shape::Dim { .. } | Shape::Text { .. })).count();
+        assert_eq!(labels, labelled);
+        // The first cut of the first pass: a polyline of 4 numbers with its thread, pass and line.
+        let k = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
+        let rec = &p.items[k * STRIDE..(k + 1) * STRIDE];
+        let f = |name: &str| rec[FIELDS.iter().position(|n| *n == name).unwrap()];
+        assert_eq!(SHAPES[f("shape") as usize], "polyline");
+        assert_eq!(f("style"), Style::Cut.code());
+        assert_eq!(
+            &p.coords[f("coord_start") as usize..(f("coord_start") + f("coord_len")) as usize],
+            &[70.0, 23.55, 13.0, 23.55]
+        );
+        assert_eq!((f("thread"), f("pass")), (1, 1));
+        assert_eq!(&p.lines[f("line_start") as usize..(f("line_start") + f("line_len")) as usize], &[6]);
+        assert_eq!(
+            Style::ALL.iter().map(|s| s.code()).collect::<Vec<_>>(),
+            (0..Style::ALL.len() as u32).collect::<Vec<_>>()
+        );
+        assert_eq!(ANCHORS[anchor_code(Anchor::End) as usize], "end");
+        assert_eq!(GLYPHS[glyph_code(Glyph::Cross) as usize], "cross");
+    }
 }

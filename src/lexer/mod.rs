@@ -4,7 +4,13 @@
 //! diagnostic positioned at the offending characters, and the block that has
 //! it is marked so the interpreter skips it.
 
-use crate::block::{Block, BlockKind, Number, Word};
+mod number;
+mod source;
+
+use number::{NumAcc, NumError};
+use source::{Ascii, Ch, OTHER, Src, fold};
+
+use crate::block::{Block, BlockKind, Word};
 use crate::controller::Rules;
 use crate::diagnostic::{Code, Diagnostics};
 use crate::span::Span;
@@ -21,85 +27,6 @@ pub struct LexLimits {
 impl Default for LexLimits {
     fn default() -> Self {
         LexLimits { block_chars: 256, digits: 8 }
-    }
-}
-
-/// A character of the line being lexed, after folding full-width forms.
-#[derive(Clone, Copy)]
-struct Ch {
-    /// ASCII byte after folding; `0x80` for any other non-ASCII character.
-    b: u8,
-    /// Whether this came from a full-width or look-alike character.
-    folded: bool,
-    /// Byte offset of the original character in the program.
-    at: u32,
-}
-
-const OTHER: u8 = 0x80;
-
-/// The characters of one line as the lexer sees them: a folded byte, its
-/// original offset and whether it was folded; index `end()` is a NUL sentinel.
-trait Src {
-    fn b(&self, i: usize) -> u8;
-    fn at(&self, i: usize) -> usize;
-    fn folded(&self, i: usize) -> bool;
-    fn end(&self) -> usize;
-}
-
-/// An ASCII line: bytes are characters, no copy needed.
-struct Ascii<'a> {
-    bytes: &'a [u8],
-    base: usize,
-}
-
-impl Src for Ascii<'_> {
-    #[inline]
-    fn b(&self, i: usize) -> u8 {
-        *self.bytes.get(i).unwrap_or(&0)
-    }
-    #[inline]
-    fn at(&self, i: usize) -> usize {
-        self.base + i.min(self.bytes.len())
-    }
-    #[inline]
-    fn folded(&self, _: usize) -> bool {
-        false
-    }
-    #[inline]
-    fn end(&self) -> usize {
-        self.bytes.len()
-    }
-}
-
-/// A line with non-ASCII characters, decoded and folded (with a sentinel).
-impl Src for &[Ch] {
-    #[inline]
-    fn b(&self, i: usize) -> u8 {
-        self[i].b
-    }
-    #[inline]
-    fn at(&self, i: usize) -> usize {
-        self[i].at as usize
-    }
-    #[inline]
-    fn folded(&self, i: usize) -> bool {
-        self[i].folded
-    }
-    #[inline]
-    fn end(&self) -> usize {
-        self.len() - 1
-    }
-}
-
-/// Folds a non-ASCII character to its ASCII twin when it has one.
-fn fold(c: char) -> Option<u8> {
-    let u = c as u32;
-    match u {
-        0xFF01..=0xFF5E => Some((u - 0xFEE0) as u8),
-        0x3000 => Some(b' '),
-        0x3002 => Some(b'.'), // ideographic full stop, typed for '.' in Chinese input mode
-        0x2212 => Some(b'-'), // minus sign from documents
-        _ => None,
     }
 }
 
@@ -569,110 +496,9 @@ impl<'c, S: Src> LineLexer<'c, S> {
     }
 }
 
-enum NumError {
-    Malformed,
-    TooManyDigits(usize),
-}
-
-const POW10: [f64; 23] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
-    1e21, 1e22,
-];
-
-/// A number being read digit by digit: the mantissa is an integer and the
-/// value one correctly rounded division, so `27.4286` reads as the same
-/// `f64` Rust's parser gives.
-#[derive(Default)]
-struct NumAcc {
-    neg: bool,
-    mantissa: u64,
-    /// Digits read, before and after the point.
-    digits: usize,
-    /// `digits` when the point was read.
-    point_at: Option<usize>,
-    malformed: bool,
-}
-
-impl NumAcc {
-    /// Takes one more character if it continues the number.
-    #[inline]
-    fn push(&mut self, c: u8) -> bool {
-        let d = c.wrapping_sub(b'0');
-        if d < 10 {
-            // Wraps only past 19 digits, which `finish` refuses anyway.
-            self.mantissa = self.mantissa.wrapping_mul(10).wrapping_add(d as u64);
-            self.digits += 1;
-            true
-        } else if c == b'.' && self.point_at.is_none() {
-            self.point_at = Some(self.digits);
-            true
-        } else {
-            false
-        }
-    }
-
-    /// The number, or why it is not one. Significant digits exclude leading
-    /// zeros and trailing zeros of the fraction.
-    fn finish(self, max_digits: usize) -> Result<Number, NumError> {
-        let digits = self.digits;
-        if self.malformed || digits == 0 {
-            return Err(NumError::Malformed);
-        }
-        let int_digits = self.point_at.unwrap_or(digits);
-        let frac = digits - int_digits;
-        if digits > max_digits {
-            if digits > 19 {
-                return Err(NumError::TooManyDigits(digits));
-            }
-            let (mut m, mut f) = (self.mantissa, frac);
-            while f > 0 && m != 0 && m % 10 == 0 {
-                m /= 10;
-                f -= 1;
-            }
-            let sig = if m == 0 { 0 } else { m.ilog10() as usize + 1 };
-            if sig > max_digits {
-                return Err(NumError::TooManyDigits(sig));
-            }
-        }
-        let mut value = if frac < POW10.len() {
-            self.mantissa as f64 / POW10[frac]
-        } else {
-            self.mantissa as f64 / 10f64.powi(frac as i32)
-        };
-        if self.neg {
-            value = -value;
-        }
-        if value == 0.0 {
-            value = 0.0; // no negative zero
-        }
-        Ok(Number {
-            value,
-            has_point: self.point_at.is_some(),
-            int_digits: int_digits.min(255) as u8,
-            frac_digits: frac.min(255) as u8,
-        })
-    }
-}
-
-/// Parses `[+-]digits[.digits]` (the lexer reads numbers the same way, in its stream).
-#[cfg(test)]
-fn parse_number(raw: &[u8], max_digits: usize) -> Result<Number, NumError> {
-    let mut acc = NumAcc::default();
-    let mut body = raw;
-    if let Some(&c @ (b'-' | b'+')) = raw.first() {
-        acc.neg = c == b'-';
-        body = &raw[1..];
-    }
-    for &c in body {
-        if !acc.push(c) {
-            acc.malformed = true;
-        }
-    }
-    acc.finish(max_digits)
-}
-
 #[cfg(test)]
 mod tests {
+    use super::number::parse_number;
     use super::*;
 
     fn lex(text: &str) -> (Vec<Block>, Vec<crate::diagnostic::Diagnostic>) {

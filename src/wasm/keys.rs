@@ -12,67 +12,15 @@
 //! finaliser spreads any change over the 52 bits a JavaScript number keeps exactly.
 
 use std::hash::{Hash, Hasher};
+
+pub use crate::hash::KeyHasher;
 use std::mem::discriminant;
 
 use crate::motion::{ArcData, Move, Point};
 use crate::plan::Plan;
 use crate::thread::{Pass, Thread};
 
-use super::packed::Packed;
-
-/// A fast streaming hasher for content keys (not for hash tables facing untrusted keys).
-#[derive(Clone, Copy, Debug)]
-pub struct KeyHasher(u64);
-
-const K: u64 = 0x517c_c1b7_2722_0a95;
-
-impl Default for KeyHasher {
-    fn default() -> KeyHasher {
-        KeyHasher(0x2545_f491_4f6c_dd1d)
-    }
-}
-
-impl Hasher for KeyHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        let mut chunks = bytes.chunks_exact(8);
-        for c in &mut chunks {
-            self.write_u64(u64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]));
-        }
-        let rest = chunks.remainder();
-        if !rest.is_empty() {
-            let mut b = [0u8; 8];
-            b[..rest.len()].copy_from_slice(rest);
-            // The length keeps "ab" and "ab\0" apart.
-            self.write_u64(u64::from_le_bytes(b) ^ ((rest.len() as u64) << 56));
-        }
-    }
-
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(K);
-    }
-
-    fn write_u32(&mut self, v: u32) {
-        self.write_u64(u64::from(v));
-    }
-
-    fn write_u8(&mut self, v: u8) {
-        self.write_u64(u64::from(v));
-    }
-
-    fn write_usize(&mut self, v: usize) {
-        self.write_u64(v as u64);
-    }
-
-    fn finish(&self) -> u64 {
-        // The MurmurHash3 finaliser.
-        let mut h = self.0;
-        h ^= h >> 33;
-        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
-        h ^= h >> 33;
-        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
-        h ^ (h >> 33)
-    }
-}
+use super::pack::Packed;
 
 /// A key as a JavaScript number: the low 52 bits of a hash, exact as an `f64`.
 pub fn js_key(h: u64) -> f64 {
@@ -149,6 +97,8 @@ pub fn hash_pass(h: &mut KeyHasher, p: &Pass) {
         area,
         // Where the motions are in the plan does not change the drawing: the motions themselves are keyed.
         moves: _,
+        // The spindle and the shop-floor figures are not drawn.
+        spindle: _,
     } = p;
     h.write_u32(*start);
     h.write_u32(*index);
@@ -194,6 +144,7 @@ pub fn thread_key(t: &Thread) -> u64 {
         passes,
         depth_dir,
         first_move: _, // not drawn
+        shop: _,       // not drawn
     } = t;
     let mut h = KeyHasher::default();
     h.write_u32(*line);

@@ -10,11 +10,12 @@ use std::hash::{BuildHasherDefault, Hasher};
 use crate::motion::Move;
 use crate::plan::Plan;
 
-use super::fingerprint::{KeyHasher, combine, hash_move, packed_key};
-use super::packed::{Packed, RECORD_SEP, STRIDE, pack};
-use super::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
-use super::side::{
-    Band, Layout, axis, capped_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item, work_extent_in,
+use super::keys::{KeyHasher, combine, hash_move, packed_key};
+use super::pack::{Packed, RECORD_SEP, STRIDE, pack};
+use crate::diagram::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
+use crate::diagram::side::{
+    Band, Layout, axis, capped_note, detail_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item,
+    work_extent_in,
 };
 
 /// Motions per block of other motions.
@@ -161,7 +162,7 @@ impl SideMemo {
     }
 
     /// The packed side section of `plan`, whose threads have the keys
-    /// `thread_keys` ([`super::fingerprint::thread_key`]); pieces are reused
+    /// `thread_keys` ([`super::keys::thread_key`]); pieces are reused
     /// from the last call where their keys match.
     pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Packed {
         let b = self.build(plan, thread_keys);
@@ -228,6 +229,7 @@ impl SideMemo {
             let (kb, kf) = pieces.take_pair(keys, || {
                 let (mut back, mut front) = (Vec::new(), Vec::new());
                 thread_items(plan, &layout.feeds, ti, t, &mut back, &mut front);
+                front.extend(detail_note(ti, t, &layout.details[ti]).map(|i| (i, false)));
                 (Chunk::of(back), Chunk::of(front))
             });
             order.push(kb);
@@ -250,7 +252,7 @@ impl SideMemo {
             order.push(pieces.take(h.finish(), || Chunk::of(motions(moves, owner, has_threads))));
         }
         // Runs of passes of one thread, in cutting order.
-        let paths: Vec<_> = layout.paths.iter().filter(|p| p.end() <= drawn).collect();
+        let paths: Vec<_> = layout.paths.iter().collect();
         let mut i = 0;
         while i < paths.len() {
             let mut j = i + 1;
@@ -355,10 +357,10 @@ fn join(head: Packed, pieces: &[&Chunk]) -> Packed {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagram::fingerprint::PlanKeys;
     use crate::diagram::side;
     use crate::dialect::Dialect;
     use crate::settings::Settings;
+    use crate::wasm::keys::PlanKeys;
 
     /// Threads turned on their own diameters (13 lines each), as an editor would hold them.
     fn program(threads: usize) -> String {

@@ -1,0 +1,180 @@
+//! The functions JavaScript calls: the tables the app's panels show (dialects,
+//! settings, style and shape names, the scene record layout), planning
+//! without a session, and the default session of pages that keep one.
+//!
+//! Nothing here may panic: a panic aborts the wasm instance and the page
+//! loses its planner. Inputs are validated and errors come back as values
+//! (`Err` becomes a thrown JS `Error` with a message; setting errors are
+//! listed in the result).
+//!
+//! Bulk geometry crosses as typed arrays ([`super::pack`]); the rest
+//! (diagnostics, threads, setting tables) through serde-wasm-bindgen.
+
+use js_sys::{Array, Float64Array, Object};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+use super::js::{dialect, set, settings_from, to_js};
+use super::session::Session;
+use crate::diagram;
+use crate::dialect::Dialect;
+use crate::settings::{Kind, Settings};
+
+/// A dialect for the selector.
+#[derive(Serialize)]
+struct DialectInfo {
+    name: &'static str,
+    title: &'static str,
+}
+
+/// The dialects: `[{name, title}]`.
+#[wasm_bindgen]
+pub fn dialects() -> Result<JsValue, JsValue> {
+    let list: Vec<DialectInfo> =
+        Dialect::ALL.iter().map(|d| DialectInfo { name: d.name(), title: d.title() }).collect();
+    to_js(&list)
+}
+
+/// One setting for the settings panel.
+#[derive(Serialize)]
+struct SettingInfo {
+    name: &'static str,
+    kind: &'static str,
+    choices: &'static [&'static str],
+    default: f64,
+    min: f64,
+    max: f64,
+    unit: &'static str,
+    help: &'static str,
+    help_zh: &'static str,
+}
+
+/// The settings of a dialect with their defaults, units, ranges and help:
+/// `[{name, kind: int|float|bool|choice, choices, default, min, max, unit, help, help_zh}]`.
+#[wasm_bindgen]
+pub fn settings_table(dialect_name: &str) -> Result<JsValue, JsValue> {
+    let s = Settings::new(dialect(dialect_name)?);
+    let list: Vec<SettingInfo> = s
+        .entries()
+        .map(|(d, v)| {
+            let (kind, choices): (&str, &'static [&'static str]) = match d.kind {
+                Kind::Int => ("int", &[]),
+                Kind::Float => ("float", &[]),
+                Kind::Bool => ("bool", &[]),
+                Kind::Choice(c) => ("choice", c),
+            };
+            SettingInfo {
+                name: d.name,
+                kind,
+                choices,
+                default: v,
+                min: d.min,
+                max: d.max,
+                unit: d.unit,
+                help: d.help,
+                help_zh: d.help_zh,
+            }
+        })
+        .collect();
+    to_js(&list)
+}
+
+/// The style names, indexed by the packed style code.
+#[wasm_bindgen]
+pub fn style_names() -> Array {
+    diagram::Style::ALL.iter().map(|s| JsValue::from_str(s.name())).collect()
+}
+
+/// The shape names, indexed by the packed shape code.
+#[wasm_bindgen]
+pub fn shape_names() -> Array {
+    super::pack::SHAPES.iter().map(|s| JsValue::from_str(s)).collect()
+}
+
+/// The layout of a packed scene's item records, read by name on the
+/// JavaScript side: `{stride, fields: {shape: 0, style: 1, …}, shapes,
+/// styles, anchors, glyphs, roles}` (each list indexed by its code).
+#[wasm_bindgen]
+pub fn scene_layout() -> JsValue {
+    let o = Object::new();
+    let fields = Object::new();
+    for (i, name) in super::pack::FIELDS.iter().enumerate() {
+        set(&fields, name, &(i as u32).into());
+    }
+    let names = |list: &[&str]| -> Array { list.iter().map(|s| JsValue::from_str(s)).collect() };
+    set(&o, "stride", &(super::pack::STRIDE as u32).into());
+    set(&o, "fields", &fields.into());
+    set(&o, "shapes", &names(&super::pack::SHAPES).into());
+    let styles: Vec<&str> = diagram::Style::ALL.iter().map(|s| s.name()).collect();
+    set(&o, "styles", &names(&styles).into());
+    set(&o, "anchors", &names(&super::pack::ANCHORS).into());
+    set(&o, "glyphs", &names(&super::pack::GLYPHS).into());
+    set(&o, "roles", &names(&super::pack::ROLES).into());
+    o.into()
+}
+
+/// The counts of a plan of `text` (planned from scratch, nothing drawn or
+/// kept): `{moves, threads, passes, diagnostics, alarms}`. For timing the planner.
+#[wasm_bindgen]
+pub fn plan_summary(text: &str, dialect_name: &str, settings: &str) -> Result<JsValue, JsValue> {
+    let (s, _) = settings_from(dialect(dialect_name)?, settings);
+    let plan = crate::plan(text, &s);
+    let o = Object::new();
+    set(&o, "moves", &(plan.moves.len() as u32).into());
+    set(&o, "threads", &(plan.threads.len() as u32).into());
+    set(&o, "passes", &(plan.threads.iter().map(|t| t.passes.len()).sum::<usize>() as u32).into());
+    set(&o, "diagnostics", &(plan.diagnostics.len() as u32).into());
+    let alarms = plan.diagnostics.iter().filter(|d| d.severity == crate::Severity::Error).count();
+    set(&o, "alarms", &(alarms as u32).into());
+    Ok(o.into())
+}
+
+/// The whole plan of `text` as JSON (the CLI's `--json`), for download.
+#[wasm_bindgen]
+pub fn plan_json(text: &str, dialect_name: &str, settings: &str) -> Result<String, JsValue> {
+    let (s, _) = settings_from(dialect(dialect_name)?, settings);
+    Ok(crate::plan(text, &s).to_json())
+}
+
+thread_local! {
+    /// The default session, for pages that plan one program.
+    static DEFAULT: Session = Session::new();
+}
+
+/// [`Session::update`] on the default session.
+#[wasm_bindgen]
+pub fn update(
+    text: &str,
+    dialect_name: &str,
+    settings: &str,
+    thread: i32,
+    start: u32,
+    known_diagnostics: f64,
+    known: Option<Vec<f64>>,
+) -> Result<JsValue, JsValue> {
+    DEFAULT.with(|s| s.update(text, dialect_name, settings, thread, start, known_diagnostics, known))
+}
+
+/// [`Session::thread_scenes`] on the default session.
+#[wasm_bindgen]
+pub fn thread_scenes(thread: i32, start: u32) -> Result<JsValue, JsValue> {
+    DEFAULT.with(|s| s.thread_scenes(thread, start))
+}
+
+/// [`Session::moves`] on the default session.
+#[wasm_bindgen]
+pub fn moves() -> Float64Array {
+    DEFAULT.with(Session::moves)
+}
+
+/// [`Session::side_scene_as`] on the default session.
+#[wasm_bindgen]
+pub fn side_scene_as(format: &str) -> Result<JsValue, JsValue> {
+    DEFAULT.with(|s| s.side_scene_as(format))
+}
+
+/// [`Session::threads_as`] on the default session.
+#[wasm_bindgen]
+pub fn threads_as(format: &str) -> Result<JsValue, JsValue> {
+    DEFAULT.with(|s| s.threads_as(format))
+}

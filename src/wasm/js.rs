@@ -1,0 +1,242 @@
+//! JavaScript values of the core's data: errors, serde-wasm-bindgen
+//! objects, scenes as typed arrays, diagnostics with UTF-16 positions,
+//! thread summaries, settings read from `NAME=VALUE` lines.
+
+use js_sys::{Float64Array, Object, Reflect, Uint32Array};
+use serde::Serialize;
+use wasm_bindgen::JsValue;
+
+use super::keys::js_key;
+use super::memo::SidePieces;
+use super::pack::Packed;
+use crate::dialect::Dialect;
+use crate::plan::Plan;
+use crate::settings::Settings;
+use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind};
+
+/// A JavaScript `Error` with `msg`.
+pub fn err(msg: impl std::fmt::Display) -> JsValue {
+    js_sys::Error::new(&msg.to_string()).into()
+}
+
+/// `v` as a plain JavaScript value (maps as objects).
+pub fn to_js<T: Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
+    v.serialize(&serde_wasm_bindgen::Serializer::new().serialize_maps_as_objects(true)).map_err(err)
+}
+
+/// Sets `obj[key] = value`.
+pub fn set(obj: &Object, key: &str, value: &JsValue) {
+    // Setting a property on a plain object cannot fail.
+    let _ = Reflect::set(obj, &JsValue::from_str(key), value);
+}
+
+/// The dialect named `name`, or an error listing the names.
+pub fn dialect(name: &str) -> Result<Dialect, JsValue> {
+    Dialect::parse(name).ok_or_else(|| err(format!("unknown dialect '{name}' ({})", Dialect::names())))
+}
+
+/// A setting that could not be applied.
+#[derive(Serialize)]
+pub struct SettingProblem {
+    /// The setting's name as given.
+    pub setting: String,
+    /// Why it was refused.
+    pub message: String,
+}
+
+/// Settings of `dialect` from `NAME=VALUE` lines; lines that fail are reported, not applied.
+pub fn settings_from(d: Dialect, lines: &str) -> (Settings, Vec<SettingProblem>) {
+    let mut s = Settings::new(d);
+    let mut problems = Vec::new();
+    for line in lines.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        if let Err(e) = s.assign(line) {
+            let setting = line.split('=').next().unwrap_or(line).trim().to_string();
+            problems.push(SettingProblem { setting, message: e.to_string() });
+        }
+    }
+    (s, problems)
+}
+
+/// A diagnostic with its range in the editor's UTF-16 offsets.
+#[derive(Serialize)]
+pub struct EditorDiagnostic<'a> {
+    severity: crate::Severity,
+    code: crate::Code,
+    message: &'a str,
+    line: u32,
+    column: u32,
+    end_line: u32,
+    end_column: u32,
+    from: u32,
+    to: u32,
+}
+
+/// The plan's diagnostics with their ranges in `text`'s UTF-16 offsets.
+pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan) -> Vec<EditorDiagnostic<'a>> {
+    let bytes: Vec<u32> = plan.diagnostics.iter().flat_map(|d| [d.span.start, d.span.end]).collect();
+    let units = super::text::utf16_offsets(text, &bytes);
+    plan.diagnostics
+        .iter()
+        .zip(units.chunks_exact(2))
+        .map(|(d, u)| EditorDiagnostic {
+            severity: d.severity,
+            code: d.code,
+            message: &d.message,
+            line: d.line,
+            column: d.column,
+            end_line: d.end_line,
+            end_column: d.end_column,
+            from: u[0],
+            to: u[1].max(u[0]),
+        })
+        .collect()
+}
+
+/// A thread without its passes (the pass table shows one thread at a time).
+#[derive(Serialize)]
+pub struct ThreadSummary {
+    line: u32,
+    end_line: u32,
+    source: Source,
+    kind: ThreadKind,
+    long_axis: Axis,
+    lead: f64,
+    pitch: f64,
+    starts: u32,
+    internal: bool,
+    infeed: Infeed,
+    tool_angle: f64,
+    crest: f64,
+    crest_source: CrestSource,
+    height: f64,
+    taper: f64,
+    passes: u32,
+}
+
+impl ThreadSummary {
+    /// The summary of `t`.
+    pub fn of(t: &Thread) -> ThreadSummary {
+        let r = crate::num::round_out;
+        ThreadSummary {
+            line: t.line,
+            end_line: t.end_line,
+            source: t.source,
+            kind: t.kind,
+            long_axis: t.long_axis,
+            lead: r(t.lead),
+            pitch: r(t.pitch),
+            starts: t.starts,
+            internal: t.internal,
+            infeed: t.infeed,
+            tool_angle: r(t.tool_angle),
+            crest: r(t.crest),
+            crest_source: t.crest_source,
+            height: r(t.height),
+            taper: r(t.taper),
+            passes: t.passes.len() as u32,
+        }
+    }
+}
+
+/// A packed scene as a JS object with typed arrays:
+/// `{view, bounds, focus, coords: Float64Array, items: Uint32Array, lines: Uint32Array, labels}`.
+pub fn packed_to_js(p: &Packed) -> JsValue {
+    let o = Object::new();
+    let view = match p.view {
+        crate::diagram::ViewKind::Side => "side",
+        crate::diagram::ViewKind::Tooth => "tooth",
+        crate::diagram::ViewKind::Starts => "starts",
+    };
+    set(&o, "view", &JsValue::from_str(view));
+    set(&o, "bounds", &Float64Array::from(&p.bounds[..]).into());
+    set(&o, "focus", &Float64Array::from(&p.focus[..]).into());
+    set(&o, "coords", &Float64Array::from(&p.coords[..]).into());
+    set(&o, "items", &Uint32Array::from(&p.items[..]).into());
+    set(&o, "lines", &Uint32Array::from(&p.lines[..]).into());
+    set(&o, "labels", &JsValue::from_str(&p.labels));
+    o.into()
+}
+
+/// The side section as pieces (see [`SidePieces`]): `{view, pieces: true,
+/// bounds, focus, headCoords, headItems, order, keys, coords, items, lines,
+/// labels, ends}`, keys as JS numbers, `ends` five numbers per sent piece.
+pub fn pieces_to_js(p: &SidePieces) -> JsValue {
+    let o = Object::new();
+    let keys = |k: &[u64]| Float64Array::from(&k.iter().map(|k| js_key(*k)).collect::<Vec<f64>>()[..]);
+    set(&o, "view", &JsValue::from_str("side"));
+    set(&o, "pieces", &JsValue::TRUE);
+    set(&o, "bounds", &Float64Array::from(&p.head.bounds[..]).into());
+    set(&o, "focus", &Float64Array::from(&p.head.focus[..]).into());
+    set(&o, "headCoords", &Float64Array::from(&p.head.coords[..]).into());
+    set(&o, "headItems", &Uint32Array::from(&p.head.items[..]).into());
+    set(&o, "order", &keys(&p.order).into());
+    set(&o, "keys", &keys(&p.keys).into());
+    set(&o, "coords", &Float64Array::from(&p.sent.coords[..]).into());
+    set(&o, "items", &Uint32Array::from(&p.sent.items[..]).into());
+    set(&o, "lines", &Uint32Array::from(&p.sent.lines[..]).into());
+    set(&o, "labels", &JsValue::from_str(&p.sent.labels));
+    set(&o, "ends", &Uint32Array::from(&p.ends.concat()[..]).into());
+    o.into()
+}
+
+/// Passes as columns of typed arrays (one array per field, no object per
+/// pass): `{n, start, index: Uint32Array, x, z, xEnd, zEnd, depth, infeed,
+/// area, shift, angle, runoutX, runoutZ, screwX, screwZ: Float64Array (NaN:
+/// none), role: Uint8Array (0 rough, 1 finish, 2 spring), lineStart:
+/// Uint32Array (n + 1), lines: Uint32Array}`; X as a diameter, (x, z) where
+/// the cut starts, (xEnd, zEnd) where it ends.
+pub fn passes_to_js(passes: &[crate::thread::Pass]) -> JsValue {
+    use crate::num::round_out as r;
+    use crate::thread::Role;
+    let n = passes.len();
+    let (mut start, mut index, mut line_start) =
+        (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n + 1));
+    let mut cols: [Vec<f64>; 13] = std::array::from_fn(|_| Vec::with_capacity(n));
+    let (mut role, mut lines) = (Vec::with_capacity(n), Vec::new());
+    for p in passes {
+        start.push(p.start);
+        index.push(p.index);
+        let (run, screw) =
+            (p.runout_to.map_or([f64::NAN; 2], |q| [q.x, q.z]), p.screw_in_from.map_or([f64::NAN; 2], |q| [q.x, q.z]));
+        let values = [
+            p.from.x,
+            p.from.z,
+            p.to.x,
+            p.to.z,
+            p.depth,
+            p.infeed,
+            p.area.unwrap_or(f64::NAN),
+            p.shift,
+            p.angle,
+            run[0],
+            run[1],
+            screw[0],
+            screw[1],
+        ];
+        for (c, v) in cols.iter_mut().zip(values) {
+            c.push(if v.is_nan() { v } else { r(v) });
+        }
+        role.push(match p.role {
+            Role::Rough => 0u8,
+            Role::Finish => 1,
+            Role::Spring => 2,
+        });
+        line_start.push(lines.len() as u32);
+        lines.extend_from_slice(&p.lines);
+    }
+    line_start.push(lines.len() as u32);
+    let o = Object::new();
+    set(&o, "n", &(n as u32).into());
+    set(&o, "start", &Uint32Array::from(&start[..]).into());
+    set(&o, "index", &Uint32Array::from(&index[..]).into());
+    let names = [
+        "x", "z", "xEnd", "zEnd", "depth", "infeed", "area", "shift", "angle", "runoutX", "runoutZ", "screwX", "screwZ",
+    ];
+    for (name, c) in names.iter().zip(&cols) {
+        set(&o, name, &Float64Array::from(&c[..]).into());
+    }
+    set(&o, "role", &js_sys::Uint8Array::from(&role[..]).into());
+    set(&o, "lineStart", &Uint32Array::from(&line_start[..]).into());
+    set(&o, "lines", &Uint32Array::from(&lines[..]).into());
+    o.into()
+}

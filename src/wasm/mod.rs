@@ -1,0 +1,39 @@
+//! The wasm layer: what only a browser needs, over the core.
+//!
+//! - [`text`]: byte offsets as UTF-16 positions (what JavaScript strings and
+//!   the editor count);
+//! - [`pack`]: scenes as flat typed arrays, with the item record layout
+//!   defined once ([`pack::FIELDS`]) and read by name on the JavaScript side;
+//! - [`keys`]: content keys of the parts of a plan, as JavaScript numbers;
+//! - [`memo`]: the side section put together from the pieces an edit did
+//!   not change;
+//! - the bindings (`bind`, `session`, `js`, `parts`; wasm32 only): per-view
+//!   sessions — the app and every embedded element keep their own planner
+//!   and scene pieces — and the functions JavaScript calls.
+//!
+//! Everything but the bindings is compiled natively too, so its tests run
+//! with the core's.
+
+pub mod keys;
+pub mod memo;
+pub mod pack;
+pub mod text;
+
+#[cfg(target_arch = "wasm32")]
+mod bind;
+#[cfg(target_arch = "wasm32")]
+mod js;
+#[cfg(target_arch = "wasm32")]
+mod parts;
+#[cfg(target_arch = "wasm32")]
+mod session;
+
+#[cfg(target_arch = "wasm32")]
+pub use bind::*;
+#[cfg(target_arch = "wasm32")]
+pub use session::Session;
+
+/// The binding's tests (wasm-bindgen-test), run in Node and in headless
+/// Chromium by `cargo xtask test`.
+#[cfg(all(test, target_arch = "wasm32"))]
+mod tests;

@@ -1,0 +1,270 @@
+//! A planning session: one per view. The app and every embedded element
+//! keep their own planner (with its snapshots and last plan), the pieces of
+//! their last side section and the thread list they were sent, so switching
+//! between embeds never re-plans another's program.
+//!
+//! The planner is kept in a `Cell` (taken and put back, never borrowed), so
+//! even a trap in one call leaves later calls working.
+
+use std::cell::Cell;
+
+use js_sys::{Array, Float64Array, Object};
+use wasm_bindgen::prelude::*;
+
+use super::js::{
+    SettingProblem, ThreadSummary, dialect, editor_diagnostics, err, packed_to_js, passes_to_js, pieces_to_js, set,
+    settings_from, to_js,
+};
+use super::keys::{PlanKeys, combine, js_key, key_of, packed_key};
+use super::memo::SideMemo;
+use super::pack::pack;
+use super::parts::{Known, Part, ThreadsSent, keyed};
+use crate::diagram;
+use crate::plan::Plan;
+use crate::planner::Planner;
+
+/// What a session keeps between calls.
+struct State {
+    planner: Planner,
+    side: SideMemo,
+    threads: ThreadsSent,
+}
+
+/// A planning session of one view (see the module documentation).
+#[wasm_bindgen]
+#[derive(Default)]
+pub struct Session {
+    state: Cell<Option<State>>,
+}
+
+#[wasm_bindgen]
+impl Session {
+    /// A session with nothing planned yet.
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> Session {
+        Session::default()
+    }
+
+    /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines) and
+    /// returns everything the app shows:
+    /// `{dialect, units, alarms, warnings, notes, moves, good, settingErrors,
+    /// diagnostics, diagnosticsKey, threads, threadsKey, thread, passes,
+    /// passesKey, side, sideKey, tooth, toothKey, starts, startsKey, resumedAt}`:
+    /// `threads` are summaries (a pass count instead of the passes), `passes` are
+    /// the chosen thread's. `diagnostics` is null when its key equals
+    /// `known_diagnostics` (the key of the list the caller already has); so is
+    /// each of `threads`, `passes`, `side`, `tooth` and `starts` when its key is
+    /// in `known` (`[threads, passes, side, tooth, starts]` keys; omitted: none
+    /// known). With `known` given, `threads` may come as `{changes: [[index,
+    /// summary]...], length}` (to a caller holding the list last answered) and `side` as pieces (see `pieces_to_js`):
+    /// only those the caller lacks when it holds the pieces of the last side
+    /// section answered, else all; without it, as one packed scene. `thread` and
+    /// `start` choose the thread (−1: none) and start drawn in the tooth and starts views. `good` is true when the plan draws
+    /// something (threads or motions) and has no alarm.
+    ///
+    /// The program is re-read only from the last planner snapshot before the
+    /// first byte that differs from the last call's text; `resumedAt` is the
+    /// line reading resumed at (1: the whole program was read).
+    #[allow(clippy::too_many_arguments)] // the JavaScript call's positional arguments
+    pub fn update(
+        &self,
+        text: &str,
+        dialect_name: &str,
+        settings: &str,
+        thread: i32,
+        start: u32,
+        known_diagnostics: f64,
+        known: Option<Vec<f64>>,
+    ) -> Result<JsValue, JsValue> {
+        let d = dialect(dialect_name)?;
+        let (s, problems) = settings_from(d, settings);
+        let known = Known(known.unwrap_or_default());
+        let mut session = match self.state.take() {
+            Some(mut session) => {
+                session.planner.set_settings(s);
+                session
+            }
+            None => State { planner: Planner::new(s), side: SideMemo::new(), threads: ThreadsSent::default() },
+        };
+        session.planner.plan(text);
+        let State { planner, side, threads } = &mut session;
+        let out = match planner.last() {
+            Some(plan) => answer(text, plan, (side, threads), &problems, (thread, start), known_diagnostics, &known)
+                .map(|o| {
+                    set(&o, "resumedAt", &planner.resumed_at().into());
+                    o.into()
+                }),
+            None => Err(err("the planner kept no plan")),
+        };
+        self.state.set(Some(session));
+        out
+    }
+
+    /// The tooth and starts scenes of another thread or start of the last plan:
+    /// `{thread, passes, passesKey, tooth, toothKey, starts, startsKey}` (every
+    /// part sent; the keys are those [`Session::update`] uses).
+    pub fn thread_scenes(&self, thread: i32, start: u32) -> Result<JsValue, JsValue> {
+        self.with_last(|plan| {
+            let keys = PlanKeys::of(plan);
+            let o = Object::new();
+            thread_parts(&o, plan, &keys, pick(plan, thread), start, &Known(Vec::new()))?;
+            Ok(o.into())
+        })
+    }
+
+    /// The last plan as JSON (the CLI's `--json`), for download.
+    pub fn plan_json(&self) -> Result<String, JsValue> {
+        self.with_last(|plan| Ok(plan.to_json()))
+    }
+
+    /// The motions of the last plan, seven numbers each:
+    /// `[kind, x0, z0, x1, z1, line, cw]` with kind 0 rapid, 1 feed, 2 arc,
+    /// 3 thread, 4 run-out, 5 screw-in and `cw` 1 for clockwise arcs (X as a diameter).
+    pub fn moves(&self) -> Float64Array {
+        let mut out = Vec::new();
+        let _ = self.with_last(|p| {
+            out.reserve(p.moves.len() * 7);
+            for m in &p.moves {
+                use crate::motion::MoveKind::*;
+                let kind = match m.kind {
+                    Rapid => 0.0,
+                    Feed => 1.0,
+                    Arc => 2.0,
+                    Thread => 3.0,
+                    Runout => 4.0,
+                    ScrewIn => 5.0,
+                };
+                let cw = m.arc.map_or(0.0, |a| if a.cw { 1.0 } else { 0.0 });
+                out.extend_from_slice(&[kind, m.from.x, m.from.z, m.to.x, m.to.z, m.line as f64, cw]);
+            }
+            Ok(())
+        });
+        Float64Array::from(&out[..])
+    }
+
+    /// The side scene of the last plan in another encoding, for comparing
+    /// transfer costs: `"packed"` (typed arrays, what [`Session::update`]
+    /// returns), `"objects"` (serde-wasm-bindgen objects, one per item and
+    /// point) or `"json"` (a JSON string).
+    pub fn side_scene_as(&self, format: &str) -> Result<JsValue, JsValue> {
+        self.with_last(|plan| {
+            let scene = diagram::side(plan);
+            match format {
+                "packed" => Ok(packed_to_js(&pack(&scene))),
+                "objects" => to_js(&scene),
+                "json" => serde_json::to_string(&scene).map(|s| JsValue::from_str(&s)).map_err(err),
+                _ => Err(err(format!("unknown format '{format}' (packed, objects, json)"))),
+            }
+        })
+    }
+
+    /// The threads of the last plan as serde-wasm-bindgen objects or as a JSON
+    /// string (`"objects"` or `"json"`), for comparing transfer costs.
+    pub fn threads_as(&self, format: &str) -> Result<JsValue, JsValue> {
+        self.with_last(|plan| match format {
+            "objects" => to_js(&plan.threads),
+            "json" => serde_json::to_string(&plan.threads).map(|s| JsValue::from_str(&s)).map_err(err),
+            _ => Err(err(format!("unknown format '{format}' (objects, json)"))),
+        })
+    }
+}
+
+impl Session {
+    /// Runs `f` on the last plan; an error when nothing was planned yet.
+    fn with_last<R>(&self, f: impl FnOnce(&Plan) -> Result<R, JsValue>) -> Result<R, JsValue> {
+        let state = self.state.take();
+        let out = match state.as_ref().and_then(|s| s.planner.last()) {
+            Some(plan) => f(plan),
+            None => Err(err("nothing planned yet")),
+        };
+        self.state.set(state);
+        out
+    }
+}
+
+/// The thread index to draw in detail: `thread` clamped to the plan, none when negative or no threads.
+fn pick(plan: &Plan, thread: i32) -> Option<usize> {
+    let n = plan.threads.len();
+    (thread >= 0 && n > 0).then(|| (thread as usize).min(n - 1))
+}
+
+/// The key of the diagnostics by position (line and column, not offset): when
+/// it is unchanged the editor's own diagnostics, mapped through the edit, are current.
+fn diagnostics_key(plan: &Plan) -> f64 {
+    let fields: Vec<(u8, &str, &str, u32, u32, u32, u32)> = plan
+        .diagnostics
+        .iter()
+        .map(|d| (d.severity as u8, d.code.as_str(), d.message.as_str(), d.line, d.column, d.end_line, d.end_column))
+        .collect();
+    js_key(key_of(&fields))
+}
+
+/// Sets the chosen thread, its passes and its tooth and starts scenes on `o`.
+fn thread_parts(
+    o: &Object,
+    plan: &Plan,
+    keys: &PlanKeys,
+    chosen: Option<usize>,
+    start: u32,
+    known: &Known,
+) -> Result<(), JsValue> {
+    set(o, "thread", &chosen.map_or(JsValue::NULL, |t| (t as u32).into()));
+    let Some(t) = chosen else {
+        for part in [Part::Passes, Part::Tooth, Part::Starts] {
+            keyed(o, known, part, 0, || {
+                Ok(if matches!(part, Part::Passes) { Array::new().into() } else { JsValue::NULL })
+            })?;
+        }
+        return Ok(());
+    };
+    let thread_key = keys.threads[t];
+    let start = start.clamp(1, plan.threads[t].starts.max(1));
+    keyed(o, known, Part::Passes, combine(&[thread_key, t as u64]), || Ok(passes_to_js(&plan.threads[t].passes)))?;
+    // The small scenes are keyed by what they draw: an edit that leaves one as it was redraws nothing.
+    for (part, scene) in [(Part::Tooth, diagram::tooth(plan, t, start)), (Part::Starts, diagram::starts(plan, t))] {
+        let packed = scene.map(|s| pack(&s));
+        let key = packed.as_ref().map_or(0, packed_key);
+        keyed(o, known, part, key, || Ok(packed.as_ref().map_or(JsValue::NULL, packed_to_js)))?;
+    }
+    Ok(())
+}
+
+/// The object [`update`] returns, for `plan` of `text`.
+fn answer(
+    text: &str,
+    plan: &Plan,
+    (memo, sent): (&mut SideMemo, &mut ThreadsSent),
+    problems: &[SettingProblem],
+    (thread, start): (i32, u32),
+    known_diagnostics: f64,
+    known: &Known,
+) -> Result<Object, JsValue> {
+    let o = Object::new();
+    let count = |sev: crate::Severity| plan.diagnostics.iter().filter(|x| x.severity == sev).count() as u32;
+    set(&o, "dialect", &JsValue::from_str(plan.dialect.name()));
+    set(&o, "units", &to_js(&plan.units)?);
+    set(&o, "alarms", &count(crate::Severity::Error).into());
+    set(&o, "warnings", &count(crate::Severity::Warning).into());
+    set(&o, "notes", &count(crate::Severity::Info).into());
+    set(&o, "moves", &(plan.moves.len() as u32).into());
+    let good = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
+    set(&o, "good", &good.into());
+    set(&o, "settingErrors", &to_js(problems)?);
+    let key = diagnostics_key(plan);
+    set(&o, "diagnosticsKey", &key.into());
+    let diagnostics = if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan))? };
+    set(&o, "diagnostics", &diagnostics);
+    let keys = PlanKeys::of(plan);
+    keyed(&o, known, Part::Threads, keys.all_threads, || {
+        sent.answer(known, keys.all_threads, &keys.threads, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
+    })?;
+    keyed(&o, known, Part::Side, keys.side, || {
+        if !known.keeps() {
+            return Ok(packed_to_js(&memo.side(plan, &keys.threads)));
+        }
+        let holds = memo.last().map(js_key) == known.key(Part::Side);
+        Ok(pieces_to_js(&memo.pieces(plan, &keys.threads, keys.side, holds)))
+    })?;
+    thread_parts(&o, plan, &keys, pick(plan, thread), start, known)?;
+    Ok(o)
+}

@@ -1,0 +1,138 @@
+// Browser test of the drawing engine's two paths and of a program too big
+// to draw whole: node engine.test.mjs http://127.0.0.1:PORT/
+//
+// - The app in a worker (OffscreenCanvas) and on the page (`?engine=page`,
+//   what a browser without OffscreenCanvas gets) draw the same scenes,
+//   highlight the same items and follow the same edits.
+// - The 3-line L99 program (99 starts × 675 passes, 334,125 motions) leaves
+//   the page responsive: the pass table keeps a few dozen rows in the DOM,
+//   the drawings are summarised, a button answers while the engine works,
+//   and no long task holds the page. Timings are printed, not asserted.
+
+import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+
+const base = siteUrl('engine.test.mjs');
+const { check, counts } = checker();
+const { context, close } = await launch('screwcut-engine-', { viewport: { width: 1440, height: 900 } });
+const timer = guard(180, 'the engine test');
+const problems = [];
+context.on('page', (p) => p.on('pageerror', (e) => problems.push(e.message)));
+
+function fragment(state) {
+  const z = zlib.deflateRawSync(Buffer.from(JSON.stringify(state)), { level: 9 });
+  return '#z=' + z.toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+async function open(query) {
+  const page = await context.newPage();
+  page.on('pageerror', (e) => problems.push(`${query}: ${e.message}`));
+  page.on('console', (m) => m.type() === 'error' && problems.push(`${query}: ${m.text()}`));
+  await page.goto(base + query);
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  await page.waitForTimeout(400);
+  return page;
+}
+
+/** What a page shows: mode, table rows, each view's scene arrays, highlight and inked pixels. */
+const state = (page) =>
+  page.evaluate(async () => {
+    const p = window.__screwcut;
+    const out = { mode: p.mode, rows: [...document.querySelectorAll('#passes tbody tr[data-pass]')].map((tr) => tr.children[2].textContent) };
+    for (const name of ['side', 'tooth', 'starts']) {
+      const v = await p.inspect('view', name);
+      const px = await p.inspect('pixels', name);
+      out[name] = { items: Array.from(v.scene.items).join(','), coords: Array.from(v.scene.coords).join(','), labels: v.scene.labels, highlight: v.highlight.length, px: px.n };
+    }
+    return out;
+  });
+
+try {
+  // ---- the worker and the page draw the same ----
+  const worker = await open('');
+  const onPage = await open('?engine=page');
+  const [a, b] = [await state(worker), await state(onPage)];
+  check('the app draws in a worker', a.mode === 'worker', a.mode);
+  check('?engine=page draws on the page (the path without OffscreenCanvas)', b.mode === 'page', b.mode);
+  for (const name of ['side', 'tooth', 'starts']) {
+    check(`${name}: the same scene both ways`, a[name].items === b[name].items && a[name].coords === b[name].coords && a[name].labels === b[name].labels);
+    check(`${name}: drawn both ways`, a[name].px > 500 && b[name].px > 500, `${a[name].px} / ${b[name].px} pixels`);
+  }
+  check('the same table both ways', JSON.stringify(a.rows) === JSON.stringify(b.rows) && a.rows.length === 5, JSON.stringify([a.rows, b.rows]));
+  // The same edit and the same hover on both.
+  for (const page of [worker, onPage]) {
+    await page.locator('.cm-line', { hasText: 'N200 G32' }).click();
+    await page.keyboard.press('End');
+    await page.keyboard.type('\nN201 G00 X58.0;\nN202 Z70.0;\nN203 X45.3;\nN204 G32 Z13.0 F2.0;', { delay: 5 });
+    await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 6, null, { timeout: 10_000 }).catch(() => {});
+    await page.locator('#passes tbody tr[data-pass]').last().hover();
+    await page.waitForTimeout(300);
+  }
+  const [a2, b2] = [await state(worker), await state(onPage)];
+  check('an edit gives the same sixth pass both ways', a2.rows.at(-1) === '45.3' && JSON.stringify(a2.rows) === JSON.stringify(b2.rows), JSON.stringify([a2.rows, b2.rows]));
+  check('the same side scene after it', a2.side.items === b2.side.items && a2.side.coords === b2.side.coords);
+  check('hovering pass 6 highlights the same items both ways', a2.side.highlight > 0 && a2.side.highlight === b2.side.highlight && a2.tooth.highlight === b2.tooth.highlight, `${a2.side.highlight} / ${b2.side.highlight}`);
+  await worker.close();
+  await onPage.close();
+
+  // ---- L99: 99 starts of 675 passes, from a link ----
+  const program = 'G00 X100 Z5\nG78 P1060 Q10 R0.01 L99\nG78 X40 Z-30 P9000 Q300 F2\n';
+  const page = await context.newPage();
+  page.on('pageerror', (e) => problems.push(`L99: ${e.message}`));
+  await page.addInitScript(() => {
+    // Long tasks on the page's thread, from the start.
+    self.__long = [];
+    new PerformanceObserver((l) => self.__long.push(...l.getEntries().map((e) => e.duration))).observe({ type: 'longtask', buffered: true });
+  });
+  const t0 = Date.now();
+  await page.goto(base + fragment({ dialect: 'gsk980tdc', settings: {}, program }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  const readyMs = Date.now() - t0;
+  const l99 = await page.evaluate(async () => {
+    const p = window.__screwcut;
+    const side = await p.inspect('view', 'side');
+    const tooth = await p.inspect('view', 'tooth');
+    const L = await p.inspect('layout');
+    return {
+      passes: p.result.passes.n,
+      domRows: document.querySelectorAll('#passes tbody tr').length,
+      sideItems: side.scene.items.length / L.stride,
+      toothItems: tooth.scene.items.length / L.stride,
+      note: side.scene.labels.includes('detail_starts_passes'),
+    };
+  });
+  check('L99 plans 66,825 passes', l99.passes === 66825, String(l99.passes));
+  check('… the pass table keeps only the rows in view in the DOM', l99.domRows < 100, `${l99.domRows} rows`);
+  check('… the side section is summarised (one start, every n-th pass) and says so', l99.sideItems < 2000 && l99.note, `${l99.sideItems} items`);
+  check('… the tooth section too', l99.toothItems < 2000, `${l99.toothItems} items`);
+  // The page answers a click while the engine re-plans after a keystroke.
+  await page.locator('.cm-line').nth(2).click();
+  await page.keyboard.press('End');
+  await page.keyboard.type('0');
+  const clicked = await page.evaluate(
+    () =>
+      new Promise((resolve) => {
+        const t = performance.now();
+        const b = document.getElementById('settings-toggle');
+        b.addEventListener('click', () => requestAnimationFrame(() => resolve(performance.now() - t)), { once: true });
+        b.click();
+      }),
+  );
+  await page.waitForFunction(() => window.__screwcut.updates.length >= 2, null, { timeout: 30_000 });
+  const after = await page.evaluate(() => ({ long: self.__long, last: window.__screwcut.updates.at(-1) }));
+  check('… a button answers while the engine re-plans', Number.isFinite(clicked) && !(await page.locator('#settings').isHidden()));
+  console.log(
+    `L99: page ready ${readyMs} ms after navigation; a click answered to the next frame in ${clicked.toFixed(1)} ms; ` +
+      `re-plan in the worker ${after.last.plan.toFixed(0)} ms; page long tasks: ${after.long.length} (longest ${Math.max(0, ...after.long).toFixed(0)} ms)`,
+  );
+  await page.screenshot({ path: path.join(shots, 'engine-l99.png') });
+  check('no page errors', problems.length === 0, JSON.stringify(problems));
+} catch (e) {
+  check('the engine test ran to the end', false, e && e.stack ? e.stack : String(e));
+} finally {
+  clearTimeout(timer);
+  await close();
+}
+
+finish('engine', counts);

@@ -1,0 +1,302 @@
+// The planning and drawing engine of the app: the wasm planner's session
+// and the three views, driven by messages. It runs in a Worker with the
+// views on OffscreenCanvases (worker.js), so the page's thread keeps only
+// the editor and the lists; where a browser has no OffscreenCanvas it runs
+// on the page with the same messages (client.js).
+//
+// Messages in: view, size, input, plan, select, highlight, lang, export,
+// json, inspect. Messages out: result (after each plan: counts, lists and
+// the chosen thread's passes as columns), frame (once the drawing that
+// includes an edit is on screen), hover, pick, reply, error.
+
+import { SceneView } from './sceneview.js';
+import { setLayout } from './render.js';
+import { labelIn } from './i18n.js';
+import { HeldParts } from './parts.js';
+
+export class Engine {
+  /**
+   * @param core the initialised wasm module (`Session`, `scene_layout`, `style_names`, …)
+   * @param post `post(message, transfer)` to the page
+   * @param afterCommit runs a function once the current frame is on screen
+   */
+  constructor(core, post, afterCommit) {
+    this.core = core;
+    this.post = post;
+    this.afterCommit = afterCommit;
+    this.session = new core.Session();
+    this.styleNames = core.style_names();
+    setLayout(core.scene_layout());
+    this.views = {};
+    this.held = new HeldParts();
+    this.lang = 'en';
+    this.result = null;
+    this.lastGood = null;
+    this.diagnosticsKey = -1;
+    this.thread = 0;
+    this.start = 1;
+    this.hover = null;
+    this.cursor = 1;
+    this.pendingFrame = null; // {seq, input} of a plan whose drawing is awaited
+    this.sentThreads = null;
+    this.sentPasses = null;
+  }
+
+  handle(m) {
+    try {
+      const f = this[`on_${m.type}`];
+      if (!f) throw new Error(`unknown message '${m.type}'`);
+      return f.call(this, m);
+    } catch (e) {
+      this.post({ type: 'error', message: String(e && e.message ? e.message : e), id: m.id });
+      return undefined;
+    }
+  }
+
+  tr = (key, value) => labelIn(this.lang, key, value);
+
+  on_view({ name, canvas, stretch }) {
+    this.views[name] = new SceneView(canvas, { styleNames: this.styleNames, tr: this.tr, name, stretch, onDrawn: () => this.drawn() });
+  }
+
+  on_size({ name, w, h, dpr }) {
+    this.views[name]?.setSize(w, h, dpr);
+  }
+
+  on_input({ id, name, op, x, y, dx, dy, k, clientX, clientY }) {
+    const v = this.views[name];
+    if (!v) return;
+    if (op === 'pan') v.pan(dx, dy);
+    else if (op === 'zoom') v.zoomAt(x, y, k);
+    else if (op === 'fit') v.fit();
+    else if (op === 'stretch') this.post({ type: 'reply', id, data: v.toggleStretch() });
+    else if (op === 'leave') {
+      if (v.hovered !== -1) this.post({ type: 'hover', name, info: null });
+      v.hovered = -1;
+    } else if (op === 'hover') {
+      const i = v.pick(x, y);
+      if (i !== v.hovered) {
+        v.hovered = i;
+        this.post({ type: 'hover', name, info: v.info(i), clientX, clientY });
+      }
+    } else if (op === 'pick') {
+      const i = v.pick(x, y);
+      if (i >= 0) this.post({ type: 'pick', name, info: v.info(i) });
+    }
+  }
+
+  on_lang({ lang }) {
+    this.lang = lang === 'zh' ? 'zh' : 'en';
+    for (const v of Object.values(this.views)) v.draw();
+  }
+
+  /** Plans `text` and shows it; answers with a result now and a frame once drawn. */
+  on_plan({ seq, text, dialect, settings, thread, start, input }) {
+    if (thread !== undefined) this.thread = thread;
+    if (start !== undefined) this.start = start;
+    const t0 = performance.now();
+    let r;
+    try {
+      r = this.held.fill(this.session.update(text, dialect, settings, this.thread, this.start, this.diagnosticsKey, this.held.known()));
+    } catch (e) {
+      // A planner failure (which must not happen) keeps the last drawing, greyed.
+      this.diagnosticsKey = -1;
+      this.held.clear();
+      this.showStale();
+      this.post({ type: 'error', message: String(e && e.message ? e.message : e), crashed: true });
+      return;
+    }
+    const t1 = performance.now();
+    this.apply(r);
+    if (input !== undefined && input !== null) this.pendingFrame = { seq, input };
+    this.postResult(r, seq, { plan: t1 - t0, views: performance.now() - t1 });
+    this.maybeFrameNow();
+  }
+
+  /** Shows answer `r` in the views: greyed last good drawing when it has an alarm. */
+  apply(r) {
+    this.result = r;
+    this.thread = r.thread ?? 0;
+    if (r.diagnostics !== null) this.diagnosticsKey = r.diagnosticsKey;
+    const v = this.views;
+    if (r.alarms > 0 && this.lastGood) {
+      this.showStale();
+    } else {
+      if (r.good) this.lastGood = { side: r.side, tooth: r.tooth, starts: r.starts };
+      v.side?.setScene(r.side, false);
+      v.tooth?.setScene(r.tooth, false);
+      v.starts?.setScene(r.starts, false);
+    }
+    v.side?.setThread(this.thread);
+    this.refreshHighlight();
+  }
+
+  showStale() {
+    const g = this.lastGood;
+    if (!g) return;
+    this.views.side?.setScene(g.side, true);
+    this.views.tooth?.setScene(g.tooth, true);
+    this.views.starts?.setScene(g.starts, true);
+  }
+
+  /** Posts what the page's lists need; lists it already has are not sent again. */
+  postResult(r, seq, timing) {
+    const threads = r.threads === this.sentThreads ? undefined : r.threads;
+    this.sentThreads = r.threads;
+    // The passes come from the planner as columns of typed arrays (copied, not moved: the engine keeps them).
+    const passes = r.passes === this.sentPasses ? undefined : r.passes;
+    this.sentPasses = r.passes;
+    const out = {
+      type: 'result',
+      seq,
+      timing,
+      r: {
+        dialect: r.dialect,
+        units: r.units,
+        alarms: r.alarms,
+        warnings: r.warnings,
+        notes: r.notes,
+        moves: r.moves,
+        good: r.good,
+        stale: r.alarms > 0 && !!this.lastGood,
+        settingErrors: r.settingErrors,
+        diagnostics: r.diagnostics,
+        diagnosticsKey: r.diagnosticsKey,
+        threads,
+        thread: r.thread,
+        passes,
+        resumedAt: r.resumedAt,
+      },
+    };
+    this.post(out);
+  }
+
+  /** Another thread or start for the tooth and starts views and the table. */
+  on_select({ thread, start, seq }) {
+    if (!this.result) return;
+    this.thread = thread;
+    this.start = start ?? 1;
+    const s = this.held.fill(this.session.thread_scenes(thread, this.start));
+    Object.assign(this.result, { thread: s.thread, passes: s.passes, tooth: s.tooth, starts: s.starts });
+    this.views.side?.setThread(thread);
+    if (!(this.result.alarms > 0 && this.lastGood)) {
+      this.views.tooth?.setScene(s.tooth, false);
+      this.views.starts?.setScene(s.starts, false);
+    }
+    this.refreshHighlight();
+    this.postResult(this.result, seq, null);
+  }
+
+  /** The page's hover (a pass or lines, from a drawing or the table) and the editor's cursor line. */
+  on_highlight({ hover, cursor }) {
+    this.hover = hover || null;
+    if (cursor) this.cursor = cursor;
+    this.refreshHighlight();
+  }
+
+  /** What the pointer or the table points at, else what the cursor line draws (a lighter mark). */
+  refreshHighlight() {
+    const h = this.hover;
+    for (const v of Object.values(this.views)) {
+      const set = new Set();
+      if (h && h.pass >= 0) for (const i of v.itemsOfPass(h.thread, h.pass)) set.add(i);
+      else for (const l of h ? h.lines : [this.cursor]) for (const i of v.itemsOfLine(l)) set.add(i);
+      v.setHighlight(set, !h);
+    }
+  }
+
+  /** After a draw: once every view that had to draw has, the awaited frame is reported. */
+  drawn() {
+    this.maybeFrameNow();
+  }
+
+  maybeFrameNow() {
+    const f = this.pendingFrame;
+    if (!f || Object.values(this.views).some((v) => v.queued)) return;
+    this.pendingFrame = null;
+    this.afterCommit(() => this.post({ type: 'frame', seq: f.seq, input: f.input }));
+  }
+
+  async on_export({ id, name, format, scale }) {
+    const v = this.views[name];
+    const data = !v ? null : format === 'svg' ? v.toSVG() : await v.toPNG(scale || 2);
+    this.post({ type: 'reply', id, data });
+  }
+
+  /** Tables the page's panels show: `what: 'settings'` of `dialect`. */
+  on_table({ id, what, dialect }) {
+    const data = what === 'settings' ? this.core.settings_table(dialect) : null;
+    this.post({ type: 'reply', id, data });
+  }
+
+  on_json({ id }) {
+    this.post({ type: 'reply', id, data: this.session.plan_json() });
+  }
+
+  /**
+   * For tests and benchmarks: `view` (what view `name` shows), `pixels`
+   * (the inked pixels of its canvas), `layout`, `result` (keys and thread
+   * list of the last answer), `same_as_full` (whether the side section shown
+   * equals a full build), `transfer` (the cost of a side scene as typed
+   * arrays, objects and JSON).
+   */
+  on_inspect({ id, what, name }) {
+    const v = this.views[name];
+    const data = {
+      view: () =>
+        v && {
+          scene: v.scene && { items: v.scene.items, coords: v.scene.coords, lines: v.scene.lines, labels: v.scene.labels, styles: v.scene.prepared?.styles, bounds: v.scene.bounds },
+          transform: v.transform(),
+          stale: v.stale,
+          highlight: v.highlight ? [...v.highlight] : [],
+          size: [v.cssW, v.cssH],
+        },
+      pixels: () => {
+        if (!v) return null;
+        const c = v.canvas;
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 235 || d[i + 1] < 235 || d[i + 2] < 235)) n++;
+        return { n, w: c.width, h: c.height };
+      },
+      layout: () => this.core.scene_layout(),
+      result: () => {
+        const r = this.result;
+        return r && { threads: r.threads, thread: r.thread, sideKey: r.sideKey, toothKey: r.toothKey, resumedAt: r.resumedAt, toothLabels: r.tooth?.labels };
+      },
+      same_as_full: () => {
+        const shown = this.views.side.scene;
+        const full = this.session.side_scene_as('packed');
+        const eq = (a, b) => a.length === b.length && a.every((x, i) => Object.is(x, b[i]));
+        return ['coords', 'items', 'lines', 'bounds', 'focus'].filter((k) => !eq(shown[k], full[k])).concat(shown.labels === full.labels ? [] : ['labels']);
+      },
+      transfer: () => this.transferCosts(),
+    }[what];
+    this.post({ type: 'reply', id, data: data ? data() : null });
+  }
+
+  /** What building, moving and reading a side scene costs in each encoding (ms). */
+  transferCosts() {
+    const s = this.session;
+    const time = (f, n = 15) => {
+      f();
+      const t0 = performance.now();
+      for (let i = 0; i < n; i++) f();
+      return (performance.now() - t0) / n;
+    };
+    const walk = (x) => {
+      let sum = 0;
+      if (x.coords) for (let i = 0; i < x.coords.length; i++) sum += x.coords[i];
+      else for (const it of x.items) for (const val of Object.values(it.shape)) if (Array.isArray(val)) for (const p of val) sum += Array.isArray(p) ? p[0] + p[1] : p;
+      return sum;
+    };
+    return {
+      items: s.side_scene_as('packed').items.length / this.core.scene_layout().stride,
+      packed: time(() => walk(s.side_scene_as('packed'))),
+      objects: time(() => walk(s.side_scene_as('objects'))),
+      json: time(() => walk(JSON.parse(s.side_scene_as('json')))),
+      threadsObjects: time(() => s.threads_as('objects')),
+      threadsJson: time(() => JSON.parse(s.threads_as('json'))),
+    };
+  }
+}

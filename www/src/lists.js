@@ -1,0 +1,124 @@
+// Lists of any length that stay fast: only the rows in view are in the
+// DOM (a spacer above and below keeps the scroll height), rows of a fixed
+// height. The pass table reads the chosen thread's passes as columns
+// (src/wasm/js.rs `passes_to_js`); the diagnostics list reads the planner's list.
+
+import { esc, num } from './table.js';
+
+const ROLE_NAMES = ['rough', 'finish', 'spring'];
+
+/** A virtual list in `scroller`: `body` holds the rows; `row(i)` gives one row's HTML. */
+export class VirtualRows {
+  /**
+   * @param {HTMLElement} scroller the element that scrolls
+   * @param {HTMLElement} body the element the rows go in (a tbody or a list)
+   * @param {{rowHeight: number, spacer: (h: number) => string}} opts
+   */
+  constructor(scroller, body, opts) {
+    this.scroller = scroller;
+    this.body = body;
+    this.opts = opts;
+    this.count = 0;
+    this.row = () => '';
+    this.shown = '';
+    this.hot = -1;
+    this.first = 0;
+    this.last = 0;
+    scroller.addEventListener('scroll', () => this.render(), { passive: true });
+    new ResizeObserver(() => this.render()).observe(scroller);
+  }
+
+  /** Shows `count` rows made by `row(i)`; `keep` keeps the scroll position. */
+  set(count, row) {
+    this.count = count;
+    this.row = row;
+    this.shown = '';
+    this.render();
+  }
+
+  /** Marks row `i` (-1: none) and scrolls it into view when asked; the rows stay in place. */
+  mark(i, reveal = false) {
+    if (i === this.hot && !reveal) return;
+    this.rowAt(this.hot)?.classList.remove('hot');
+    this.hot = i;
+    if (reveal && i >= 0) {
+      const h = this.opts.rowHeight;
+      const top = this.scroller.scrollTop;
+      const view = this.scroller.clientHeight - h;
+      if (i * h < top || i * h > top + view) this.scroller.scrollTop = Math.max(0, i * h - view / 2);
+      this.render();
+    }
+    this.rowAt(i)?.classList.add('hot');
+  }
+
+  /** The element of row `i`, when it is in the DOM. */
+  rowAt(i) {
+    if (i < this.first || i >= this.last) return null;
+    return this.body.children[i - this.first + (this.first > 0 ? 1 : 0)] || null;
+  }
+
+  render() {
+    const h = this.opts.rowHeight;
+    const top = this.scroller.scrollTop;
+    const height = this.scroller.clientHeight || 400;
+    const first = Math.max(0, Math.floor(top / h) - 10);
+    const last = Math.min(this.count, Math.ceil((top + height) / h) + 10);
+    const key = `${first}:${last}:${this.count}`;
+    if (key === this.shown) return;
+    this.shown = key;
+    this.first = first;
+    this.last = last;
+    let html = first > 0 ? this.opts.spacer(first * h) : '';
+    for (let i = first; i < last; i++) html += this.row(i, i === this.hot);
+    if (last < this.count) html += this.opts.spacer((this.count - last) * h);
+    this.body.innerHTML = html;
+  }
+}
+
+/** The pass table's header; units where the column has one. */
+export function passHead(t, units) {
+  const u = units === 'inch' ? 'in' : 'mm';
+  const th = (key, unit, cls = '') => `<th${cls}>${esc(t(key))}${unit ? ` <span class="unit">(${unit})</span>` : ''}</th>`;
+  return `<tr>${th('col_pass')}${th('col_start')}${th('col_x', u)}${th('col_z', u)}${th('col_z_end', u)}${th('col_depth', u)}${th('col_infeed', u)}${th('col_area', `${u}²`)}${th('col_role', '', ' class="role"')}${th('col_lines', '', ' class="role"')}</tr>`;
+}
+
+/** Row `i` of pass columns `c` (rows `order[i]`), as HTML. */
+export function passRow(c, i, t, hot, stale) {
+  const lines = Array.from(c.lines.subarray(c.lineStart[i], c.lineStart[i + 1])).join(',');
+  const role = ROLE_NAMES[c.role[i]] || 'rough';
+  const area = Number.isNaN(c.area[i]) ? '' : num(c.area[i]);
+  const cls = `${role}${hot ? ' hot' : ''}${stale ? ' stale' : ''}`;
+  return `<tr data-pass="${i}" class="${cls}" tabindex="-1"><td>${c.index[i]}</td><td>${c.start[i]}</td><td>${num(c.x[i])}</td><td>${num(c.z[i])}</td><td>${num(c.zEnd[i])}</td><td>${num(c.depth[i])}</td><td>${num(c.infeed[i])}</td><td>${area}</td><td class="role">${esc(t(role))}</td><td class="lines">${lines}</td></tr>`;
+}
+
+/** The source lines of pass `i` of columns `c`. */
+export function passLines(c, i) {
+  return c ? Array.from(c.lines.subarray(c.lineStart[i], c.lineStart[i + 1])) : [];
+}
+
+/** One diagnostic as a list item (`i` its index in the full list). */
+export function diagnosticRow(d, i, t, hot) {
+  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`;
+}
+
+/** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, role, lines, shift, angle}`). */
+export function passObjects(c) {
+  if (!c) return [];
+  const out = new Array(c.n);
+  for (let i = 0; i < c.n; i++) {
+    out[i] = {
+      start: c.start[i],
+      index: c.index[i],
+      from: [c.x[i], c.z[i]],
+      to: [c.xEnd[i], c.zEnd[i]],
+      depth: c.depth[i],
+      infeed: c.infeed[i],
+      area: Number.isNaN(c.area[i]) ? null : c.area[i],
+      role: ROLE_NAMES[c.role[i]] || 'rough',
+      lines: passLines(c, i),
+      shift: c.shift[i],
+      angle: c.angle[i],
+    };
+  }
+  return out;
+}

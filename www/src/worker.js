@@ -1,0 +1,29 @@
+// The drawing worker: the wasm planner and the app's three views on
+// OffscreenCanvases, so that planning and drawing never hold up typing.
+// The first message is `{type: 'init', wasm}` (the wasm file's URL); the
+// engine (engine.js) answers every other.
+
+import init, * as core from '../pkg/screwcut.js';
+import { Engine } from './engine.js';
+
+let engine = null;
+const queue = [];
+const post = (m, transfer) => self.postMessage(m, transfer || []);
+
+self.onmessage = async (e) => {
+  const m = e.data;
+  if (m.type === 'init') {
+    try {
+      await init({ module_or_path: m.wasm });
+      // In a worker a drawing is on screen once the animation frame that drew it returns.
+      engine = new Engine(core, post, (f) => f());
+      post({ type: 'ready', dialects: core.dialects() });
+      for (const q of queue.splice(0)) engine.handle(q);
+    } catch (err) {
+      post({ type: 'error', message: `the planner did not load: ${err && err.message ? err.message : err}`, fatal: true });
+    }
+    return;
+  }
+  if (engine) engine.handle(m);
+  else queue.push(m);
+};
