@@ -70,7 +70,7 @@ pub fn finish_thread(
 ) {
     let window_start = if i == 0 { 0 } else { threads[i - 1].first_move };
     let t = &mut threads[i];
-    if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92) {
+    if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92 | Source::LinuxG33) {
         return;
     }
     let end = t.first_move.min(moves.len());

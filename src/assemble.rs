@@ -106,6 +106,7 @@ impl Assembler {
                 }
                 Event::G92(g) => self.g92(&g, s, diags),
                 Event::Multi(m) => self.multi(&m, s, diags),
+                Event::LinuxG76(g) => self.linux_g76(&g, s, diags),
                 Event::Break => self.group.end_chain(s, &mut self.threads, diags),
                 Event::Close => self.group.close(s, &mut self.threads, diags),
             }
@@ -172,6 +173,44 @@ impl Assembler {
                 spindle: g.spindle,
             };
             self.group.add(chain, s, &mut self.threads, diags);
+        }
+    }
+
+    /// LinuxCNC's G76: planned, its passes' motions appended, its thread added.
+    fn linux_g76(&mut self, g: &cycle::linuxcnc::G76, s: &Settings, diags: &mut Diagnostics) {
+        let limit = s.int(P::LimitPasses).max(1) as usize;
+        let warn = s.int(P::LinuxPassWarning).max(1) as usize;
+        let planned = match cycle::linuxcnc::plan(g, limit, warn) {
+            Ok(p) => p,
+            Err((code, msg)) => return diags.push(code, g.span, msg),
+        };
+        for (code, msg) in planned.notes {
+            diags.push(code, g.span, msg);
+        }
+        let first_move = self.moves.len();
+        let mut moves = Vec::with_capacity(planned.paths.len());
+        for path in &planned.paths {
+            let m = self.push_path(path, diags);
+            if self.stopped {
+                break;
+            }
+            moves.push(m);
+        }
+        if let Some(end) = planned.end {
+            let at = self.push(end, diags);
+            if let (Some(i), Some(last)) = (at, moves.last_mut()) {
+                last.retract.end = i + 1;
+            }
+        }
+        if let Some(mut t) = planned.thread {
+            t.passes.truncate(moves.len());
+            for (p, m) in t.passes.iter_mut().zip(moves) {
+                p.moves = m;
+            }
+            t.first_move = first_move;
+            if !t.passes.is_empty() {
+                self.threads.push(t);
+            }
         }
     }
 

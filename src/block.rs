@@ -77,6 +77,8 @@ pub struct Block {
     pub words: Vec<Word>,
     /// The `N` sequence number, if any.
     pub n: Option<Word>,
+    /// A `$` spindle selection word (LinuxCNC), kept apart from the letter words; its letter is `$`.
+    pub spindle: Option<Word>,
     /// Whether the lexer found an error in this block (the block is then not executed).
     pub has_error: bool,
     /// First index into `words` for each letter A–Z, plus one (0 = absent).
@@ -92,6 +94,7 @@ impl Block {
         self.deleted = false;
         self.words.clear();
         self.n = None;
+        self.spindle = None;
         self.has_error = false;
         self.index = [0; 26];
     }

@@ -151,6 +151,31 @@ codes! {
     E18_05 = "E18-05", Error;
     /// Spindle speed above the controller's advice for the pitch (Renhe n ≤ 2300/t − 60).
     SpindleSpeed = "spindle-speed", Warning;
+    // ---- LinuxCNC ----
+    /// LinuxCNC: G33 or G76 while the spindle is not turning (no M3/M4, or after M5).
+    SpindleNotTurning = "spindle-not-turning", Error;
+    /// LinuxCNC: G76 with cutter radius compensation (G41/G42, G41.1/G42.1) on.
+    CutterCompActive = "cutter-comp-active", Error;
+    /// LinuxCNC: the program ends without M2/M30 or a closing `%`.
+    NoProgramEnd = "no-program-end", Error;
+    /// LinuxCNC reads a value as another one: Q−1 as no Q, R below 1 as 1, E below 0 as 0, L as a bit mask, E without L.
+    ValueReadAs = "value-read-as", Warning;
+    /// LinuxCNC: a G33 K or G76 P that is zero or negative, passed on as the spindle sync ratio.
+    OddPitch = "odd-pitch", Warning;
+    /// LinuxCNC: G76 with a negative H drops the full-depth pass: the thread is never cut to K.
+    FullDepthSkipped = "full-depth-skipped", Warning;
+    /// LinuxCNC: G76 tapers E longer than half the drive line: the cut between them runs backwards.
+    BackwardCut = "backward-cut", Warning;
+    /// LinuxCNC: G33 or G76 outside the XZ plane G18 (accepted by the interpreter, not by the manual).
+    PlaneNotXz = "plane-not-xz", Warning;
+    /// LinuxCNC: G76 with an X or Y word: the passes still use the drive line; the word only moves the tool at the end.
+    DriveLineKept = "drive-line-kept", Warning;
+    /// LinuxCNC: a G76 whose degression and depths need many passes.
+    ManyPasses = "many-passes", Warning;
+    /// LinuxCNC: |I| + n·J rounds below |I| + K in floating point, so the full depth is cut twice.
+    FloatExtraPass = "float-extra-pass", Info;
+    /// LinuxCNC: G33 K is the advance along the move; on a taper the axial lead is less.
+    LeadAlongPath = "lead-along-path", Info;
     // ---- shop floor ----
     /// Thread feed lead × n above the machine's limit (`machine.max_thread_feed`).
     ThreadFeedLimit = "thread-feed-limit", Warning;

@@ -14,18 +14,21 @@ pub enum Dialect {
     Fanuc0i,
     /// Renhe economy lathe controller (G30 run-out, G32 inch, G33 metric, incremental threads).
     Renhe,
+    /// LinuxCNC (rs274ngc): G7/G8 diameter/radius mode, G33 (K along the move), G76 (drive line, I J K R Q H E L).
+    LinuxCnc,
 }
 
 /// Name, title and accepted spellings of each dialect, in [`Dialect::ALL`] order.
-const NAMES: [(&str, &str, &[&str]); 3] = [
+const NAMES: [(&str, &str, &[&str]); 4] = [
     ("gsk980tdc", "GSK980TDc", &["gsk", "gsk980", "gsk980tdi"]),
     ("fanuc0i", "Fanuc 0i-TF", &["fanuc", "fanuc0it", "fanuc0itf"]),
     ("renhe", "Renhe", &[]),
+    ("linuxcnc", "LinuxCNC", &["lcnc", "emc2", "rs274ngc"]),
 ];
 
 impl Dialect {
     /// Every dialect.
-    pub const ALL: [Dialect; 3] = [Dialect::Gsk980tdc, Dialect::Fanuc0i, Dialect::Renhe];
+    pub const ALL: [Dialect; 4] = [Dialect::Gsk980tdc, Dialect::Fanuc0i, Dialect::Renhe, Dialect::LinuxCnc];
 
     /// Position in [`Dialect::ALL`].
     pub const fn index(self) -> usize {
@@ -51,7 +54,7 @@ impl Dialect {
         })
     }
 
-    /// The names of every dialect, for messages: `gsk980tdc, fanuc0i, renhe`.
+    /// The names of every dialect, for messages: `gsk980tdc, fanuc0i, renhe, linuxcnc`.
     pub fn names() -> String {
         NAMES.iter().map(|n| n.0).collect::<Vec<_>>().join(", ")
     }
@@ -87,6 +90,7 @@ mod tests {
         assert_eq!(Dialect::parse(" Fanuc-0i "), Some(Dialect::Fanuc0i));
         assert_eq!(Dialect::parse("GSK"), Some(Dialect::Gsk980tdc));
         assert_eq!(Dialect::parse("haas"), None);
-        assert_eq!(Dialect::names(), "gsk980tdc, fanuc0i, renhe");
+        assert_eq!(Dialect::parse("LinuxCNC"), Some(Dialect::LinuxCnc));
+        assert_eq!(Dialect::names(), "gsk980tdc, fanuc0i, renhe, linuxcnc");
     }
 }

@@ -31,6 +31,8 @@ pub enum Event {
     G92(Box<G92Pass>),
     /// A multi-pass cycle (G76, G78).
     Multi(Box<Multi>),
+    /// LinuxCNC's G76 cycle.
+    LinuxG76(Box<crate::cycle::linuxcnc::G76>),
     /// The continuous thread being cut ends (a block that is not a thread block).
     Break,
     /// The block-by-block threads being grouped are complete (a feed, a cycle, the end).

@@ -20,6 +20,12 @@ pub enum Group {
     RunoutMode,
     /// Work coordinate selection and other setup.
     Setup,
+    /// Distance mode: absolute / incremental axis words (LinuxCNC G90/G91).
+    Distance,
+    /// Lathe X mode: diameter / radius (LinuxCNC G7/G8).
+    LatheMode,
+    /// Plane selection (G17/G18/G19).
+    Plane,
 }
 
 /// What a G code does.
@@ -73,6 +79,24 @@ pub enum G {
     G76,
     /// G78 enhanced threading cycle (GSK).
     G78,
+    /// Absolute axis words (LinuxCNC G90).
+    Absolute,
+    /// Incremental axis words (LinuxCNC G91).
+    Incremental,
+    /// X as a diameter (LinuxCNC G7).
+    DiameterMode,
+    /// X as a radius (LinuxCNC G8).
+    RadiusMode,
+    /// Plane selection: 17 (XY), 18 (XZ) or 19 (YZ).
+    Plane(u8),
+    /// Cutter compensation with the diameter in the block's D word (LinuxCNC G41.1/G42.1).
+    CompOnDynamic,
+    /// Spindle-synchronised motion, K = distance along the move per revolution (LinuxCNC G33).
+    SyncThread,
+    /// LinuxCNC's G76 threading cycle (motion group: drive line, I J K R Q H E L).
+    ThreadCycle,
+    /// Known to the controller and without effect on the drawing (work offsets, path control, tool length).
+    Accepted,
     /// Known to the controller but not drawn; `returns` says whether the tool ends where it started.
     NotSimulated {
         /// What it is.

@@ -48,7 +48,9 @@ impl Interp {
     /// A fresh interpreter.
     pub fn new(s: &Settings) -> Interp {
         let ctl = controller::of(s.dialect());
-        Interp { m: Modal::default(), s: s.clone(), ctl, increments: ctl.rules.increments(s) }
+        let mut m = Modal::default();
+        (ctl.init)(&mut m, s);
+        Interp { m, s: s.clone(), ctl, increments: ctl.rules.increments(s) }
     }
 
     /// Reads one block: its events go to `events`, its findings to `diags`.
@@ -65,18 +67,26 @@ impl Interp {
         let mut r =
             Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, increments: self.increments, events, diags };
         r.close();
+        if let Some(finish) = ctl.finish {
+            finish(&mut r);
+        }
     }
 }
 
 /// Interprets one block.
 fn block(r: &mut Reader, ctl: &Controller, b: &Block) {
     match b.kind {
-        BlockKind::Percent | BlockKind::ProgramNumber(_) => return,
+        BlockKind::Percent => {
+            r.m.percent = true;
+            return;
+        }
+        BlockKind::ProgramNumber(_) => return,
         BlockKind::Normal => {}
     }
-    if b.is_empty() {
+    if b.is_empty() && b.spindle.is_none() {
         return; // blank, comment-only or a bare sequence number: transparent
     }
+    r.m.last_span = b.span;
     if r.m.ended {
         if r.m.first(once::AFTER_END) {
             r.diag(Code::AfterEnd, b.span, "blocks after M30/M02 are never executed");
@@ -101,7 +111,15 @@ fn block(r: &mut Reader, ctl: &Controller, b: &Block) {
         r.end_chain();
         return;
     }
-    let (motion_g, one_shot) = modal_codes(r, &seen_buf[..n_seen]);
+    if let Some(check) = ctl.check {
+        let code = seen_buf[..n_seen].iter().flatten().find(|(g, _, _)| *g == Group::Motion).map(|(_, _, w)| code10(w));
+        let motion = code.or(if r.has_axes(b) { r.m.motion_code } else { None });
+        if !check(r, b, motion) {
+            r.end_chain();
+            return;
+        }
+    }
+    let (motion_g, one_shot) = modal_codes(r, b, &seen_buf[..n_seen]);
     if let Some(w) = b.get(b'S') {
         if one_shot.map(|(g, _)| g) != Some(G::SetCoord) {
             r.m.spindle = Some(w.value());
@@ -116,7 +134,7 @@ fn g_codes<'b>(r: &mut Reader, ctl: &Controller, b: &'b Block, seen: &mut [Optio
     let mut n = 0;
     for w in b.all(b'G') {
         let v10 = w.value() * 10.0;
-        let code = if v10 >= 0.0 && (v10 - v10.round()).abs() < 1e-9 { (ctl.g_code)(v10.round() as i64) } else { None };
+        let code = if v10 >= 0.0 && (v10 - v10.round()).abs() < 1e-9 { (ctl.g_code)(code10(w)) } else { None };
         let Some((group, g)) = code else {
             r.diag(
                 Code::UnsupportedGCode,
@@ -142,13 +160,24 @@ fn g_codes<'b>(r: &mut Reader, ctl: &Controller, b: &'b Block, seen: &mut [Optio
     Some(n)
 }
 
+/// A G word's code times ten (G33.1 is 331).
+fn code10(w: &Word) -> i64 {
+    (w.value() * 10.0).round() as i64
+}
+
 /// Applies the modal settings that take effect before motion (units,
-/// surface speed, compensation); returns the block's motion and one-shot codes.
-fn modal_codes<'b>(r: &mut Reader, seen: &[Option<Seen<'b>>]) -> (Code1<'b>, Code1<'b>) {
+/// surface speed, compensation, distance and X mode, plane); returns the
+/// block's motion and one-shot codes.
+fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Code1<'b>, Code1<'b>) {
     let mut motion_g = None;
     let mut one_shot = None;
     for &(group, g, w) in seen.iter().flatten() {
         match g {
+            G::Absolute | G::Incremental => r.m.incremental = g == G::Incremental,
+            G::DiameterMode | G::RadiusMode => r.m.radius = g == G::RadiusMode,
+            G::Plane(p) => r.m.plane = p,
+            G::Accepted => {}
+            G::CompOff => r.m.comp = None,
             G::Inch | G::Metric => {
                 let inch = g == G::Inch;
                 if inch != r.m.inch && r.m.motion_seen {
@@ -162,7 +191,10 @@ fn modal_codes<'b>(r: &mut Reader, seen: &[Option<Seen<'b>>]) -> (Code1<'b>, Cod
             }
             G::Css => r.m.css = true,
             G::CssOff => r.m.css = false,
-            G::CompOn => {
+            G::CompOn | G::CompOnDynamic => {
+                // G41.1/G42.1 give the tool diameter in D; G41/G42 take it from a tool table screwcut does not have.
+                let d = if g == G::CompOnDynamic { b.get(b'D').map_or(0.0, |d| d.value().abs()) } else { 0.0 };
+                r.m.comp = Some(d / 2.0);
                 if r.m.first(once::COMP) {
                     r.diag(
                         Code::NotSimulated,
@@ -173,7 +205,10 @@ fn modal_codes<'b>(r: &mut Reader, seen: &[Option<Seen<'b>>]) -> (Code1<'b>, Cod
             }
             G::RenheRunout => one_shot = Some((g, w)),
             _ => match group {
-                Group::Motion => motion_g = Some((g, w)),
+                Group::Motion => {
+                    r.m.motion_code = Some(code10(w));
+                    motion_g = Some((g, w));
+                }
                 Group::OneShot => one_shot = Some((g, w)),
                 Group::Setup => {
                     if let G::NotSimulated { what, .. } = g {
@@ -198,11 +233,16 @@ fn command(r: &mut Reader, ctl: &Controller, b: &Block, motion_g: Code1, one_sho
             r.diag(Code::NotSimulated, w.span, format!("{}: {what} is not drawn", w.display()));
         }
     }
-    let has_axes = b.has(b'X') || b.has(b'Z') || b.has(b'U') || b.has(b'W');
+    let has_axes = r.has_axes(b);
     let m_end = b.all(b'M').any(|m| matches!(m.num.integer(), Some(2 | 30)));
     for m in b.all(b'M') {
-        if let Some(98 | 99) = m.num.integer() {
-            r.diag(Code::NotSimulated, m.span, format!("{}: subprogram calls are not followed", m.display()));
+        match m.num.integer() {
+            Some(98 | 99) => {
+                r.diag(Code::NotSimulated, m.span, format!("{}: subprogram calls are not followed", m.display()))
+            }
+            Some(3 | 4) => r.m.spindle_on = true,
+            Some(5) => r.m.spindle_on = false,
+            _ => {}
         }
     }
     if let Some((g, w)) = one_shot {
@@ -237,6 +277,8 @@ fn motion_of(g: G) -> Motion {
         G::Thread => Motion::Thread,
         G::RenheInch => Motion::RenheInch,
         G::RenheMetric => Motion::RenheMetric,
+        G::SyncThread => Motion::SyncThread,
+        G::ThreadCycle => Motion::ThreadCycle,
         G::G90 => Motion::G90,
         G::G92 => Motion::G92,
         G::G94 => Motion::G94,
@@ -354,7 +396,12 @@ fn motion_block(r: &mut Reader, ctl: &Controller, b: &Block) {
             feed_word(r, b);
             turning(r, b, r.m.motion == Motion::G94);
         }
-        Motion::Thread | Motion::RenheInch | Motion::RenheMetric | Motion::G92 => {
+        Motion::Thread
+        | Motion::RenheInch
+        | Motion::RenheMetric
+        | Motion::G92
+        | Motion::SyncThread
+        | Motion::ThreadCycle => {
             let motion = r.m.motion;
             (ctl.command)(r, b, Command::Motion(motion));
         }

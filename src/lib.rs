@@ -28,6 +28,7 @@ pub mod diagnostic;
 pub mod diagram;
 pub mod dialect;
 pub mod event;
+pub mod expand;
 pub mod figures;
 pub mod gcode;
 pub mod geom;
@@ -44,8 +45,10 @@ pub mod shop;
 pub mod span;
 pub mod standard;
 pub mod state;
+pub mod svg;
 pub mod thread;
 pub mod wasm;
+pub mod wizard;
 
 pub use diagnostic::{Code, Diagnostic, Severity};
 pub use dialect::Dialect;

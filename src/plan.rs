@@ -124,8 +124,11 @@ impl Snapshot {
     /// The snapshot as reached in a text `bytes` longer before it, with
     /// `moves`, `threads` and `diags` more motions, threads and diagnostics.
     pub fn shifted(&self, moves: isize, threads: isize, diags: isize, bytes: isize) -> Snapshot {
+        let mut modal = self.modal.clone();
+        // The one byte position the modal state holds (where an end-of-program finding goes).
+        modal.last_span = modal.last_span.shifted(bytes);
         Snapshot {
-            modal: self.modal.clone(),
+            modal,
             plan: self.plan.shifted(moves, threads, bytes),
             diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|s| s.shifted(bytes))),
         }

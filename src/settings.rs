@@ -49,6 +49,9 @@ const GSK: &[Dialect] = &[Dialect::Gsk980tdc];
 const FANUC: &[Dialect] = &[Dialect::Fanuc0i];
 const RENHE: &[Dialect] = &[Dialect::Renhe];
 const CYCLES: &[Dialect] = &[Dialect::Gsk980tdc, Dialect::Fanuc0i];
+const LINUXCNC: &[Dialect] = &[Dialect::LinuxCnc];
+/// The dialects whose X mode is a machine parameter (LinuxCNC switches it with G7/G8).
+const X_PARAM: &[Dialect] = &[Dialect::Gsk980tdc, Dialect::Fanuc0i, Dialect::Renhe];
 const ALL: &[Dialect] = &[];
 
 macro_rules! params {
@@ -95,9 +98,13 @@ pub const FINISH_RULES: &[&str] = &["steps", "split"];
 pub const FLANK_ANCHORS: &[&str] = &["start", "thread"];
 /// Choices of `renhe.inch_f`.
 pub const RENHE_INCH_F: &[&str] = &["fraction", "decimal"];
+/// Choices of `linuxcnc.startup_x`.
+pub const LINUXCNC_X: &[&str] = &["radius", "diameter"];
+/// Choices of `linuxcnc.startup_plane`.
+pub const LINUXCNC_PLANES: &[&str] = &["g17", "g18", "g19"];
 
 params! {
-    XMode: d("x_mode", ALL, Kind::Choice(X_MODES), 0.0, (0.0, 1.0), "",
+    XMode: d("x_mode", X_PARAM, Kind::Choice(X_MODES), 0.0, (0.0, 1.0), "",
         "X and U are programmed as a diameter (0) or a radius (1). GSK and Fanuc parameter DIA; default diameter.",
         "X、U 按直径(0)或半径(1)编程，默认直径编程。");
     Increment: d("increment", ALL, Kind::Choice(INCREMENTS), 0.0, (0.0, 1.0), "",
@@ -196,6 +203,25 @@ params! {
     RenheInchF: d("renhe.inch_f", RENHE, Kind::Choice(RENHE_INCH_F), 0.0, (0.0, 1.0), "",
         "How G32 F is read: 'fraction' (F11.2 = 11 1/2 TPI, the digit after the point is the denominator) or 'decimal' (F11.2 = 11.2 TPI).",
         "G32 F 的读法：fraction(F11.2 = 11½ 牙/英寸) 或 decimal。");
+    // ---- LinuxCNC ----
+    LinuxStartupX: d("linuxcnc.startup_x", LINUXCNC, Kind::Choice(LINUXCNC_X), 0.0, (0.0, 1.0), "",
+        "X mode before the program's first G7/G8: 'radius' (G8, the interpreter's default and what stand-alone rs274 uses) or 'diameter' (G7, as a lathe configuration's RS274NGC_STARTUP_CODE usually sets it).",
+        "程序中第一个 G7/G8 之前的 X 方式：radius(G8，解释器默认) 或 diameter(G7，车床配置的启动代码通常设置)。");
+    LinuxStartupPlane: d("linuxcnc.startup_plane", LINUXCNC, Kind::Choice(LINUXCNC_PLANES), 0.0, (0.0, 2.0), "",
+        "Plane before the program's first G17/G18/G19: g17 (the interpreter's default) or g18 (a lathe configuration's startup code). G33 and G76 outside G18 warn.",
+        "程序中第一个 G17/G18/G19 之前的平面：g17(解释器默认) 或 g18(车床配置)。");
+    LinuxSpindles: d("linuxcnc.spindles", LINUXCNC, Kind::Int, 1.0, (1.0, 8.0), "spindles",
+        "Spindles configured ([TRAJ] SPINDLES): a $ word selects 0 to this count − 1; stand-alone rs274 has one.",
+        "配置的主轴数：$ 字可选 0 到此数减 1。");
+    LinuxToolAngle: d("linuxcnc.tool_angle", LINUXCNC, Kind::Float, 60.0, (0.0, 179.0), "°",
+        "Included angle of the threading tool, which LinuxCNC's G33/G76 do not know: used for the chip areas and the tooth section.",
+        "螺纹刀刀尖角(LinuxCNC 的 G33/G76 不含此值)，用于切削面积与牙形图。");
+    LinuxPassWarning: d("linuxcnc.pass_warning", LINUXCNC, Kind::Int, 50.0, (1.0, 1.0e6), "passes",
+        "A G76 that cuts more passes than this warns (a large degression R or a small J multiplies them).",
+        "G76 走刀次数超过此值时警告。");
+    LinuxRequireEnd: d("linuxcnc.require_end", LINUXCNC, Kind::Bool, 1.0, (0.0, 1.0), "",
+        "1: a program that ends without M2/M30 or a closing % is an alarm, as in LinuxCNC ('File ended with no percent sign or program end'); 0: accept snippets.",
+        "1：程序未以 M2/M30 或 % 结束时报警(与 LinuxCNC 相同)；0：接受程序片段。");
     // ---- textbook advice ----
     DepthFactor: d("textbook.depth_factor", ALL, Kind::Float, 1.3, (0.0, 10.0), "× pitch",
         "Diameter depth of a 60° thread as a multiple of the pitch (d = D − 1.3·P); used to assume the crest diameter of a manual G32 thread whose major diameter the program does not turn.",

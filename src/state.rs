@@ -25,6 +25,10 @@ pub enum Motion {
     RenheInch,
     /// Renhe G33 metric thread.
     RenheMetric,
+    /// LinuxCNC G33: spindle-synchronised move, K along the move.
+    SyncThread,
+    /// LinuxCNC G76 threading cycle (modal, but each block must give P I J K).
+    ThreadCycle,
     /// G90 turning cycle.
     G90,
     /// G92 threading cycle.
@@ -38,7 +42,7 @@ pub enum Motion {
 impl Motion {
     /// Whether blocks in this mode cut a thread block by block (continuous threads).
     pub fn is_thread_block(self) -> bool {
-        matches!(self, Motion::Thread | Motion::RenheInch | Motion::RenheMetric)
+        matches!(self, Motion::Thread | Motion::RenheInch | Motion::RenheMetric | Motion::SyncThread)
     }
 }
 
@@ -160,6 +164,10 @@ pub mod once {
     pub const AFTER_END: u32 = 2;
     /// Tool-nose compensation.
     pub const COMP: u32 = 8;
+    /// A thread outside the XZ plane (LinuxCNC).
+    pub const PLANE: u32 = 16;
+    /// G33 K along a taper move (LinuxCNC).
+    pub const LEAD_ALONG_PATH: u32 = 32;
 }
 
 /// The modal state of the controller between blocks.
@@ -209,6 +217,22 @@ pub struct Modal {
     pub ended: bool,
     /// A motion block has been read.
     pub motion_seen: bool,
+    /// X words are radii (G8, or the `x_mode` parameter); otherwise diameters.
+    pub radius: bool,
+    /// Axis words are incremental (LinuxCNC G91).
+    pub incremental: bool,
+    /// Plane in force: 17, 18 or 19.
+    pub plane: u8,
+    /// The spindle turns (M3/M4 given, no M5 since).
+    pub spindle_on: bool,
+    /// Cutter radius compensation in force, with its radius when the program gives it (0 otherwise).
+    pub comp: Option<f64>,
+    /// The last motion-group G code read, times 10 (G33.1 is 331).
+    pub motion_code: Option<i64>,
+    /// A `%` line was read.
+    pub percent: bool,
+    /// Span of the last block read (where an end-of-program finding goes).
+    pub last_span: crate::span::Span,
     /// Diagnostics said once ([`once`] flags).
     pub said: u32,
 }
@@ -237,6 +261,14 @@ impl Default for Modal {
             last_x: (0.0, 0),
             ended: false,
             motion_seen: false,
+            radius: false,
+            incremental: false,
+            plane: 18,
+            spindle_on: false,
+            comp: None,
+            motion_code: None,
+            percent: false,
+            last_span: crate::span::Span::default(),
             said: 0,
         }
     }

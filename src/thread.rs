@@ -47,6 +47,12 @@ pub enum Source {
     G92,
     /// G76 cycle.
     G76,
+    /// LinuxCNC G33 blocks (K along the move).
+    #[serde(rename = "linuxcnc_g33")]
+    LinuxG33,
+    /// LinuxCNC G76 cycle (drive line, degression R, compound angle Q, tapers E/L).
+    #[serde(rename = "linuxcnc_g76")]
+    LinuxG76,
 }
 
 /// How the tool feeds into the thread from pass to pass.

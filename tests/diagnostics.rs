@@ -5,7 +5,7 @@ mod common;
 use common::*;
 use screwcut::{Code, Dialect};
 
-use Dialect::{Fanuc0i as F, Gsk980tdc as G, Renhe as R};
+use Dialect::{Fanuc0i as F, Gsk980tdc as G, LinuxCnc as L, Renhe as R};
 
 /// (code, dialect, settings, program, line, column, text the message must contain)
 type Case = (Code, Dialect, &'static [&'static str], &'static str, u32, u32, &'static str);
@@ -224,6 +224,66 @@ const CASES: &[Case] = &[
     (Code::E18_04, R, &[], "G00 X40 Z5\nG00 U-10\nG33 W-3 F1\n", 3, 5, "4 mm"),
     (Code::E18_05, R, &[], "G00 X40 Z5\nG33 W-40 F1.5\n", 2, 1, "X feed"),
     (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
+    (Code::SpindleNotTurning, L, &[], "G18\nG0 X10 Z5\nG33 Z-20 K1.5\nM2\n", 3, 1, "Spindle not turning in G33"),
+    (
+        Code::CutterCompActive,
+        L,
+        &[],
+        "G18\nM3 S300\nG0 X10 Z5\nG41\nG76 P1.5 Z-20 I-1 J0.2 K1\nM2\n",
+        5,
+        1,
+        "Cannot use G76 threading cycle with cutter radius compensation on",
+    ),
+    (Code::NoProgramEnd, L, &[], "G18\nM3 S300\nG0 X10 Z5\n", 3, 1, "File ended with no percent sign or program end"),
+    (Code::ValueReadAs, L, &[], "G18\nM3 S300\nG0 X10 Z5\nG76 P1.5 Z-20 I-1 J0.2 K1 R0.5\nM2\n", 4, 27, "read as R1"),
+    (Code::OddPitch, L, &[], "G18\nM3 S300\nG0 X10 Z5\nG33 Z-20 K-1.5\nM2\n", 4, 10, "zero or below"),
+    (
+        Code::FullDepthSkipped,
+        L,
+        &[],
+        "G18\nM3 S300\nG0 X10 Z5\nG76 P1.5 Z-20 I-1 J0.2 K1 H-1\nM2\n",
+        4,
+        27,
+        "never cut to K",
+    ),
+    (
+        Code::BackwardCut,
+        L,
+        &[],
+        "G18\nM3 S300\nG0 X10 Z5\nG76 P1.5 Z-20 I-1 J0.2 K1 E20 L3\nM2\n",
+        4,
+        1,
+        "runs backwards, from Z-15 to Z0",
+    ),
+    (Code::PlaneNotXz, L, &[], "G17\nM3 S300\nG0 X10 Z5\nG76 P1.5 Z-20 I-1 J0.2 K1\nM2\n", 4, 1, "G76 in G17"),
+    (
+        Code::DriveLineKept,
+        L,
+        &[],
+        "G18\nM3 S300\nG0 X10 Z5\nG76 P1.5 X5 Z-20 I-1 J0.2 K1\nM2\n",
+        4,
+        10,
+        "drive line X10",
+    ),
+    (Code::ManyPasses, L, &[], "G18\nM3 S300\nG0 X10 Z5\nG76 P1.5 Z-20 I-1 J0.01 K1\nM2\n", 4, 1, "100 passes"),
+    (
+        Code::FloatExtraPass,
+        L,
+        &[],
+        "G18\nM3 S300\nG0 X10 Z5\nG76 P1.5 Z-20 I-0.7 J0.3 K0.9\nM2\n",
+        4,
+        1,
+        "floating-point rounding",
+    ),
+    (
+        Code::LeadAlongPath,
+        L,
+        &[],
+        "G18\nM3 S300\nG0 X10 Z5\nG33 X11 Z-20 K1.5\nM2\n",
+        4,
+        14,
+        "1.4988 per revolution along Z",
+    ),
 ];
 
 #[test]

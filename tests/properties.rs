@@ -9,7 +9,7 @@ use screwcut::settings::P;
 use screwcut::{Dialect, Plan, Settings};
 
 fn dialect(i: u8) -> Dialect {
-    Dialect::ALL[i as usize % 3]
+    Dialect::ALL[i as usize % Dialect::ALL.len()]
 }
 
 /// Invariants every plan keeps, whatever the input.
@@ -71,10 +71,35 @@ fn word() -> impl Strategy<Value = String> {
 /// sometimes a comment or a stray character.
 fn block() -> impl Strategy<Value = String> {
     let g = prop::sample::select(vec![
-        "", "G00 ", "G01 ", "G02 ", "G03 ", "G32 ", "G33 ", "G30 ", "G76 ", "G78 ", "G92 ", "G90 ", "G94 ", "G04 ",
-        "G50 ", "G20 ", "G21 ", "G28 ", "G71 ",
+        "",
+        "G00 ",
+        "G01 ",
+        "G02 ",
+        "G03 ",
+        "G32 ",
+        "G33 ",
+        "G30 ",
+        "G76 ",
+        "G78 ",
+        "G92 ",
+        "G90 ",
+        "G94 ",
+        "G04 ",
+        "G50 ",
+        "G20 ",
+        "G21 ",
+        "G28 ",
+        "G71 ",
+        "G7 ",
+        "G8 ",
+        "G91 ",
+        "G17 ",
+        "G41.1 D1 ",
+        "M3 ",
+        "M5 ",
     ]);
-    let tail = prop::sample::select(vec!["", "", "", " (c)", ";", " ; G01 X1", " (", ")", " #1", " Ｇ", " 。5"]);
+    let tail =
+        prop::sample::select(vec!["", "", "", " (c)", ";", " ; G01 X1", " (", ")", " #1", " Ｇ", " 。5", " $1", " $0"]);
     (g, prop::collection::vec(word(), 0..6), tail).prop_map(|(g, w, t)| format!("{g}{}{t}", w.join(" ")))
 }
 
@@ -87,7 +112,7 @@ proptest! {
 
     /// Arbitrary text (any Unicode) never panics.
     #[test]
-    fn any_text(text in "\\PC{0,400}", d in 0u8..3) {
+    fn any_text(text in "\\PC{0,400}", d in 0u8..4) {
         let s = Settings::new(dialect(d));
         let plan = screwcut::plan(&text, &s);
         check(&text, &s, &plan);
@@ -95,7 +120,7 @@ proptest! {
 
     /// G-code-shaped programs with extreme numbers never panic and stay consistent.
     #[test]
-    fn gcode_shaped(text in program(), d in 0u8..3) {
+    fn gcode_shaped(text in program(), d in 0u8..4) {
         let s = Settings::new(dialect(d));
         let plan = screwcut::plan(&text, &s);
         check(&text, &s, &plan);
@@ -103,7 +128,7 @@ proptest! {
 
     /// Tight limits hold: a few moves, a few passes, a few diagnostics.
     #[test]
-    fn limits_hold(text in program(), d in 0u8..3, moves in 1u32..20, passes in 1u32..20, diags in 1u32..5) {
+    fn limits_hold(text in program(), d in 0u8..4, moves in 1u32..20, passes in 1u32..20, diags in 1u32..5) {
         let mut s = Settings::new(dialect(d));
         s.set(P::LimitMoves, moves as f64);
         s.set(P::LimitPasses, passes as f64);
@@ -111,7 +136,8 @@ proptest! {
         let plan = screwcut::plan(&text, &s);
         check(&text, &s, &plan);
         for t in &plan.threads {
-            if matches!(t.source, screwcut::thread::Source::G76 | screwcut::thread::Source::G78) {
+            use screwcut::thread::Source;
+            if matches!(t.source, Source::G76 | Source::G78 | Source::LinuxG76) {
                 assert!(t.passes.iter().all(|p| p.index <= passes));
             }
         }
@@ -119,7 +145,7 @@ proptest! {
 
     /// Every setting at any value of its range plans without a panic.
     #[test]
-    fn any_setting(text in program(), d in 0u8..3, which in 0usize..64, frac in 0.0f64..=1.0) {
+    fn any_setting(text in program(), d in 0u8..4, which in 0usize..64, frac in 0.0f64..=1.0) {
         let mut s = Settings::new(dialect(d));
         let defs = screwcut::settings::DEFS;
         let def = &defs[which % defs.len()];
@@ -139,7 +165,7 @@ proptest! {
     fn incremental_matches_full(
         base in prop::collection::vec(block(), 250..700),
         edits in prop::collection::vec((0.0f64..1.0, 0u8..3, block()), 1..6),
-        d in 0u8..3,
+        d in 0u8..4,
         few_diagnostics in any::<bool>(),
     ) {
         let mut s = Settings::new(dialect(d));

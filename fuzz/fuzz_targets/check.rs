@@ -10,12 +10,16 @@ use screwcut::{Dialect, Settings};
 /// Plans `data` and checks the plan; panics on a violation.
 pub fn check(data: &[u8]) {
     let Some((&head, rest)) = data.split_first() else { return };
-    let mut s = Settings::new(Dialect::ALL[(head % 3) as usize]);
+    let n = Dialect::ALL.len() as u8;
+    let mut s = Settings::new(Dialect::ALL[(head % n) as usize]);
     // Stress a few settings that change the planner's paths.
-    match (head / 3) % 8 {
+    match (head / n) % 8 {
         1 => s.set(P::No182_7, 1.0),
         2 => s.set(P::Fanuc3401_0, 1.0),
-        3 => s.set(P::XMode, 1.0),
+        3 => {
+            s.set(P::XMode, 1.0);
+            s.set(P::LinuxStartupX, 1.0);
+        }
         4 => s.set(P::LimitPasses, 3.0),
         5 => s.set(P::LimitMoves, 50.0),
         6 => s.set(P::No107, 500.0),

@@ -23,7 +23,7 @@ enum Command {
     Plan {
         /// Program file, or '-' for standard input.
         file: String,
-        /// Controller dialect: gsk980tdc, fanuc0i or renhe.
+        /// Controller dialect: gsk980tdc, fanuc0i, renhe or linuxcnc.
         #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
         dialect: Dialect,
         /// Set a controller parameter or setting, e.g. --set No.058=55 (repeatable).
@@ -41,6 +41,141 @@ enum Command {
     },
     /// List every diagnostic code with its severity.
     Codes,
+    /// Write a program's plan back block by block for a controller: every
+    /// pass with its approach, cut, run-out, retract and return.
+    Expand {
+        /// Program file, or '-' for standard input.
+        file: String,
+        /// Dialect the program is written in.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Dialect to write (default: the program's own).
+        #[arg(long, value_parser = parse_dialect)]
+        to: Option<Dialect>,
+        /// Set a controller parameter or setting of the source dialect (repeatable).
+        #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
+        set: Vec<String>,
+    },
+    /// Write a threading program: a designation (or --major and --lead), its
+    /// length (or --end-z), a controller and a form.
+    Generate(GenerateArgs),
+    /// Draw a program as a standalone SVG: the side section, one thread's
+    /// tooth section or its starts.
+    Svg {
+        /// Program file, or '-' for standard input.
+        file: String,
+        /// Which drawing: side, tooth or starts.
+        #[arg(long, default_value = "side", value_parser = ["side", "tooth", "starts"])]
+        view: String,
+        /// Controller dialect.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Set a controller parameter or setting (repeatable).
+        #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Thread (1-based) of the tooth and starts drawings.
+        #[arg(long, default_value_t = 1)]
+        thread: usize,
+        /// Start (1-based) of the tooth drawing.
+        #[arg(long, default_value_t = 1)]
+        start: u32,
+        /// Width of the drawing area in px (labels may widen the page).
+        #[arg(long, default_value_t = 800.0)]
+        width: f64,
+        /// Height of the drawing area in px.
+        #[arg(long, default_value_t = 500.0)]
+        height: f64,
+    },
+}
+
+#[derive(clap::Args)]
+struct GenerateArgs {
+    /// Thread designation: M30x2-6g, M20x1.5-6H, 1/2-13 UNC-2A, 1/2-14 NPT...
+    designation: Option<String>,
+    /// Major diameter (mm), without a designation.
+    #[arg(long)]
+    major: Option<f64>,
+    /// Lead (mm), without a designation.
+    #[arg(long)]
+    lead: Option<f64>,
+    /// Thread length (mm), from --start-z towards -Z.
+    #[arg(long)]
+    length: Option<f64>,
+    /// Z where the thread starts.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    start_z: f64,
+    /// Z where the thread ends (instead of --length).
+    #[arg(long, allow_negative_numbers = true)]
+    end_z: Option<f64>,
+    /// Internal thread.
+    #[arg(long, conflicts_with = "external")]
+    internal: bool,
+    /// External thread (the default without a designation).
+    #[arg(long)]
+    external: bool,
+    /// Number of starts.
+    #[arg(long)]
+    starts: Option<u32>,
+    /// Nose radius of the threading tool (mm; 0 = sharp).
+    #[arg(long, default_value_t = 0.0)]
+    nose_radius: f64,
+    /// Highest spindle speed (rev/min).
+    #[arg(long, default_value_t = 1000.0)]
+    max_rpm: f64,
+    /// Highest thread feed, lead × speed (mm/min).
+    #[arg(long, default_value_t = 3000.0)]
+    max_feed: f64,
+    /// Target controller.
+    #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+    dialect: Dialect,
+    /// Form: g32, g92, g76, g78 (GSK), renhe_g33, g33 or linuxcnc_g76 (LinuxCNC).
+    #[arg(long, short, default_value = "g32", value_parser = parse_form)]
+    form: screwcut::wizard::Form,
+}
+
+fn parse_form(s: &str) -> Result<screwcut::wizard::Form, String> {
+    use screwcut::wizard::Form;
+    Form::parse(s).ok_or_else(|| {
+        format!("unknown form '{s}' ({})", Form::ALL.iter().map(|f| f.name()).collect::<Vec<_>>().join(", "))
+    })
+}
+
+fn generate(a: GenerateArgs) -> ExitCode {
+    let internal = if a.internal {
+        Some(true)
+    } else if a.external {
+        Some(false)
+    } else {
+        None
+    };
+    let r = screwcut::wizard::Request {
+        designation: a.designation,
+        major: a.major,
+        lead: a.lead,
+        starts: a.starts,
+        internal,
+        start_z: a.start_z,
+        end_z: a.end_z,
+        length: a.length,
+        nose_radius: a.nose_radius,
+        max_rpm: a.max_rpm,
+        max_feed: a.max_feed,
+        dialect: a.dialect,
+        form: a.form,
+    };
+    match screwcut::wizard::generate(&r) {
+        Ok(g) => {
+            for n in &g.notes {
+                eprintln!("screwcut: note: {n}");
+            }
+            emit(&g.program);
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("screwcut: {e}");
+            ExitCode::from(2)
+        }
+    }
 }
 
 fn parse_dialect(s: &str) -> Result<Dialect, String> {
@@ -51,6 +186,31 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
+        Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
+        Command::Generate(a) => generate(a),
+        Command::Svg { file, view, dialect, set, thread, start, width, height } => {
+            let (settings, text) = match input(&file, dialect, &set) {
+                Ok(v) => v,
+                Err(code) => return code,
+            };
+            let plan = screwcut::plan(&text, &settings);
+            let ti = thread.max(1) - 1;
+            let scene = match view.as_str() {
+                "tooth" => screwcut::diagram::tooth(&plan, ti, start.max(1)),
+                "starts" => screwcut::diagram::starts(&plan, ti),
+                _ => Some(screwcut::diagram::side(&plan)),
+            };
+            let Some(scene) = scene else {
+                eprintln!(
+                    "screwcut: {file} has no thread {thread} to draw the {view} view of ({} threads)",
+                    plan.threads.len()
+                );
+                return ExitCode::from(2);
+            };
+            let opts = screwcut::svg::Options { width, height, thread: ti, ..Default::default() };
+            emit(&screwcut::svg::svg(&scene, &opts));
+            ExitCode::SUCCESS
+        }
         Command::Settings { dialect } => {
             let s = Settings::new(dialect);
             let mut out = String::new();
@@ -83,12 +243,13 @@ fn main() -> ExitCode {
     }
 }
 
-fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
+/// The settings of `dialect` with `set` applied, and the program text; `Err` is the exit code (2).
+fn input(file: &str, dialect: Dialect, set: &[String]) -> Result<(Settings, String), ExitCode> {
     let mut settings = Settings::new(dialect);
     for a in set {
         if let Err(e) = settings.assign(a) {
             eprintln!("screwcut: {e}");
-            return ExitCode::from(2);
+            return Err(ExitCode::from(2));
         }
     }
     let mut bytes = Vec::new();
@@ -99,10 +260,35 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
     };
     if let Err(e) = read {
         eprintln!("screwcut: cannot read {file}: {e}");
-        return ExitCode::from(2);
+        return Err(ExitCode::from(2));
     }
     // Programs from old controllers are not always UTF-8: read them lossily rather than refuse.
-    let text = String::from_utf8_lossy(&bytes);
+    Ok((settings, String::from_utf8_lossy(&bytes).into_owned()))
+}
+
+fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String]) -> ExitCode {
+    let (settings, text) = match input(file, dialect, set) {
+        Ok(v) => v,
+        Err(code) => return code,
+    };
+    let plan = screwcut::plan(&text, &settings);
+    let alarms = plan.diagnostics.iter().filter(|d| d.severity == Severity::Error).count();
+    if alarms > 0 {
+        eprintln!("screwcut: note: {file} has {alarms} alarm(s): the blocks with an alarm are not in the expansion");
+    }
+    let e = screwcut::expand::expand(&plan, to);
+    for n in &e.notes {
+        eprintln!("screwcut: note: {n}");
+    }
+    emit(&e.program);
+    ExitCode::SUCCESS
+}
+
+fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
+    let (settings, text) = match input(file, dialect, set) {
+        Ok(v) => v,
+        Err(code) => return code,
+    };
     let plan = screwcut::plan(&text, &settings);
     emit(&if json { plan.to_json() + "\n" } else { summary(&plan, file) });
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
@@ -234,6 +420,8 @@ fn summary(plan: &Plan, file: &str) -> String {
                 Source::G78 => "G78",
                 Source::G92 => "G92",
                 Source::G76 => "G76",
+                Source::LinuxG33 => "LinuxCNC G33",
+                Source::LinuxG76 => "LinuxCNC G76",
             },
             fmt(t.lead),
             fmt(t.pitch),

@@ -5,12 +5,13 @@
 //! serves feed and thread lead.
 
 use super::words::Unit;
-use super::{Command, Controller, Reader, Rules, ThreadRules, g32, g76, g92, lathe_g_code};
+use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::block::Block;
 use crate::dialect::{Dialect, letters};
 use crate::gcode::{G, Group};
 use crate::settings::P;
 use crate::state::Motion;
+use crate::wizard::Form;
 
 /// The Fanuc 0i-TF.
 pub static CONTROLLER: Controller = Controller {
@@ -20,9 +21,25 @@ pub static CONTROLLER: Controller = Controller {
         addresses: letters(b"ABCDEFGHIJKLMNOPQRSTUWXZ"),
         increments_without_point: Some(P::Fanuc3401_0),
         shared_f_register: true,
+        axis_words: letters(b"XZUW"),
+        free_words: 0,
+        spindle_word: false,
     },
     g_code,
     command,
+    init: super::x_mode_parameter,
+    check: None,
+    finish: None,
+    writing: Writing {
+        preamble: &[],
+        units: Some(("G20", "G21")),
+        motion: ["G00", "G01", "G02", "G03"],
+        points: true,
+        spindle_on: None,
+        thread: ThreadWords::G32 { runout: false },
+        start_angle: true,
+        forms: &[Form::G32, Form::G92, Form::G76],
+    },
     tool_angle: Some(P::Fanuc5143),
 };
 

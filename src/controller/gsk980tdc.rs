@@ -7,7 +7,7 @@
 //! `G78 X(U) Z(W) R(i) P(k) Q(Δd) F(I);`
 
 use super::words::{self, Unit};
-use super::{Command, Controller, Reader, Rules, ThreadRules, g32, g76, g92, lathe_g_code};
+use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::block::{Block, Word};
 use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
 use crate::diagnostic::Code;
@@ -17,6 +17,7 @@ use crate::gcode::{G, Group};
 use crate::settings::P;
 use crate::state::{G78First, Motion};
 use crate::thread::{Infeed, Source};
+use crate::wizard::Form;
 
 /// The GSK980TDc.
 pub static CONTROLLER: Controller = Controller {
@@ -26,9 +27,25 @@ pub static CONTROLLER: Controller = Controller {
         addresses: letters(b"ACDEFGHIJKLMNOPQRSTUWXZ"),
         increments_without_point: None,
         shared_f_register: false,
+        axis_words: letters(b"XZUW"),
+        free_words: 0,
+        spindle_word: false,
     },
     g_code,
     command,
+    init: super::x_mode_parameter,
+    check: None,
+    finish: None,
+    writing: Writing {
+        preamble: &[],
+        units: Some(("G20", "G21")),
+        motion: ["G00", "G01", "G02", "G03"],
+        points: false,
+        spindle_on: None,
+        thread: ThreadWords::G32 { runout: true },
+        start_angle: true,
+        forms: &[Form::G32, Form::G92, Form::G76, Form::G78],
+    },
     tool_angle: Some(P::No058),
 };
 

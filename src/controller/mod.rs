@@ -5,13 +5,15 @@
 //!
 //! GSK980TDc and Fanuc 0i share the G32, G92 and G76 readers ([`g32`],
 //! [`g92`], [`g76`]), which take the differences as data ([`ThreadRules`]);
-//! G78 is GSK's own, Renhe's G30/G32/G33 are Renhe's.
+//! G78 is GSK's own, Renhe's G30/G32/G33 are Renhe's, and LinuxCNC's
+//! G7/G8, G33 and G76 with its word checks are in [`linuxcnc`].
 
 pub mod fanuc0i;
 pub mod g32;
 pub mod g76;
 pub mod g92;
 pub mod gsk980tdc;
+pub mod linuxcnc;
 pub mod reader;
 pub mod renhe;
 pub mod words;
@@ -21,8 +23,8 @@ pub use reader::{Reader, Rules};
 use crate::block::{Block, Word};
 use crate::dialect::Dialect;
 use crate::gcode::{G, Group};
-use crate::settings::P;
-use crate::state::Motion;
+use crate::settings::{P, Settings};
+use crate::state::{Modal, Motion};
 
 /// A controller: its rules and the commands it reads itself.
 pub struct Controller {
@@ -32,22 +34,97 @@ pub struct Controller {
     pub g_code: fn(i64) -> Option<(Group, G)>,
     /// Reads a thread or cycle block of this controller.
     pub command: fn(&mut Reader, &Block, Command),
+    /// Sets the modal state a program starts in.
+    pub init: fn(&mut Modal, &Settings),
+    /// Checks a block's words before it runs, given the motion it will make
+    /// (its motion-group code, or the modal one when it has axis words, ×10);
+    /// false after an alarm: the block is not executed.
+    pub check: Option<BlockCheck>,
+    /// Checks made when the program has been read (how it ended).
+    pub finish: Option<fn(&mut Reader)>,
+    /// How programs are written for this controller (`expand`, `generate`).
+    pub writing: Writing,
     /// The parameter holding the tool angle of threads cut block by block
     /// (`None`: 60°).
     pub tool_angle: Option<P>,
 }
 
+/// How programs are written for a controller (`expand`, `generate`): data
+/// the writers read, so that they never ask which controller it is.
+#[derive(Debug)]
+pub struct Writing {
+    /// Lines a program starts with (plane, X mode, distance mode).
+    pub preamble: &'static [&'static str],
+    /// The inch and metric codes, or `None` when the controller reads millimetres only.
+    pub units: Option<(&'static str, &'static str)>,
+    /// Motion codes: rapid, feed, clockwise arc, counter-clockwise arc.
+    pub motion: [&'static str; 4],
+    /// Every length carries a decimal point (Fanuc reads `X20` as 0.02 mm).
+    pub points: bool,
+    /// The block that starts the spindle, where a thread needs it turning.
+    pub spindle_on: Option<&'static str>,
+    /// How a synchronised move is written.
+    pub thread: ThreadWords,
+    /// G32 takes a start angle `Q` in 0.001° (multi-start by start angle).
+    pub start_angle: bool,
+    /// The threading forms the wizard writes for this controller.
+    pub forms: &'static [crate::wizard::Form],
+}
+
+impl Writing {
+    /// A length as the controller reads it: four decimals, with a decimal point where it needs one.
+    pub fn length(&self, v: f64) -> String {
+        let s = crate::num::fmt(v);
+        if self.points && !s.contains('.') { s + "." } else { s }
+    }
+
+    /// A lead or pitch: six decimals, with a decimal point where the controller needs one.
+    pub fn lead(&self, v: f64) -> String {
+        let r = (v * 1e6).round() / 1e6;
+        let mut s = format!("{r:.6}");
+        while s.ends_with('0') {
+            s.pop();
+        }
+        if s.ends_with('.') && !self.points {
+            s.pop();
+        }
+        if s == "-0" { "0".into() } else { s }
+    }
+}
+
+/// How a controller writes one synchronised move.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ThreadWords {
+    /// `G32 X Z F`, F the lead along the long axis; with `runout`, a `J K` run-out (GSK).
+    G32 {
+        /// J/K run-out words.
+        runout: bool,
+    },
+    /// Renhe: `G30 U W` sets the tail, `G33 U W F` (incremental, F the pitch in mm).
+    Renhe,
+    /// LinuxCNC: `G33 X Z K`, K the distance along the move per revolution.
+    AlongPath,
+}
+
+/// A controller's check of a block's words before it runs (see [`Controller::check`]).
+pub type BlockCheck = fn(&mut Reader, &Block, Option<i64>) -> bool;
+
 /// A block the interpreter hands to its controller.
 #[derive(Clone, Copy, Debug)]
 pub enum Command<'b> {
-    /// A block with axis words in a thread motion mode (G32, G92, Renhe G32/G33).
+    /// A block with axis words in a thread motion mode (G32, G92, Renhe G32/G33, LinuxCNC G33/G76).
     Motion(Motion),
     /// A one-shot thread or cycle code (G76, G78, Renhe G30) and its word.
     OneShot(G, &'b Word),
 }
 
 /// Every controller, in [`Dialect::ALL`] order.
-const ALL: [&Controller; 3] = [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER];
+const ALL: [&Controller; 4] = [&gsk980tdc::CONTROLLER, &fanuc0i::CONTROLLER, &renhe::CONTROLLER, &linuxcnc::CONTROLLER];
+
+/// The start state of the controllers whose X mode is a parameter (`x_mode`).
+pub fn x_mode_parameter(m: &mut Modal, s: &Settings) {
+    m.radius = s.radius_x();
+}
 
 /// The controller of a dialect.
 pub fn of(d: Dialect) -> &'static Controller {

@@ -25,6 +25,13 @@ pub struct Rules {
     pub increments_without_point: Option<P>,
     /// One F register serves feed and thread lead (a feed's F becomes the lead).
     pub shared_f_register: bool,
+    /// Letters that are axis words: a block with one of them is a motion block.
+    pub axis_words: u32,
+    /// Letters any block may carry besides its command's own words (the
+    /// controller checks them itself, before the block runs).
+    pub free_words: u32,
+    /// `$` is the spindle selection word (LinuxCNC).
+    pub spindle_word: bool,
 }
 
 impl Rules {
@@ -161,7 +168,12 @@ impl Reader<'_> {
     /// Reads an X/U word as a diameter (radius programming doubles it).
     pub fn x_len(&mut self, w: &Word) -> f64 {
         let v = self.length(w);
-        if self.s.radius_x() { 2.0 * v } else { v }
+        if self.m.radius { 2.0 * v } else { v }
+    }
+
+    /// Whether the block has an axis word of this controller.
+    pub fn has_axes(&self, b: &Block) -> bool {
+        b.words.iter().any(|w| self.rules.axis_words & (1 << (w.letter - b'A')) != 0)
     }
 
     /// Whether `X`/`Z` and `U`/`W` conflict in `b`; reports and returns true when they do.
@@ -187,8 +199,13 @@ impl Reader<'_> {
     /// The end point of the block's X/Z/U/W words from the current position.
     pub fn target(&mut self, b: &Block) -> Target {
         let mut t = Target { p: self.m.pos.p, has_x: false, has_z: false };
+        let inc = self.m.incremental;
         if let Some(w) = b.get(b'X') {
-            t.p.x = self.x_len(w);
+            let v = self.x_len(w);
+            if inc && !self.m.pos.kx {
+                self.current(w.span);
+            }
+            t.p.x = if inc { self.m.pos.p.x + v } else { v };
             t.has_x = true;
         } else if let Some(w) = b.get(b'U') {
             let d = self.x_len(w);
@@ -199,7 +216,11 @@ impl Reader<'_> {
             t.has_x = true;
         }
         if let Some(w) = b.get(b'Z') {
-            t.p.z = self.length(w);
+            let v = self.length(w);
+            if inc && !self.m.pos.kz {
+                self.current(w.span);
+            }
+            t.p.z = if inc { self.m.pos.p.z + v } else { v };
             t.has_z = true;
         } else if let Some(w) = b.get(b'W') {
             let d = self.length(w);
@@ -264,7 +285,7 @@ impl Reader<'_> {
     #[inline(always)]
     pub fn check_words(&mut self, b: &Block, allowed: &[u8], what: &str) -> bool {
         // Inlined, the mask of a literal `allowed` folds to a constant.
-        let mask = letters(ALWAYS) | letters(allowed);
+        let mask = letters(ALWAYS) | letters(allowed) | self.rules.free_words;
         if b.words.iter().all(|w| mask & (1 << (w.letter - b'A')) != 0) {
             return true;
         }

@@ -10,7 +10,7 @@
 //! last W of the thread).
 
 use super::reader::g_span;
-use super::{Command, Controller, Reader, Rules, basic_g_code, g32};
+use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code, g32};
 use crate::block::{Block, Word};
 use crate::cycle::{classify, split_runout};
 use crate::diagnostic::Code;
@@ -22,6 +22,7 @@ use crate::settings::P;
 use crate::span::Span;
 use crate::state::{Motion, Tail};
 use crate::thread::{Axis, Source};
+use crate::wizard::Form;
 
 /// The Renhe controller.
 pub static CONTROLLER: Controller = Controller {
@@ -30,9 +31,25 @@ pub static CONTROLLER: Controller = Controller {
         addresses: letters(b"FGIKLMNOPQRSTUWXZ"),
         increments_without_point: None,
         shared_f_register: false,
+        axis_words: letters(b"XZUW"),
+        free_words: 0,
+        spindle_word: false,
     },
     g_code,
     command,
+    init: super::x_mode_parameter,
+    check: None,
+    finish: None,
+    writing: Writing {
+        preamble: &[],
+        units: None,
+        motion: ["G00", "G01", "G02", "G03"],
+        points: false,
+        spindle_on: None,
+        thread: ThreadWords::Renhe,
+        start_angle: false,
+        forms: &[Form::RenheG33],
+    },
     tool_angle: None,
 };
 

@@ -8,6 +8,7 @@
 //! changes the interpreter.
 
 pub mod infeed;
+pub mod linuxcnc;
 pub mod multi;
 pub mod runout;
 pub mod schedule;
@@ -59,12 +60,28 @@ pub struct PassPoints {
 /// retract and return, with how many of each part.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PassPath {
-    moves: [Move; 6],
+    moves: [Move; 8],
     /// Motions in the approach, the cut and the way back.
     pub counts: [usize; 3],
 }
 
 impl PassPath {
+    /// A path of up to eight motions in all: `approach`, `cut`, `back` (the
+    /// motions past the eighth are dropped).
+    pub fn of(approach: &[Move], cut: &[Move], back: &[Move]) -> PassPath {
+        let mut moves = [Move::default(); 8];
+        let mut counts = [0; 3];
+        let mut n = 0;
+        for (part, count) in [approach, cut, back].into_iter().zip(&mut counts) {
+            for m in part.iter().take(8 - n) {
+                moves[n] = *m;
+                n += 1;
+                *count += 1;
+            }
+        }
+        PassPath { moves, counts }
+    }
+
     /// The motions in order.
     pub fn moves(&self) -> &[Move] {
         &self.moves[..self.counts.iter().sum::<usize>()]
@@ -85,7 +102,8 @@ pub fn classify(from: Point, end: Point) -> Option<(ThreadKind, Axis)> {
     } else {
         ThreadKind::Taper
     };
-    let long = if d.y.abs() > d.x.abs() { Axis::X } else { Axis::Z };
+    // Equal travels (a 45° run-out) within rounding are Z's.
+    let long = if d.y.abs() > d.x.abs() + EPS { Axis::X } else { Axis::Z };
     Some((kind, long))
 }
 
@@ -215,7 +233,7 @@ impl Geometry {
         let runout = p.runout_to.map(|r| mv(MoveKind::Runout, p.to, r));
         let last = p.runout_to.unwrap_or(p.to);
         let up = Point::new(self.a.x, last.z);
-        let mut moves = [Move::default(); 6];
+        let mut moves = [Move::default(); 8];
         let mut n = 0;
         let cut = [screw_in, Some(mv(MoveKind::Thread, p.from, p.to)), runout];
         let all = std::iter::once(approach)

@@ -241,6 +241,10 @@ impl<'c, S: Src> LineLexer<'c, S> {
                         }
                     }
                 }
+                b'$' if self.rules.spindle_word => {
+                    seen_code = true;
+                    self.word(b'$', block, diags);
+                }
                 b':' if !seen_code => {
                     // ISO program number ":1234".
                     seen_code = true;
@@ -382,7 +386,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
     fn word(&mut self, letter: u8, block: &mut Block, diags: &mut Diagnostics) {
         let start = self.i;
         self.bump();
-        let known = self.rules.has_address(letter);
+        let known = letter == b'$' || self.rules.has_address(letter);
         while matches!(self.peek(), b' ' | b'\t') {
             self.bump();
         }
@@ -447,6 +451,19 @@ impl<'c, S: Src> LineLexer<'c, S> {
             }
         };
         let word = Word { letter, num, span };
+        if letter == b'$' {
+            if let Some(first) = block.spindle {
+                diags.push(
+                    Code::RepeatedWord,
+                    span,
+                    format!("second spindle selection in one block (first at {})", first.display()),
+                );
+                block.has_error = true;
+            } else {
+                block.spindle = Some(word);
+            }
+            return;
+        }
         if letter == b'N' {
             if let Some(first) = block.n {
                 diags.push(

@@ -12,6 +12,7 @@
 #![allow(dead_code)]
 
 use std::process::{Command, Stdio};
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// How a straight move is made.
@@ -144,8 +145,13 @@ pub fn numbered(program: &str) -> String {
     out
 }
 
+/// Two rs274 at once sometimes die of SIGBUS with nothing printed (a
+/// resource they share): the tests of one binary run it one at a time.
+static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+
 /// Whether `rs274` can be started (it is on PATH).
 pub fn available() -> bool {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     Command::new("rs274").arg("-h").stdin(Stdio::null()).output().is_ok()
 }
 
@@ -155,15 +161,35 @@ pub fn available() -> bool {
 /// 0\nG76 …"), or why it could not run. A program must end with M2/M30 or
 /// `%`, else rs274 fails with "File ended with no percent sign or program end".
 pub fn run(program: &str) -> Result<Vec<Call>, String> {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     static SEQ: AtomicUsize = AtomicUsize::new(0);
     let k = SEQ.fetch_add(1, Ordering::Relaxed);
     let dir = std::env::temp_dir().join(format!("screwcut-rs274-{}-{k}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let file = dir.join("prog.ngc");
-    let out = std::fs::write(&file, program)
-        .and_then(|_| Command::new("rs274").arg("-g").arg(&file).current_dir(&dir).stdin(Stdio::null()).output());
+    let written = std::fs::write(&file, program).map_err(|e| format!("{}: {e}", file.display()));
+    // An rs274 killed by a signal (SIGBUS, when another one runs at the same
+    // moment elsewhere on the machine) printed nothing: run it again.
+    let mut out = None;
+    for _ in 0..3 {
+        if written.is_err() {
+            break;
+        }
+        let o = Command::new("rs274").arg("-g").arg(&file).current_dir(&dir).stdin(Stdio::null()).output();
+        let killed = o.as_ref().is_ok_and(|o| o.status.code().is_none());
+        out = Some(o);
+        if !killed {
+            break;
+        }
+    }
     let _ = std::fs::remove_dir_all(&dir);
-    let out = out.map_err(|e| format!("cannot run rs274 (apt-get install linuxcnc-uspace): {e}"))?;
+    written?;
+    let out = out
+        .ok_or("rs274 did not run")?
+        .map_err(|e| format!("cannot run rs274 (apt-get install linuxcnc-uspace): {e}"))?;
+    if out.status.code().is_none() {
+        return Err(format!("rs274 was killed ({}) three times", out.status));
+    }
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         return Err(err.lines().filter(|l| *l != "executing").collect::<Vec<_>>().join("\n"));

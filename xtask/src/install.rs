@@ -66,6 +66,12 @@ pub fn ensure_chromium() -> Result {
     ensure_debian(&[("/usr/bin/chromium", "chromium"), ("/usr/bin/chromedriver", "chromium-driver")])
 }
 
+/// Installs Debian's `linuxcnc-uspace` when `rs274`, LinuxCNC's stand-alone
+/// interpreter (the oracle of the LinuxCNC dialect's tests), is missing.
+pub fn ensure_rs274() -> Result {
+    ensure_debian(&[("/usr/bin/rs274", "linuxcnc-uspace")])
+}
+
 /// Installs the Debian packages of `wanted` (file it installs, package)
 /// whose file is missing, with apt-get (through `sudo -n` when not root).
 pub fn ensure_debian(wanted: &[(&str, &str)]) -> Result {

@@ -2,7 +2,8 @@
 //!
 //! Everything a fresh machine needs is installed from here (wasm target,
 //! wasm-bindgen CLI at the version in Cargo.lock, Chromium and ChromeDriver
-//! from the Debian packages, npm packages including the pinned binaryen),
+//! and LinuxCNC's `rs274` from the Debian packages, npm packages including
+//! the pinned binaryen),
 //! so the README's two commands work on a new clone.
 
 mod install;
@@ -60,6 +61,8 @@ fn test(args: &[String]) -> Result {
     install::ensure_wasm_target()?;
     install::run("cargo", &["clippy", "--lib", "--target", "wasm32-unknown-unknown", "--", "-D", "warnings"], None)?;
     step("native tests");
+    // LinuxCNC's interpreter is the oracle of tests/linuxcnc.rs.
+    install::ensure_rs274()?;
     install::run("cargo", &["test", "--workspace"], None)?;
     step("wasm tests in Node and Chromium");
     web::wasm_tests()?;

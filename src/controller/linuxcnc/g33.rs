@@ -1,0 +1,84 @@
+//! LinuxCNC G33: one spindle-synchronised straight move from the current
+//! point to the end point, K = the distance **along the move** per spindle
+//! revolution (not along the long axis as G32's F). K is required in every
+//! block (checked before); consecutive G33 blocks make a continuous thread.
+
+use super::{Reader, g_word_span, plane_warning, spindle_number};
+use crate::block::Block;
+use crate::controller::g32;
+use crate::cycle::classify;
+use crate::diagnostic::Code;
+use crate::event::{Event, Seg};
+use crate::geom::Frame;
+use crate::motion::{Move, MoveKind};
+use crate::num::fmt;
+use crate::state::once;
+use crate::thread::{Source, ThreadKind};
+
+/// One G33 block.
+pub fn block(r: &mut Reader, b: &Block) {
+    let g = g_word_span(b, 330);
+    if !spindle_number(r, b, "Invalid spindle ($) number in G33 move") {
+        return r.end_chain();
+    }
+    if !r.m.spindle_on {
+        r.diag(Code::SpindleNotTurning, g, "Spindle not turning in G33: start the spindle with M3 or M4 first");
+        return r.end_chain();
+    }
+    plane_warning(r, g, "G33");
+    let Some(kw) = b.get(b'K').copied() else { return r.end_chain() };
+    let k = r.length(&kw);
+    let start = r.current(b.span);
+    let end = r.target(b).p;
+    let Some((kind, long)) = classify(start, end) else {
+        // A zero-length G33 is accepted and cuts nothing.
+        r.arrive(end, true, true, b.line);
+        return r.end_chain();
+    };
+    if k <= 0.0 {
+        r.diag(
+            Code::OddPitch,
+            kw.span,
+            format!(
+                "{}: LinuxCNC passes a K of zero or below on as the spindle sync ratio; {}",
+                kw.display(),
+                if k == 0.0 {
+                    "with K0 the axes would wait for a spindle that never moves them: the move is drawn, but no thread"
+                } else {
+                    "a negative ratio runs the axes against the spindle: the thread is drawn with |K|"
+                }
+            ),
+        );
+    }
+    if k == 0.0 || !k.is_finite() {
+        r.end_chain();
+        r.emit(Event::Motion(Move {
+            kind: MoveKind::Thread,
+            from: start,
+            to: end,
+            line: b.line,
+            span: b.span,
+            arc: None,
+        }));
+        return r.arrive(end, true, true, b.line);
+    }
+    // K along the move: the lead along the long axis is K·(long travel / length).
+    let along = Frame(long).travel(start, end).abs() / start.dist(end);
+    let lead = k.abs() * along;
+    if kind == ThreadKind::Taper && r.m.first(once::LEAD_ALONG_PATH) {
+        r.diag(
+            Code::LeadAlongPath,
+            kw.span,
+            format!(
+                "{}: G33 K is the distance along the move per revolution, so on this taper the tool advances {} per revolution along {} (K·cos α, α = {}° from the axis); G32's F would give the lead along the long axis",
+                kw.display(),
+                fmt(lead),
+                if long == crate::thread::Axis::Z { "Z" } else { "X" },
+                fmt(along.acos().to_degrees())
+            ),
+        );
+    }
+    let tool_angle = r.param(crate::settings::P::LinuxToolAngle);
+    let seg = Seg { from: start, to: end, runout_to: None, kind, long };
+    g32::piece(r, Source::LinuxG33, lead, 0.0, seg, end, b, tool_angle);
+}

@@ -1,0 +1,432 @@
+//! Expansion: a plan written back as a block-by-block program for a
+//! controller (`screwcut expand FILE --dialect D --to D2`).
+//!
+//! Every motion of the plan becomes a block, in order: each pass with its
+//! approach, its synchronised cut (screw-in, thread, run-out), its retract
+//! and return; the turning moves as G01/G02/G03. How the target writes a
+//! synchronised move is data of its controller ([`Writing`]): GSK's `G32` with a
+//! `J K` run-out, Fanuc's `G32` with the run-out as a second block, Renhe's
+//! incremental `G33` after a `G30` tail, LinuxCNC's `G33 X Z K` with K along
+//! the move. Multi-start threads keep their start angles where the target
+//! has the word (`Q`); elsewhere each start is moved along the axis by
+//! lead × angle / 360° (the same helix). Planned again, the program gives
+//! the same passes and start angles.
+
+use crate::controller::{self, ThreadWords, Writing};
+use crate::cycle::classify;
+use crate::dialect::Dialect;
+use crate::geom::Frame;
+use crate::motion::{Move, MoveKind, Point};
+use crate::num::EPS;
+use crate::plan::{Plan, Units};
+use crate::settings::Settings;
+use crate::thread::Thread;
+
+/// A program written for a controller, with what could not be kept.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Expansion {
+    /// The program text.
+    pub program: String,
+    /// What the target could not express as the source did, and other remarks.
+    pub notes: Vec<String>,
+}
+
+/// Plans `text` with `settings` and writes the plan for `to`.
+pub fn expand_text(text: &str, settings: &Settings, to: Dialect) -> Expansion {
+    expand(&crate::plan(text, settings), to)
+}
+
+/// Writes `plan` as a block-by-block program for `to`.
+pub fn expand(plan: &Plan, to: Dialect) -> Expansion {
+    let mut w = Writer::new(plan, to);
+    w.header(to);
+    w.body();
+    w.line("M30");
+    Expansion { program: w.out, notes: w.notes }
+}
+
+/// Which part of a pass a motion is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Part {
+    Approach,
+    Cut,
+    Back,
+}
+
+/// The Renhe tail mode written last (`G30`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Tail {
+    /// G30 alone or never given: the standard run-out.
+    Standard,
+    /// `G30 U W`: (diameter retract, axial length); (0, 0) is none.
+    Set(f64, f64),
+}
+
+/// One synchronised segment of a pass: kind, ends (shifted), advance along it per revolution.
+#[derive(Clone, Copy, Debug)]
+struct Seg {
+    kind: MoveKind,
+    from: Point,
+    to: Point,
+    along: f64,
+}
+
+struct Writer<'p> {
+    plan: &'p Plan,
+    w: &'static Writing,
+    out: String,
+    notes: Vec<String>,
+    /// Program units per plan unit (25.4 for an inch plan on a millimetre controller).
+    scale: f64,
+    at: Option<Point>,
+    feed_given: bool,
+    tail: Tail,
+    /// Direction of the last X move (Renhe's run-out goes the other way).
+    last_x: f64,
+    owner: Vec<Option<(usize, usize, Part)>>,
+}
+
+impl<'p> Writer<'p> {
+    fn new(plan: &'p Plan, to: Dialect) -> Writer<'p> {
+        let w = &controller::of(to).writing;
+        let mut owner = vec![None; plan.moves.len()];
+        for (ti, t) in plan.threads.iter().enumerate() {
+            for (pi, p) in t.passes.iter().enumerate() {
+                let m = &p.moves;
+                for (r, part) in [(&m.approach, Part::Approach), (&m.cut, Part::Cut), (&m.retract, Part::Back)] {
+                    let n = owner.len();
+                    for slot in &mut owner[r.start.min(n)..r.end.min(n)] {
+                        *slot = Some((ti, pi, part));
+                    }
+                }
+            }
+        }
+        Writer {
+            plan,
+            w,
+            out: String::new(),
+            notes: Vec::new(),
+            scale: 1.0,
+            at: None,
+            feed_given: false,
+            tail: Tail::Standard,
+            last_x: 0.0,
+            owner,
+        }
+    }
+
+    fn line(&mut self, s: impl AsRef<str>) {
+        self.out.push_str(s.as_ref());
+        self.out.push('\n');
+    }
+
+    /// A length as the target reads it.
+    fn len(&self, v: f64) -> String {
+        self.w.length(v * self.scale)
+    }
+
+    /// A point rounded as [`Writer::len`] writes it.
+    fn snap(&self, p: Point) -> Point {
+        let r = |v: f64| (v * self.scale * 1e4).round() / 1e4 / self.scale;
+        Point::new(r(p.x), r(p.z))
+    }
+
+    /// A lead or pitch (six decimals).
+    fn lead(&self, v: f64) -> String {
+        self.w.lead(v * self.scale)
+    }
+
+    fn header(&mut self, to: Dialect) {
+        let from = self.plan.dialect.title();
+        self.line(format!("(expanded by screwcut from {from} to {}: every pass block by block)", to.title()));
+        match (self.plan.units, self.w.units) {
+            (Units::Inch, Some((inch, _))) => self.line(inch),
+            (Units::Mm, Some((_, mm))) => self.line(mm),
+            (Units::Inch, None) => {
+                self.scale = 25.4;
+                self.notes.push(format!("{} reads millimetres only: the inch program is written in mm", to.title()));
+            }
+            (Units::Mm, None) => {}
+        }
+        for l in self.w.preamble {
+            self.line(l);
+        }
+        if let Some(on) = self.w.spindle_on {
+            self.line(on);
+        }
+    }
+
+    fn body(&mut self) {
+        let moves = &self.plan.moves;
+        if let Some(first) = moves.first() {
+            self.rapid(first.from);
+        }
+        let mut i = 0;
+        while i < moves.len() {
+            match self.owner[i] {
+                Some((t, p, Part::Cut)) => {
+                    let cut = self.plan.threads[t].passes[p].moves.cut.clone();
+                    self.chain(t, p, &moves[cut.start..cut.end.min(moves.len())]);
+                    i = cut.end.max(i + 1);
+                    continue;
+                }
+                Some((t, p, _)) => {
+                    let last = self.plan.threads[t].passes[p].moves.all().end == i + 1;
+                    let to = if last { moves[i].to } else { self.shift(t, p, moves[i].to) };
+                    self.plain(&moves[i], to);
+                }
+                None => self.plain(&moves[i], moves[i].to),
+            }
+            i += 1;
+        }
+    }
+
+    /// `p` moved along the thread's axis by lead × angle / 360°, back against
+    /// the cut, when the target has no start angle word.
+    fn shift(&self, t: usize, p: usize, pt: Point) -> Point {
+        let th = &self.plan.threads[t];
+        let pass = &th.passes[p];
+        if self.w.start_angle || pass.angle == 0.0 || th.lead <= 0.0 {
+            return pt;
+        }
+        let d = (th.lead * pass.angle / 360.0).rem_euclid(th.lead);
+        let f = Frame(th.long_axis);
+        let sense = f.travel(pass.from, pass.to).signum();
+        f.offset(pt, glam::DVec2::new(-sense * d, 0.0))
+    }
+
+    fn plain(&mut self, m: &Move, to: Point) {
+        match m.kind {
+            MoveKind::Rapid => self.rapid(to),
+            MoveKind::Feed => self.feed(to),
+            MoveKind::Arc => self.arc(m),
+            MoveKind::Thread | MoveKind::ScrewIn | MoveKind::Runout => {
+                self.notes.push(format!(
+                    "line {}: a synchronised move that belongs to no thread is written as a feed",
+                    m.line
+                ));
+                self.feed(to);
+            }
+        }
+    }
+
+    /// The X and Z words of a move to `to` (only the axes that change, unless `both`).
+    fn axes(&self, to: Point, both: bool) -> String {
+        let mut s = String::new();
+        let at = self.at;
+        let to = self.snap(to);
+        if both || at.is_none_or(|a| (a.x - to.x).abs() > EPS) {
+            s += &format!(" X{}", self.len(to.x));
+        }
+        if both || at.is_none_or(|a| (a.z - to.z).abs() > EPS) {
+            s += &format!(" Z{}", self.len(to.z));
+        }
+        s
+    }
+
+    fn arrive(&mut self, to: Point) {
+        self.at = Some(self.snap(to));
+    }
+
+    /// Notes the direction of a G00/G01 move in X (Renhe's run-out goes against it).
+    fn x_move(&mut self, to: Point) {
+        let to = self.snap(to);
+        if let Some(a) = self.at.filter(|a| (to.x - a.x).abs() > EPS) {
+            self.last_x = (to.x - a.x).signum();
+        }
+    }
+
+    fn rapid(&mut self, to: Point) {
+        let words = self.axes(to, false);
+        if !words.is_empty() {
+            self.line(format!("{}{words}", self.w.motion[0]));
+        }
+        self.x_move(to);
+        self.arrive(to);
+    }
+
+    fn feed(&mut self, to: Point) {
+        let words = self.axes(to, false);
+        if words.is_empty() {
+            return;
+        }
+        let f = if self.feed_given { String::new() } else { format!(" F{}", self.lead(0.2 / self.scale)) };
+        if !self.feed_given {
+            self.notes.push("the plan has no feed rates: the turning moves are written with F0.2".into());
+        }
+        self.feed_given = true;
+        self.line(format!("{}{words}{f}", self.w.motion[1]));
+        self.x_move(to);
+        self.arrive(to);
+    }
+
+    fn arc(&mut self, m: &Move) {
+        let Some(a) = m.arc else { return self.feed(m.to) };
+        let code = if a.cw { self.w.motion[2] } else { self.w.motion[3] };
+        let (i, k) = ((a.center.x - m.from.x) / 2.0, a.center.z - m.from.z);
+        let words = self.axes(m.to, true);
+        self.line(format!("{code}{words} I{} K{}", self.len(i), self.len(k)));
+        self.arrive(m.to);
+    }
+
+    /// The synchronised moves of pass `p` of thread `t`, written by the target's thread words.
+    fn chain(&mut self, t: usize, p: usize, cut: &[Move]) {
+        let th = &self.plan.threads[t];
+        // The points as the target will read them, so the long axis of each
+        // block (which its F is along) is the one the controller finds.
+        let at = |pt| self.snap(self.shift(t, p, pt));
+        let segs = segments(th, cut.iter().map(|m| (m.kind, at(m.from), at(m.to))));
+        if segs.is_empty() {
+            return;
+        }
+        if self.at.is_none_or(|a| a.dist(segs[0].from) > EPS) {
+            self.rapid(segs[0].from);
+        }
+        let angle = th.passes[p].angle;
+        match self.w.thread {
+            ThreadWords::G32 { runout } => self.g32(&segs, runout, angle),
+            ThreadWords::Renhe => self.renhe(&segs, th.lead),
+            ThreadWords::AlongPath => {
+                for s in &segs {
+                    let words = self.axes(s.to, true);
+                    self.line(format!("G33{words} K{}", self.lead(s.along)));
+                    self.arrive(s.to);
+                }
+            }
+        }
+    }
+
+    /// G32 blocks: F along each block's long axis, Q on the first, a J/K run-out where the target has it.
+    fn g32(&mut self, segs: &[Seg], runout: bool, angle: f64) {
+        let mut k = 0;
+        while k < segs.len() {
+            let s = segs[k];
+            let q = if k == 0 && self.w.start_angle && angle != 0.0 {
+                format!(" Q{}", (angle * 1000.0).round() as i64)
+            } else {
+                String::new()
+            };
+            let merged =
+                if runout && k + 2 == segs.len() && s.kind == MoveKind::Thread { jk(&s, &segs[k + 1]) } else { None };
+            let Some((_, long)) = classify(s.from, s.to) else {
+                k += 1;
+                continue;
+            };
+            let len = s.from.dist(s.to);
+            let f = s.along * Frame(long).travel(s.from, s.to).abs() / len;
+            match merged {
+                Some((end, j, kk)) => {
+                    let words = self.axes(end, true);
+                    self.line(format!("G32{words} F{} J{} K{}{q}", self.lead(f), self.len(j), self.len(kk)));
+                    self.arrive(segs[k + 1].to);
+                    k += 2;
+                }
+                None => {
+                    let words = self.axes(s.to, true);
+                    self.line(format!("G32{words} F{}{q}", self.lead(f)));
+                    self.arrive(s.to);
+                    k += 1;
+                }
+            }
+        }
+    }
+
+    /// Renhe: the tail by `G30`, then incremental `G33 U W F` blocks (F the pitch along Z).
+    fn renhe(&mut self, segs: &[Seg], lead: f64) {
+        let n = segs.len();
+        let tail = if n >= 2 && segs[n - 1].kind == MoveKind::Runout && segs[n - 2].kind == MoveKind::Thread {
+            jk(&segs[n - 2], &segs[n - 1]).filter(|(_, j, _)| -j.signum() == self.last_x)
+        } else {
+            None
+        };
+        let body = if tail.is_some() { &segs[..n - 2] } else { segs };
+        let r4 = |v: f64| (v * 1e4).round() / 1e4;
+        let want = match tail {
+            Some((_, j, k)) => Tail::Set(r4(2.0 * j.abs()), r4(k)),
+            None => Tail::Set(0.0, 0.0),
+        };
+        if body.len() + usize::from(tail.is_some()) > 1 && want != Tail::Set(0.0, 0.0) {
+            self.notes.push("Renhe applies the G30 tail to every block of a continuous thread: the segments before the last are written without a tail".into());
+        }
+        let set = |w: &mut Writer, t: Tail| {
+            if w.tail != t {
+                if let Tail::Set(u, k) = t {
+                    let line = format!("G30 U{} W{}", w.len(u), w.len(k));
+                    w.line(line);
+                }
+                w.tail = t;
+            }
+        };
+        if !body.is_empty() {
+            set(self, Tail::Set(0.0, 0.0));
+        }
+        for s in body {
+            if s.kind == MoveKind::Runout {
+                self.notes.push("a run-out Renhe cannot write as a G30 tail is written as a thread block".into());
+            }
+            self.renhe_block(s.to, lead);
+            self.arrive(s.to);
+        }
+        if let Some((end, _, _)) = tail {
+            set(self, want);
+            self.renhe_block(end, lead);
+            self.arrive(segs[n - 1].to);
+        }
+    }
+
+    fn renhe_block(&mut self, end: Point, lead: f64) {
+        let at = self.at.unwrap_or(end);
+        let (u, w) = (end.x - at.x, end.z - at.z);
+        if !(w.abs() * self.scale > 4.0 && w.abs() > u.abs()) {
+            self.notes.push(format!(
+                "a Renhe thread block must be longer than 4 mm and than its U: W{} U{} will alarm (E18-04)",
+                self.len(w),
+                self.len(u)
+            ));
+        }
+        let uw =
+            if u.abs() > EPS { format!(" U{} W{}", self.len(u), self.len(w)) } else { format!(" W{}", self.len(w)) };
+        self.line(format!("G33{uw} F{}", self.lead(lead)));
+    }
+}
+
+/// The synchronised segments of a pass with the advance along each per
+/// revolution: lead × length / travel along the thread's axis; a segment
+/// that does not move along that axis (an X-only entry of a LinuxCNC taper)
+/// takes its neighbour's.
+fn segments(th: &Thread, moves: impl Iterator<Item = (MoveKind, Point, Point)>) -> Vec<Seg> {
+    let f = Frame(th.long_axis);
+    let mut segs: Vec<(Seg, bool)> = moves
+        .filter(|(_, a, b)| a.dist(*b) > EPS)
+        .map(|(kind, from, to)| {
+            let axial = f.travel(from, to).abs();
+            let known = axial > EPS;
+            let along = if known { th.lead * from.dist(to) / axial } else { th.lead };
+            (Seg { kind, from, to, along }, known)
+        })
+        .collect();
+    for k in 0..segs.len() {
+        if !segs[k].1 {
+            let near = segs[k + 1..].iter().chain(segs[..k].iter().rev()).find(|s| s.1).map(|s| s.0.along);
+            if let Some(a) = near {
+                segs[k].0.along = a;
+            }
+        }
+    }
+    segs.into_iter().map(|s| s.0).collect()
+}
+
+/// A cut followed by its run-out as one G32 with `J K`: the end point on
+/// the cut's line at the run-out's long-axis end, J the short-axis offset
+/// (radius for X), K the long-axis length of the run-out.
+fn jk(cut: &Seg, runout: &Seg) -> Option<(Point, f64, f64)> {
+    let (_, long) = classify(cut.from, cut.to)?;
+    let f = Frame(long);
+    let (tc, to) = (f.travel(cut.from, cut.to), f.travel(cut.from, runout.to));
+    if tc.abs() < EPS || tc * to <= 0.0 || to.abs() <= tc.abs() + EPS || runout.from.dist(cut.to) > EPS {
+        return None;
+    }
+    let end = cut.from.lerp(cut.to, to / tc);
+    let j = f.short(runout.to) - f.short(end);
+    (j.abs() > EPS).then_some((end, j, (to - tc).abs()))
+}
