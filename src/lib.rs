@@ -30,6 +30,7 @@ pub mod dialect;
 pub mod event;
 pub mod expand;
 pub mod figures;
+pub mod form;
 pub mod gcode;
 pub mod geom;
 pub mod group;

@@ -8,10 +8,10 @@ use super::words::Unit;
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::block::Block;
 use crate::dialect::{Dialect, letters};
+use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::settings::P;
 use crate::state::Motion;
-use crate::wizard::Form;
 
 /// The Fanuc 0i-TF.
 pub static CONTROLLER: Controller = Controller {

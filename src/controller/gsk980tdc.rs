@@ -13,11 +13,11 @@ use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
 use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
 use crate::event::Event;
+use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::settings::P;
 use crate::state::{G78First, Motion};
 use crate::thread::{Infeed, Source};
-use crate::wizard::Form;
 
 /// The GSK980TDc.
 pub static CONTROLLER: Controller = Controller {

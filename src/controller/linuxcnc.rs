@@ -18,11 +18,11 @@ use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_co
 use crate::block::Block;
 use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
+use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::settings::{P, Settings};
 use crate::span::Span;
 use crate::state::{Modal, Motion, once};
-use crate::wizard::Form;
 
 /// The LinuxCNC interpreter.
 pub static CONTROLLER: Controller = Controller {

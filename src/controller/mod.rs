@@ -68,7 +68,7 @@ pub struct Writing {
     /// G32 takes a start angle `Q` in 0.001° (multi-start by start angle).
     pub start_angle: bool,
     /// The threading forms the wizard writes for this controller.
-    pub forms: &'static [crate::wizard::Form],
+    pub forms: &'static [crate::form::Form],
 }
 
 impl Writing {

@@ -16,13 +16,13 @@ use crate::cycle::{classify, split_runout};
 use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
 use crate::event::Seg;
+use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::num::fmt;
 use crate::settings::P;
 use crate::span::Span;
 use crate::state::{Motion, Tail};
 use crate::thread::{Axis, Source};
-use crate::wizard::Form;
 
 /// The Renhe controller.
 pub static CONTROLLER: Controller = Controller {

@@ -11,7 +11,7 @@ use crate::wasm;
 fn dialects_are_listed_with_titles() {
     let list = array(&wasm::dialects().unwrap());
     let names: Vec<String> = list.iter().map(|d| get(d, "name").as_string().unwrap()).collect();
-    assert_eq!(names, ["gsk980tdc", "fanuc0i", "renhe"]);
+    assert_eq!(names, ["gsk980tdc", "fanuc0i", "renhe", "linuxcnc"]);
     for d in &list {
         let title = get(d, "title").as_string().unwrap();
         assert!(title.len() > 3, "{title}");
