@@ -111,6 +111,8 @@ pub struct ThreadSummary {
     height: f64,
     taper: f64,
     passes: u32,
+    /// The shop-floor figures (cycle time, speeds, clearances, chip loads, the thread check).
+    shop: crate::figures::Shop,
 }
 
 impl ThreadSummary {
@@ -134,6 +136,7 @@ impl ThreadSummary {
             height: r(t.height),
             taper: r(t.taper),
             passes: t.passes.len() as u32,
+            shop: t.shop.clone(),
         }
     }
 }
@@ -179,21 +182,24 @@ pub fn pieces_to_js(p: &SidePieces) -> JsValue {
     o.into()
 }
 
-/// Passes as columns of typed arrays (one array per field, no object per
+/// A thread's passes as columns of typed arrays (one array per field, no object per
 /// pass): `{n, start, index: Uint32Array, x, z, xEnd, zEnd, depth, infeed,
-/// area, shift, angle, runoutX, runoutZ, screwX, screwZ: Float64Array (NaN:
+/// area, shift, angle, runoutX, runoutZ, screwX, screwZ, time (s, with the
+/// rapids), evenArea (the constant-area schedule's): Float64Array (NaN:
 /// none), role: Uint8Array (0 rough, 1 finish, 2 spring), lineStart:
 /// Uint32Array (n + 1), lines: Uint32Array}`; X as a diameter, (x, z) where
 /// the cut starts, (xEnd, zEnd) where it ends.
-pub fn passes_to_js(passes: &[crate::thread::Pass]) -> JsValue {
+pub fn passes_to_js(thread: &Thread) -> JsValue {
     use crate::num::round_out as r;
     use crate::thread::Role;
+    let passes = &thread.passes;
+    let shop = &thread.shop;
     let n = passes.len();
     let (mut start, mut index, mut line_start) =
         (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n + 1));
-    let mut cols: [Vec<f64>; 13] = std::array::from_fn(|_| Vec::with_capacity(n));
+    let mut cols: [Vec<f64>; 15] = std::array::from_fn(|_| Vec::with_capacity(n));
     let (mut role, mut lines) = (Vec::with_capacity(n), Vec::new());
-    for p in passes {
+    for (i, p) in passes.iter().enumerate() {
         start.push(p.start);
         index.push(p.index);
         let (run, screw) =
@@ -212,6 +218,8 @@ pub fn passes_to_js(passes: &[crate::thread::Pass]) -> JsValue {
             run[1],
             screw[0],
             screw[1],
+            shop.pass_time_s.get(i).copied().unwrap_or(f64::NAN),
+            shop.chip.get(i).and_then(|c| c.even_area).unwrap_or(f64::NAN),
         ];
         for (c, v) in cols.iter_mut().zip(values) {
             c.push(if v.is_nan() { v } else { r(v) });
@@ -230,7 +238,8 @@ pub fn passes_to_js(passes: &[crate::thread::Pass]) -> JsValue {
     set(&o, "start", &Uint32Array::from(&start[..]).into());
     set(&o, "index", &Uint32Array::from(&index[..]).into());
     let names = [
-        "x", "z", "xEnd", "zEnd", "depth", "infeed", "area", "shift", "angle", "runoutX", "runoutZ", "screwX", "screwZ",
+        "x", "z", "xEnd", "zEnd", "depth", "infeed", "area", "shift", "angle", "runoutX", "runoutZ", "screwX",
+        "screwZ", "time", "evenArea",
     ];
     for (name, c) in names.iter().zip(&cols) {
         set(&o, name, &Float64Array::from(&c[..]).into());

@@ -16,6 +16,7 @@ use std::hash::{Hash, Hasher};
 pub use crate::hash::KeyHasher;
 use std::mem::discriminant;
 
+use crate::figures::{ChipLoad, Gauge, Shop};
 use crate::motion::{ArcData, Move, Point};
 use crate::plan::Plan;
 use crate::thread::{Pass, Thread};
@@ -168,6 +169,121 @@ pub fn thread_key(t: &Thread) -> u64 {
     h.finish()
 }
 
+fn opt(h: &mut KeyHasher, v: Option<f64>) {
+    match v {
+        Some(v) => {
+            h.write_u8(1);
+            f(h, v);
+        }
+        None => h.write_u8(0),
+    }
+}
+
+/// The key of a thread's shop-floor figures (what its summary and pass list
+/// show besides the drawn fields).
+pub fn shop_key(s: &Shop) -> u64 {
+    let Shop {
+        cut_time_s,
+        time_s,
+        pass_time_s,
+        rpm,
+        thread_feed,
+        rpm_limit,
+        lead_in_needed,
+        run_out_needed,
+        lead_in,
+        run_out,
+        clearance_source,
+        pitch_diameter,
+        helix_angle_deg,
+        chip,
+        gauge,
+    } = s;
+    let mut h = KeyHasher::default();
+    for v in [
+        *cut_time_s,
+        *time_s,
+        *rpm,
+        *thread_feed,
+        *rpm_limit,
+        *lead_in_needed,
+        *run_out_needed,
+        *lead_in,
+        *run_out,
+        *pitch_diameter,
+        *helix_angle_deg,
+    ] {
+        opt(&mut h, v);
+    }
+    h.write_usize(pass_time_s.len());
+    pass_time_s.iter().for_each(|t| f(&mut h, *t));
+    clearance_source.map(|c| c as u8).hash(&mut h);
+    h.write_usize(chip.len());
+    for ChipLoad { area, even_area, even_depth } in chip {
+        [*area, *even_area, *even_depth].into_iter().for_each(|v| opt(&mut h, v));
+    }
+    match gauge {
+        Some(g) => {
+            h.write_u8(1);
+            hash_gauge(&mut h, g);
+        }
+        None => h.write_u8(0),
+    }
+    h.finish()
+}
+
+fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
+    let Gauge {
+        designation,
+        source,
+        line,
+        system,
+        class,
+        kind,
+        basic_major,
+        basic_pitch,
+        basic_minor,
+        pitch_diameter,
+        pitch_diameter_min,
+        pitch_diameter_max,
+        major_diameter,
+        major_diameter_min,
+        major_diameter_max,
+        minor_diameter,
+        minor_diameter_min,
+        minor_diameter_max,
+        ok,
+        delta_x,
+        taper,
+        gauge_plane_z,
+        notes,
+    } = g;
+    designation.hash(h);
+    discriminant(source).hash(h);
+    line.hash(h);
+    discriminant(system).hash(h);
+    class.hash(h);
+    discriminant(kind).hash(h);
+    [*basic_major, *basic_pitch, *basic_minor, *pitch_diameter].into_iter().for_each(|v| f(h, v));
+    for v in [
+        *pitch_diameter_min,
+        *pitch_diameter_max,
+        *major_diameter,
+        *major_diameter_min,
+        *major_diameter_max,
+        *minor_diameter,
+        *minor_diameter_min,
+        *minor_diameter_max,
+        *delta_x,
+        *taper,
+        *gauge_plane_z,
+    ] {
+        opt(h, v);
+    }
+    ok.hash(h);
+    notes.hash(h);
+}
+
 /// The key of a run of motions.
 pub fn moves_key(moves: &[Move]) -> u64 {
     let mut h = KeyHasher::default();
@@ -195,6 +311,11 @@ pub struct PlanKeys {
     pub threads: Vec<u64>,
     /// The key of all threads together.
     pub all_threads: u64,
+    /// One key per thread for its summary and pass list: the thread's key
+    /// with its shop-floor figures (which are listed, not drawn).
+    pub listed: Vec<u64>,
+    /// The key of all listed threads together.
+    pub all_listed: u64,
     /// The key of the side section's inputs.
     pub side: u64,
 }
@@ -205,7 +326,10 @@ impl PlanKeys {
         let threads: Vec<u64> = plan.threads.iter().map(thread_key).collect();
         let all_threads = combine(&threads);
         let side = combine(&[all_threads, moves_key(&plan.moves)]);
-        PlanKeys { threads, all_threads, side }
+        let listed: Vec<u64> =
+            plan.threads.iter().zip(&threads).map(|(t, k)| combine(&[*k, shop_key(&t.shop)])).collect();
+        let all_listed = combine(&listed);
+        PlanKeys { threads, all_threads, listed, all_listed, side }
     }
 }
 

@@ -47,7 +47,7 @@ impl Session {
 
     /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines) and
     /// returns everything the app shows:
-    /// `{dialect, units, alarms, warnings, notes, moves, good, settingErrors,
+    /// `{dialect, units, alarms, warnings, notes, moves, timeS (threading time, s; null without S), good, settingErrors,
     /// diagnostics, diagnosticsKey, threads, threadsKey, thread, passes,
     /// passesKey, side, sideKey, tooth, toothKey, starts, startsKey, resumedAt}`:
     /// `threads` are summaries (a pass count instead of the passes), `passes` are
@@ -230,9 +230,9 @@ fn thread_parts(
         }
         return Ok(());
     };
-    let thread_key = keys.threads[t];
+    let listed_key = keys.listed[t];
     let start = start.clamp(1, plan.threads[t].starts.max(1));
-    keyed(o, known, Part::Passes, combine(&[thread_key, t as u64]), || Ok(passes_to_js(&plan.threads[t].passes)))?;
+    keyed(o, known, Part::Passes, combine(&[listed_key, t as u64]), || Ok(passes_to_js(&plan.threads[t])))?;
     // The small scenes are keyed by what they draw: an edit that leaves one as it was redraws nothing.
     for (part, scene) in [(Part::Tooth, diagram::tooth(plan, t, start)), (Part::Starts, diagram::starts(plan, t))] {
         let packed = scene.map(|s| pack(&s));
@@ -260,6 +260,7 @@ fn answer(
     set(&o, "warnings", &count(crate::Severity::Warning).into());
     set(&o, "notes", &count(crate::Severity::Info).into());
     set(&o, "moves", &(plan.moves.len() as u32).into());
+    set(&o, "timeS", &plan.time_s.map_or(JsValue::NULL, |t| crate::num::round_out(t).into()));
     let good = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
     set(&o, "good", &good.into());
     set(&o, "settingErrors", &to_js(problems)?);
@@ -268,8 +269,8 @@ fn answer(
     let diagnostics = if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan))? };
     set(&o, "diagnostics", &diagnostics);
     let keys = PlanKeys::of(plan);
-    keyed(&o, known, Part::Threads, keys.all_threads, || {
-        sent.answer(known, keys.all_threads, &keys.threads, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
+    keyed(&o, known, Part::Threads, keys.all_listed, || {
+        sent.answer(known, keys.all_listed, &keys.listed, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
     })?;
     keyed(&o, known, Part::Side, keys.side, || {
         if !known.keeps() {

@@ -104,6 +104,24 @@ try {
   const tipText = (await page.locator('#tip').isVisible()) ? await page.locator('#tip').textContent() : '';
   check('and shows the pass in a tooltip', tipText.includes('X47.1') && tipText.includes('0.45'), tipText);
   await page.screenshot({ path: path.join(shots, '1-o1006.png') });
+
+  // ---- the thread check (issue: shop-floor truths; reference §9) ----
+  // O1006 at S300: 5 passes × 57 mm at 2 mm × 300 = 600 mm/min is 28.5 s of cutting.
+  const figures = await page.locator('#check-figures').textContent();
+  check('the thread check shows the cutting time 28.5 s and S300', figures.includes('(cutting 28.5 s)') && figures.includes('S300'), figures);
+  const footer = await page.locator('#summary').textContent();
+  check('the footer gives the threading time and says "1 thread"', /threading \d+\.\d s/.test(footer) && footer.startsWith('1 thread ·'), footer);
+  const timeHead = await page.locator('#passes thead').textContent();
+  check('the pass table has a time and an even-area column', timeHead.includes('Time') && timeHead.includes('Even area'), timeHead);
+  await page.fill('#designation', 'M48x2-6g');
+  // M48×2-6g: d2 46.483…46.663 (ISO 965-2); a sharp 60° tool at X45.4 cuts d2 47.1321, ΔX −0.5591 centres it.
+  await page.waitForFunction(() => document.querySelector('#check-verdict .verdict'), null, { timeout: 10_000 }).catch(() => {});
+  const verdict = await page.locator('#check-verdict').textContent();
+  check('M48x2-6g typed in the check: fails, d2 47.1321 in 46.483…46.663, final X −0.5591', verdict.includes('fails') && verdict.includes('47.1321') && verdict.includes('46.483…46.663') && verdict.includes('−0.5591'), verdict);
+  await page.locator('.lists').screenshot({ path: path.join(shots, '1b-thread-check.png') });
+  await page.fill('#designation', '');
+  await page.waitForFunction(() => !document.querySelector('#check-verdict .verdict'), null, { timeout: 10_000 }).catch(() => {});
+  check('clearing the designation clears the verdict', (await page.locator('#check-verdict .verdict').count()) === 0);
   await page.mouse.move(5, 5);
 
   // ---- edit: type a sixth pass after N200 ----

@@ -157,6 +157,7 @@ export class Engine {
         warnings: r.warnings,
         notes: r.notes,
         moves: r.moves,
+        timeS: r.timeS,
         good: r.good,
         stale: r.alarms > 0 && !!this.lastGood,
         settingErrors: r.settingErrors,

@@ -33,6 +33,30 @@ const EN = {
   col_area: 'Area',
   col_role: 'Role',
   col_lines: 'Lines',
+  col_even: 'Even area',
+  col_time: 'Time',
+  designation: 'Designation',
+  designation_help: 'Thread designation for the check when no comment before the thread names one (setting thread.designation)',
+  check_none: 'No designation: name one in a comment before the thread, e.g. (M48x2-6g), or here, to check the pitch diameter.',
+  check_from_comment: 'read from the comment on line {line}',
+  check_from_setting: 'read from the Designation field (setting thread.designation)',
+  check_d2: 'd2',
+  check_dx: 'final X {dx}',
+  check_limits: 'limits {min}…{max} {u}',
+  check_dx_help: 'Change of the final pass X (diameter) that puts the pitch diameter in the middle of its tolerance',
+  summary_time: 'threading {s} s',
+  check_ok: 'gauges',
+  check_fail: 'fails',
+  check_time: '{s} s (cutting {cut} s)',
+  check_no_speed: 'no time: no spindle speed S',
+  check_rpm: 'S{n}',
+  check_feed: 'F {f} {u}',
+  check_rpm_limit: 'max S{n}',
+  check_helix: 'helix {a}°',
+  check_delta1: 'δ1 {have} (min {need})',
+  check_delta2: 'δ2 {have} (min {need})',
+  check_assumed: 'δ1/δ2 assumed: the program turns no work',
+  check_assumed_short: 'δ assumed',
   rough: 'rough',
   finish: 'finish',
   spring: 'spring',
@@ -40,7 +64,7 @@ const EN = {
   no_diagnostics: 'No diagnostics.',
   stale: 'Alarm: the drawing shows the last program without alarms.',
   crashed: 'The planner stopped on this input; the drawing shows the last good program.',
-  summary: '{threads} threads · {moves} moves · {alarms} alarms · {warnings} warnings · {notes} notes',
+  summary: '{threads#thread|threads} · {moves#move|moves} · {alarms#alarm|alarms} · {warnings#warning|warnings} · {notes#note|notes}',
   timing: 'plan {plan} ms · draw {draw} ms',
   error: 'alarm',
   warning: 'warning',
@@ -79,7 +103,7 @@ const EN = {
   detail_starts_passes: 'one start and every n-th pass drawn (1/starts n/all): {}',
   square_tool: '0° tool: width {} assumed',
   // Embedded previews.
-  embed_summary: '{threads} threads · {passes} passes · {alarms} alarms · {warnings} warnings',
+  embed_summary: '{threads#thread|threads} · {passes#pass|passes} · {alarms#alarm|alarms} · {warnings#warning|warnings}',
   open_in_editor: 'Open in editor',
   loading: 'Loading…',
   more: '… {n} more',
@@ -117,6 +141,30 @@ const ZH = {
   col_area: '面积',
   col_role: '类型',
   col_lines: '行',
+  col_even: '等面积',
+  col_time: '时间',
+  designation: '螺纹标记',
+  designation_help: '螺纹前没有注释标记时用于检验的螺纹标记(参数 thread.designation)',
+  check_none: '没有螺纹标记：在螺纹前的注释中写出，如 (M48x2-6g)，或填在此处，即可检验中径。',
+  check_from_comment: '取自第 {line} 行注释',
+  check_from_setting: '取自“螺纹标记”栏(参数 thread.designation)',
+  check_d2: '中径',
+  check_dx: '精车 X {dx}',
+  check_limits: '公差 {min}…{max} {u}',
+  check_dx_help: '精车走刀 X(直径)改变此值，中径即居公差中间',
+  summary_time: '螺纹加工 {s} 秒',
+  check_ok: '合格',
+  check_fail: '不合格',
+  check_time: '{s} 秒(切削 {cut} 秒)',
+  check_no_speed: '无时间：无主轴转速 S',
+  check_rpm: 'S{n}',
+  check_feed: 'F {f} {u}',
+  check_rpm_limit: '最高 S{n}',
+  check_helix: '螺旋升角 {a}°',
+  check_delta1: 'δ1 {have}(至少 {need})',
+  check_delta2: 'δ2 {have}(至少 {need})',
+  check_assumed: 'δ1/δ2 为假定值：程序未车外圆',
+  check_assumed_short: 'δ 为假定值',
   rough: '粗车',
   finish: '精车',
   spring: '光刀',
@@ -192,10 +240,19 @@ export function label(key, value) {
   return labelIn(lang, key, value);
 }
 
-/** Page text by key in language `l` (en, zh), whatever the page's language is. */
+/**
+ * Page text by key in language `l` (en, zh), whatever the page's language is.
+ * `{name}` is replaced by `vars.name`; `{name#one|other}` by the number and
+ * the singular or plural word (`1 thread`, `2 threads`).
+ */
 export function textIn(l, key, vars) {
   let s = (TABLES[l] || EN)[key] ?? EN[key] ?? key;
-  if (vars) s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
+  if (vars) {
+    s = s.replace(/\{(\w+)#([^|}]*)\|([^}]*)\}/g, (m, k, one, other) =>
+      k in vars ? `${vars[k]} ${Number(vars[k]) === 1 ? one : other}` : m,
+    );
+    s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
+  }
   return s;
 }
 

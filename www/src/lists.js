@@ -79,16 +79,17 @@ export class VirtualRows {
 export function passHead(t, units) {
   const u = units === 'inch' ? 'in' : 'mm';
   const th = (key, unit, cls = '') => `<th${cls}>${esc(t(key))}${unit ? ` <span class="unit">(${unit})</span>` : ''}</th>`;
-  return `<tr>${th('col_pass')}${th('col_start')}${th('col_x', u)}${th('col_z', u)}${th('col_z_end', u)}${th('col_depth', u)}${th('col_infeed', u)}${th('col_area', `${u}²`)}${th('col_role', '', ' class="role"')}${th('col_lines', '', ' class="role"')}</tr>`;
+  return `<tr>${th('col_pass')}${th('col_start')}${th('col_x', u)}${th('col_z', u)}${th('col_z_end', u)}${th('col_depth', u)}${th('col_infeed', u)}${th('col_area', `${u}²`)}${th('col_even', `${u}²`)}${th('col_time', 's')}${th('col_role', '', ' class="role"')}${th('col_lines', '', ' class="role"')}</tr>`;
 }
 
 /** Row `i` of pass columns `c` (rows `order[i]`), as HTML. */
 export function passRow(c, i, t, hot, stale) {
   const lines = Array.from(c.lines.subarray(c.lineStart[i], c.lineStart[i + 1])).join(',');
   const role = ROLE_NAMES[c.role[i]] || 'rough';
-  const area = Number.isNaN(c.area[i]) ? '' : num(c.area[i]);
+  const opt = (col) => (!col || Number.isNaN(col[i]) ? '' : num(col[i]));
+  const area = opt(c.area);
   const cls = `${role}${hot ? ' hot' : ''}${stale ? ' stale' : ''}`;
-  return `<tr data-pass="${i}" class="${cls}" tabindex="-1"><td>${c.index[i]}</td><td>${c.start[i]}</td><td>${num(c.x[i])}</td><td>${num(c.z[i])}</td><td>${num(c.zEnd[i])}</td><td>${num(c.depth[i])}</td><td>${num(c.infeed[i])}</td><td>${area}</td><td class="role">${esc(t(role))}</td><td class="lines">${lines}</td></tr>`;
+  return `<tr data-pass="${i}" class="${cls}" tabindex="-1"><td>${c.index[i]}</td><td>${c.start[i]}</td><td>${num(c.x[i])}</td><td>${num(c.z[i])}</td><td>${num(c.zEnd[i])}</td><td>${num(c.depth[i])}</td><td>${num(c.infeed[i])}</td><td>${area}</td><td>${opt(c.evenArea)}</td><td>${opt(c.time)}</td><td class="role">${esc(t(role))}</td><td class="lines">${lines}</td></tr>`;
 }
 
 /** The source lines of pass `i` of columns `c`. */
@@ -101,7 +102,7 @@ export function diagnosticRow(d, i, t, hot) {
   return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`;
 }
 
-/** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, role, lines, shift, angle}`). */
+/** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, evenArea, time, role, lines, shift, angle}`). */
 export function passObjects(c) {
   if (!c) return [];
   const out = new Array(c.n);
@@ -114,6 +115,8 @@ export function passObjects(c) {
       depth: c.depth[i],
       infeed: c.infeed[i],
       area: Number.isNaN(c.area[i]) ? null : c.area[i],
+      evenArea: !c.evenArea || Number.isNaN(c.evenArea[i]) ? null : c.evenArea[i],
+      time: !c.time || Number.isNaN(c.time[i]) ? null : c.time[i],
       role: ROLE_NAMES[c.role[i]] || 'rough',
       lines: passLines(c, i),
       shift: c.shift[i],

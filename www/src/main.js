@@ -10,6 +10,7 @@ import { load, save, encodeFragment, decodeFragment } from './share.js';
 import { num, esc } from './table.js';
 import { startEngine } from './client.js';
 import { VirtualRows, passHead, passRow, passLines, diagnosticRow } from './lists.js';
+import { DESIGNATION, renderCheck } from './check.js';
 
 const $ = (id) => document.getElementById(id);
 /** Sets an element's text unless it already reads so (a new text node means a new layout). */
@@ -150,10 +151,15 @@ function renderLists(r) {
   const stale = r.alarms > 0 && lastGood && lastGood !== r;
   setText(
     $('summary'),
-    t('summary', { threads: r.threads.length, moves: r.moves, alarms: r.alarms, warnings: r.warnings, notes: r.notes }),
+    t('summary', { threads: r.threads.length, moves: r.moves, alarms: r.alarms, warnings: r.warnings, notes: r.notes }) +
+      (r.timeS != null ? ` · ${t('summary_time', { s: r.timeS.toFixed(1) })}` : ''),
   );
   banner(stale ? t('stale') : null);
   renderThreads(stale ? lastGood : r, stale);
+  const shown = stale ? lastGood : r;
+  const problem = (r.settingErrors || []).find((e) => e.setting.toLowerCase() === DESIGNATION);
+  const strip = { input: $('designation'), verdict: $('check-verdict'), figures: $('check-figures') };
+  renderCheck(strip, shown.threads[shown.thread], shown.units, t, (state.settings[state.dialect] || {})[DESIGNATION], problem && problem.message);
   renderDiagnostics(r.diagnostics);
   renderSettingErrors(r.settingErrors);
 }
@@ -168,7 +174,8 @@ function renderThreads(r, stale) {
   const sel = $('thread');
   const options = r.threads
     .map((th, i) => {
-      const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×`;
+      const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
+      const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
       return `<option value="${i}">${esc(text)}</option>`;
     })
     .join('');
@@ -513,6 +520,18 @@ function finishSetup() {
     if (entry) await openExample(entry);
   });
   $('settings-form').addEventListener('change', onSettingInput);
+  let designationTimer = 0;
+  $('designation').addEventListener('input', (e) => {
+    clearTimeout(designationTimer);
+    designationTimer = setTimeout(() => {
+      const mine = (state.settings[state.dialect] ||= {});
+      const v = e.target.value.trim();
+      if (v) mine[DESIGNATION] = v;
+      else delete mine[DESIGNATION];
+      persist();
+      replan();
+    }, 250);
+  });
   $('settings-form').addEventListener('submit', (e) => e.preventDefault());
   $('settings-reset').addEventListener('click', async () => {
     state.settings[state.dialect] = {};
