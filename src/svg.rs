@@ -3,10 +3,11 @@
 //! colours, dimensions, markers and text placement), so that the app's SVG
 //! export and the command line give the same drawing.
 //!
-//! The scene is fitted into `width × height` less a padding (world → screen,
-//! +y up in the world, down on the page), then the `viewBox` is grown to
-//! hold every item and every label, whose extent is estimated from the font
-//! size and the number of characters. Fonts are named by a family list that
+//! The scene's focus (what the app's Fit shows) is fitted into `width ×
+//! height` less a padding (world → screen, +y up in the world, down on the
+//! page), then the `viewBox` is grown to hold every label, whose extent is
+//! estimated from the font size and the characters ([`measure`]); shapes are
+//! clipped to it as the app's canvas clips them. Fonts are named by a family list that
 //! covers Latin, Greek and CJK text; the background is white, the document
 //! has a title: it prints as it shows.
 
@@ -34,7 +35,7 @@ pub struct Options {
     pub font_size: f64,
     /// Stretch the vertical scale to fill the height (the app's radial stretch).
     pub stretch: bool,
-    /// The world rectangle to fit (default: the whole scene).
+    /// The world rectangle to fit (default: the scene's focus, as the app's Fit; the viewBox still grows to hold every item).
     pub view: Option<Rect>,
     /// The thread whose dimensions are drawn when the scene has many.
     pub thread: usize,
@@ -211,6 +212,7 @@ pub fn escape(s: &str) -> String {
 }
 
 mod paint;
+pub use paint::measure;
 
 /// The scene as an SVG document.
 pub fn svg(scene: &Scene, o: &Options) -> String {

@@ -1,13 +1,14 @@
 #![cfg(not(target_arch = "wasm32"))]
 //! `svg`: every view gives well-formed SVG (parsed by roxmltree) whose
-//! viewBox holds every path, circle and the estimated box of every label.
+//! viewBox holds the fitted drawing area and the estimated box of every
+//! label, with the shapes clipped to it.
 
 mod common;
 use common::plan_with;
 use screwcut::Dialect;
 use screwcut::diagram::scene::{Anchor, Item, Label, Scene, Shape, Style, ViewKind};
 use screwcut::diagram::{side, starts, tooth};
-use screwcut::svg::{Options, svg};
+use screwcut::svg::{Options, measure, svg};
 
 /// What a check found: the viewBox and how many texts and paths it holds.
 struct Checked {
@@ -44,29 +45,35 @@ fn check(doc: &str) -> Checked {
             "{what} at ({px}, {py}) is outside the viewBox {vb:?}"
         );
     };
+    // The fitted drawing area (0, 0)–(width, height) is on the page, and the shapes are clipped to the page.
+    inside(0.0, 0.0, "the drawing area");
+    let clip = xml.descendants().find(|n| n.has_tag_name("clipPath")).expect("a clip path");
+    let rect = clip.children().find(|n| n.has_tag_name("rect")).expect("a clip rectangle");
+    let r = |k| rect.attribute(k).unwrap().parse::<f64>().unwrap();
+    assert_eq!([r("x"), r("y"), r("width"), r("height")], [x, y, w, h], "the clip is the page");
+    let id = clip.attribute("id").unwrap();
+    let group = root.children().find(|n| n.has_tag_name("g")).expect("the drawing group");
+    assert_eq!(group.attribute("clip-path"), Some(format!("url(#{id})").as_str()));
     let (mut texts, mut paths) = (Vec::new(), 0);
     for n in xml.descendants().filter(|n| n.is_element()) {
         match n.tag_name().name() {
             "path" => {
                 let v = numbers(n.attribute("d").unwrap());
                 assert!(v.len() >= 4 && v.len() % 2 == 0, "{:?}", n.attribute("d"));
-                for p in v.chunks(2) {
-                    inside(p[0], p[1], "a path point");
-                }
+                assert!(v.iter().all(|c| c.is_finite()));
                 paths += 1;
             }
             "circle" => {
                 let a = |k| n.attribute(k).unwrap().parse::<f64>().unwrap();
                 let (cx, cy, r) = (a("cx"), a("cy"), a("r"));
-                inside(cx - r, cy - r, "a circle");
-                inside(cx + r, cy + r, "a circle");
+                assert!(cx.is_finite() && cy.is_finite() && r >= 0.0);
             }
             "text" => {
                 let s = n.text().unwrap_or_default().to_string();
                 assert!(!s.is_empty());
                 let a = |k| n.attribute(k).unwrap().parse::<f64>().unwrap();
                 let (tx, ty) = (a("x"), a("y"));
-                let tw = s.chars().count() as f64 * font * 0.6;
+                let tw = measure(&s, font);
                 let th = font * 1.25;
                 let (a0, a1) = match n.attribute("text-anchor").unwrap() {
                     "start" => (0.0, tw),
@@ -155,4 +162,19 @@ fn an_empty_plan_still_draws() {
     let plan = plan_with("", Dialect::Gsk980tdc, &[]);
     check(&svg(&side(&plan), &Options::default()));
     assert!(tooth(&plan, 0, 1).is_none());
+}
+
+/// O1006 ends with `G00 X100 Z100` (a return far from the thread): the page
+/// is the app's Fit of the threads at the size asked for, the far rapid is
+/// clipped, not fitted (it would shrink the thread to a corner of the page).
+#[test]
+fn a_far_return_is_clipped_not_fitted() {
+    let plan = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
+    let scene = side(&plan);
+    assert!(scene.bounds.x1 > scene.focus.x1 + 20.0, "the far return lies outside the focus");
+    let c = check(&svg(&scene, &Options { width: 800.0, height: 500.0, ..Options::default() }));
+    let [x, y, w, h] = c.view_box;
+    assert!(x <= 0.0 && y <= 0.0 && x + w >= 800.0 && y + h >= 500.0, "{:?}", c.view_box);
+    // Only labels widen it, by less than a label's length.
+    assert!(w < 800.0 + 200.0 && h < 500.0 + 100.0, "{:?}", c.view_box);
 }

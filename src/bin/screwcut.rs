@@ -85,6 +85,9 @@ enum Command {
         /// Height of the drawing area in px.
         #[arg(long, default_value_t = 500.0)]
         height: f64,
+        /// Stretch the radial scale to fill the height (the app's "Stretch radially").
+        #[arg(long)]
+        stretch: bool,
     },
 }
 
@@ -188,7 +191,7 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
         Command::Generate(a) => generate(a),
-        Command::Svg { file, view, dialect, set, thread, start, width, height } => {
+        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch } => {
             let (settings, text) = match input(&file, dialect, &set) {
                 Ok(v) => v,
                 Err(code) => return code,
@@ -207,7 +210,7 @@ fn main() -> ExitCode {
                 );
                 return ExitCode::from(2);
             };
-            let opts = screwcut::svg::Options { width, height, thread: ti, ..Default::default() };
+            let opts = screwcut::svg::Options { width, height, stretch, thread: ti, ..Default::default() };
             emit(&screwcut::svg::svg(&scene, &opts));
             ExitCode::SUCCESS
         }

@@ -1,11 +1,20 @@
 //! The painter: scene items → SVG elements, as `render.js` draws them, with
-//! the page extent of everything drawn (labels estimated) for the viewBox.
+//! the page extent for the viewBox: the fitted drawing area grown to hold
+//! every label (estimated). Shapes are clipped to the viewBox, as the app's
+//! canvas clips them: motions far from the threads (a return to a tool
+//! change point) do not shrink the drawing to a corner of the page.
 
 use super::{FONT_FAMILY, Fit, MAX_ANNOTATED, Options, Pen, english, escape, f, fill, pen, push, stroke_of, title};
 use crate::diagram::scene::{Item, Label, Rect, Scene, Shape, Style};
 
 /// Average advance of a character as a share of the font size (Latin, digits).
 const CHAR_WIDTH: f64 = 0.6;
+
+/// Estimated width of text `s` at `font_size` px: a full em for CJK and
+/// other wide characters (U+2E80 and above), [`CHAR_WIDTH`] for the rest.
+pub fn measure(s: &str, font_size: f64) -> f64 {
+    s.chars().map(|c| if c >= '\u{2E80}' { 1.0 } else { CHAR_WIDTH }).sum::<f64>() * font_size
+}
 
 struct Painter<'a> {
     o: &'a Options,
@@ -19,7 +28,8 @@ struct Painter<'a> {
 
 /// The document: background, paths by pen, the other shapes, texts.
 pub(super) fn document(scene: &Scene, o: &Options) -> String {
-    let view = o.view.unwrap_or(scene.bounds).or_unit();
+    let fit = if scene.focus.is_empty() { scene.bounds } else { scene.focus };
+    let view = o.view.unwrap_or(fit).or_unit();
     let mut p = Painter { o, fit: Fit::new(view, o), out: String::new(), extent: Rect::EMPTY, placed: Vec::new() };
     p.extent.add([0.0, 0.0]);
     p.extent.add([o.width, o.height]);
@@ -65,7 +75,20 @@ pub(super) fn document(scene: &Scene, o: &Options) -> String {
         &mut doc,
         format_args!("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\"/>\n", f(x), f(y), f(w), f(h)),
     );
-    doc.push_str("<g stroke-linejoin=\"round\">\n");
+    // Shapes beyond the page are clipped; the id names the rectangle, so that
+    // several drawings inlined in one HTML page never take another's clip.
+    let id = format!("screwcut-page-{}-{}-{}-{}", f(x), f(y), f(w), f(h)).replace(['.', ' '], "_");
+    push(
+        &mut doc,
+        format_args!(
+            "<defs><clipPath id=\"{id}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath></defs>\n",
+            f(x),
+            f(y),
+            f(w),
+            f(h)
+        ),
+    );
+    push(&mut doc, format_args!("<g stroke-linejoin=\"round\" clip-path=\"url(#{id})\">\n"));
     doc.push_str(&p.out);
     doc.push_str("</g>\n</svg>\n");
     doc
@@ -99,11 +122,9 @@ impl Painter<'_> {
             if points.len() < 2 {
                 continue;
             }
-            let width = pen(item.style).width;
             let mut d = String::new();
             for (k, p) in points.iter().enumerate() {
                 let (x, y) = self.fit.at(*p);
-                self.grow(x, y, width / 2.0);
                 push(&mut d, format_args!("{}{} {}", if k == 0 { 'M' } else { 'L' }, f(x), f(y)));
             }
             if closed {
@@ -122,9 +143,9 @@ impl Painter<'_> {
         }
     }
 
-    fn grow(&mut self, x: f64, y: f64, r: f64) {
-        self.extent.add([x - r, y - r]);
-        self.extent.add([x + r, y + r]);
+    /// Whether page point (x, y) is in the fitted drawing area: a label anchored outside it is not drawn (the app's canvas would not show it).
+    fn in_frame(&self, x: f64, y: f64) -> bool {
+        (0.0..=self.o.width).contains(&x) && (0.0..=self.o.height).contains(&y)
     }
 
     /// The fill and stroke attributes of an item's pen.
@@ -146,7 +167,6 @@ impl Painter<'_> {
             Shape::Circle { center, radius } => {
                 let (x, y) = self.fit.at(*center);
                 let r = (radius * self.fit.sx).max(0.0);
-                self.grow(x, y, r + p.width / 2.0);
                 let a = self.style(item, true);
                 push(&mut self.out, format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {a}/>\n", f(x), f(y), f(r)));
             }
@@ -165,6 +185,9 @@ impl Painter<'_> {
                     return;
                 }
                 let (x, y) = self.fit.at(*at);
+                if !self.in_frame(x, y) {
+                    return;
+                }
                 let (x, y) = (x + dx, y - dy);
                 let w = self.measure(&s);
                 let x0 = match anchor.svg() {
@@ -200,7 +223,7 @@ impl Painter<'_> {
     }
 
     fn measure(&self, s: &str) -> f64 {
-        s.chars().count() as f64 * self.o.font_size * CHAR_WIDTH
+        measure(s, self.o.font_size)
     }
 
     /// A text and its estimated extent (rotated by `angle`, −90 or 0).
@@ -242,7 +265,6 @@ impl Painter<'_> {
     fn line(&mut self, pts: &[(f64, f64)], closed: bool, a: &str) {
         let mut d = String::new();
         for (k, (x, y)) in pts.iter().enumerate() {
-            self.grow(*x, *y, 1.0);
             push(&mut d, format_args!("{}{} {}", if k == 0 { 'M' } else { 'L' }, f(*x), f(*y)));
         }
         if closed {
@@ -266,7 +288,6 @@ impl Painter<'_> {
     fn marker(&mut self, x: f64, y: f64, glyph: u8, stroke: &str) {
         match glyph {
             0 => {
-                self.grow(x, y, 3.0);
                 push(
                     &mut self.out,
                     format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{stroke}\"/>\n", f(x), f(y)),
@@ -321,7 +342,8 @@ impl Painter<'_> {
         if text.is_empty() {
             return;
         }
-        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        // The text sits at the middle of the part of the line on the page (as the app puts it in its view).
+        let (cx, cy) = visible_middle((x0, y0), (x1, y1), (self.o.width, self.o.height));
         let colour = p.text.or(p.stroke).unwrap_or("#111827");
         if nx.abs() > 0.7 {
             // A vertical dimension: the text runs along its line, reading upward.
@@ -332,6 +354,34 @@ impl Painter<'_> {
             self.text(cx + nx * 7.0 * sgn, cy + ny * 7.0 * sgn, text, colour, true, "middle", baseline, 0.0);
         }
     }
+}
+
+/// The middle of the part of segment (x0, y0)–(x1, y1) inside the page
+/// `0..w × 0..h` less a 14 px margin (the segment's middle when none of it is).
+fn visible_middle((x0, y0): (f64, f64), (x1, y1): (f64, f64), (w, h): (f64, f64)) -> (f64, f64) {
+    const M: f64 = 14.0;
+    let (dx, dy) = (x1 - x0, y1 - y0);
+    // Parametric clip: each side bounds t to one side of q / p.
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [(-dx, x0 - M), (dx, w - M - x0), (-dy, y0 - M), (dy, h - M - y0)] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+            }
+            continue;
+        }
+        let r = q / p;
+        if p < 0.0 {
+            t0 = t0.max(r);
+        } else {
+            t1 = t1.min(r);
+        }
+    }
+    if t0 > t1 {
+        return ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+    }
+    let t = (t0 + t1) / 2.0;
+    (x0 + dx * t, y0 + dy * t)
 }
 
 /// Fill, stroke, dashes and opacity of a pen.

@@ -119,6 +119,46 @@ impl Session {
         self.with_last(json_value)
     }
 
+    /// View `view` (`side`, `tooth`, `starts`) of the last plan as a
+    /// standalone SVG document, written by the same writer as the command
+    /// line's `screwcut svg` ([`crate::svg`]): fitted to `width × height` px
+    /// (the view's size on screen) as the view's Fit shows it, with the radial
+    /// `stretch`, thread `thread` (its dimensions when many threads are drawn;
+    /// the tooth and starts views' thread) and start `start`, and the label
+    /// templates `labels` (`[key, template, key, template…]`, the page's
+    /// language; missing keys in English).
+    pub fn svg(
+        &self,
+        view: &str,
+        thread: i32,
+        start: u32,
+        size: Vec<f64>,
+        stretch: bool,
+        labels: Vec<String>,
+    ) -> Result<String, JsValue> {
+        self.with_last(|plan| {
+            let t = pick(plan, thread);
+            let scene = match view {
+                "side" => Some(diagram::side(plan)),
+                "tooth" => t.and_then(|t| diagram::tooth(plan, t, start.max(1))),
+                "starts" => t.and_then(|t| diagram::starts(plan, t)),
+                _ => return Err(err(format!("unknown view '{view}': side, tooth or starts"))),
+            };
+            let scene = scene.ok_or_else(|| err(format!("no thread to draw the {view} view of")))?;
+            let finite = |v: Option<&f64>, d: f64| v.copied().filter(|v| v.is_finite() && *v > 0.0).unwrap_or(d);
+            let pairs = labels.chunks_exact(2).map(|kv| (kv[0].clone(), kv[1].clone())).collect();
+            let opts = crate::svg::Options {
+                width: finite(size.first(), 800.0).min(20_000.0),
+                height: finite(size.get(1), 500.0).min(20_000.0),
+                stretch,
+                thread: t.unwrap_or(0),
+                labels: pairs,
+                ..Default::default()
+            };
+            Ok(crate::svg::svg(&scene, &opts))
+        })
+    }
+
     /// The motions of the last plan, seven numbers each:
     /// `[kind, x0, z0, x1, z1, line, cw]` with kind 0 rapid, 1 feed, 2 arc,
     /// 3 thread, 4 run-out, 5 screw-in and `cw` 1 for clockwise arcs (X as a diameter).

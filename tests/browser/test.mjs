@@ -17,6 +17,8 @@ import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
 
 const url = siteUrl('test.mjs');
 const { check, counts } = checker();
@@ -183,6 +185,21 @@ try {
   const [svg] = await Promise.all([page.waitForEvent('download'), page.click('#side-panel [data-act="svg"]')]);
   const svgText = fs.readFileSync(await svg.path(), 'utf8');
   check('side view exports as SVG', svgText.startsWith('<?xml') && (svgText.match(/<path /g) || []).length > 20, svgText.slice(0, 80));
+  // One SVG writer: the app's export is the command line's `screwcut svg` at the view's size and stretch.
+  const cli = process.argv[3] || path.join(path.dirname(fileURLToPath(import.meta.url)), '../../target/debug/screwcut');
+  const program = await page.evaluate(() => window.__screwcut.text());
+  const size = await page.evaluate(() => {
+    const r = document.getElementById('side').getBoundingClientRect();
+    return [r.width, r.height, document.querySelector('#side-panel [data-act="stretch"]').getAttribute('aria-pressed') === 'true'];
+  });
+  let cliSvg = '';
+  try {
+    const args = ['svg', '-', '--view', 'side', '--width', String(size[0]), '--height', String(size[1]), ...(size[2] ? ['--stretch'] : [])];
+    cliSvg = execFileSync(cli, args, { input: program, encoding: 'utf8' });
+  } catch (e) {
+    cliSvg = `cannot run ${cli}: ${e.message}`;
+  }
+  check(`the side SVG equals \`screwcut svg --width ${size[0]} --height ${size[1]}${size[2] ? ' --stretch' : ''}\``, cliSvg === svgText, firstDifference(svgText, cliSvg));
   const [png] = await Promise.all([page.waitForEvent('download'), page.click('#tooth-panel [data-act="png"]')]);
   const pngBytes = fs.readFileSync(await png.path());
   check('tooth view exports as PNG', pngBytes.length > 1000 && pngBytes.subarray(1, 4).toString() === 'PNG', `${pngBytes.length} bytes`);
@@ -299,3 +316,10 @@ try {
 }
 
 finish('browser', counts);
+
+/** Where two texts first differ, with some context. */
+function firstDifference(a, b) {
+  let i = 0;
+  while (i < a.length && a[i] === b[i]) i++;
+  return i === a.length && i === b.length ? 'equal' : `at ${i}: app …${a.slice(Math.max(0, i - 40), i + 60)}… cli …${b.slice(Math.max(0, i - 40), i + 60)}…`;
+}

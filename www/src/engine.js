@@ -11,7 +11,7 @@
 
 import { SceneView } from './sceneview.js';
 import { setLayout } from './render.js';
-import { labelIn } from './i18n.js';
+import { labelIn, labelTable } from './i18n.js';
 import { HeldParts } from './parts.js';
 
 export class Engine {
@@ -218,9 +218,18 @@ export class Engine {
     this.afterCommit(() => this.post({ type: 'frame', seq: f.seq, input: f.input }));
   }
 
+  /**
+   * A view as a file: SVG from the planner's SVG writer (the one `screwcut
+   * svg` uses, so the app's export and the command line's never differ),
+   * fitted at the view's size with its stretch, thread, start and language;
+   * PNG as the view draws it.
+   */
   async on_export({ id, name, format, scale }) {
     const v = this.views[name];
-    const data = !v ? null : format === 'svg' ? v.toSVG() : await v.toPNG(scale || 2);
+    let data = null;
+    if (v && format === 'svg') {
+      data = this.session.svg(name, this.thread, this.start, [v.cssW, v.cssH], !!v.stretch, labelTable(this.lang));
+    } else if (v) data = await v.toPNG(scale || 2);
     this.post({ type: 'reply', id, data });
   }
 

@@ -256,6 +256,13 @@ export function textIn(l, key, vars) {
   return s;
 }
 
+/** Every text of language `l` as `[key, template, key, template…]` (the SVG writer's label templates). */
+export function labelTable(l) {
+  const out = [];
+  for (const [k, v] of Object.entries(TABLES[l] || EN)) if (typeof v === 'string') out.push(k, v);
+  return out;
+}
+
 /** A scene label in language `l`. */
 export function labelIn(l, key, value) {
   const pattern = (TABLES[l] || EN)[key] ?? EN[key];

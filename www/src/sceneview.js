@@ -5,7 +5,7 @@
 // zoom around a point, fit, an optional radial stretch, hit-testing and
 // SVG/PNG export of what it shows.
 
-import { drawScene, canvasPainter, svgPainter, fitTransform, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
+import { drawScene, canvasPainter, fitTransform, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
 
 const PAD = 56;
 
@@ -165,14 +165,6 @@ export class SceneView {
       height: this.cssH,
       cull,
     };
-  }
-
-  /** The scene as an SVG document, as currently shown. */
-  toSVG() {
-    if (!this.scene) return null;
-    const p = svgPainter(Math.round(this.cssW), Math.round(this.cssH));
-    drawScene(p, this.scene, this.transform(), this.drawOptions(null, false, false));
-    return p.svg();
   }
 
   /** The scene as a PNG blob at `scale` × the shown size. */

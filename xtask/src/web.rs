@@ -217,7 +217,10 @@ pub fn browser_tests() -> Result {
     let port = listener.local_addr().map_err(|e| e.to_string())?.port();
     std::thread::spawn(move || serve_forever(listener, out));
     let url = format!("http://127.0.0.1:{port}/");
-    let app = run("node", &["test.mjs", &url], Some(&dir));
+    // The app's SVG export is compared with the command line's.
+    run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
+    let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
+    let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
     let engine = run("node", &["engine.test.mjs", &url], Some(&dir));
     let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
     app.and(engine).and(docs)
