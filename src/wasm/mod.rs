@@ -7,7 +7,7 @@
 //! - [`keys`]: content keys of the parts of a plan, as JavaScript numbers;
 //! - [`memo`]: the side section put together from the pieces an edit did
 //!   not change;
-//! - the bindings (`bind`, `session`, `js`, `parts`; wasm32 only): per-view
+//! - the bindings (`bind`, `session`, `js`, `parts`, `tools`; wasm32 only): per-view
 //!   sessions — the app and every embedded element keep their own planner
 //!   and scene pieces — and the functions JavaScript calls.
 //!
@@ -27,11 +27,15 @@ mod js;
 mod parts;
 #[cfg(target_arch = "wasm32")]
 mod session;
+#[cfg(target_arch = "wasm32")]
+mod tools;
 
 #[cfg(target_arch = "wasm32")]
 pub use bind::*;
 #[cfg(target_arch = "wasm32")]
 pub use session::Session;
+#[cfg(target_arch = "wasm32")]
+pub use tools::*;
 
 /// The binding's tests (wasm-bindgen-test), run in Node and in headless
 /// Chromium by `cargo xtask test`.

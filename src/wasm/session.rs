@@ -159,6 +159,15 @@ impl Session {
         })
     }
 
+    /// The last plan written block by block for dialect `to` (every pass
+    /// with its approach, cut, run-out, retract and return; see
+    /// [`crate::expand`]): `{program, notes}`. Planned again, the program gives
+    /// the same passes.
+    pub fn expand(&self, to: &str) -> Result<JsValue, JsValue> {
+        let to = dialect(to)?;
+        self.with_last(|plan| to_js(&crate::expand::expand(plan, to)))
+    }
+
     /// The motions of the last plan, seven numbers each:
     /// `[kind, x0, z0, x1, z1, line, cw]` with kind 0 rapid, 1 feed, 2 arc,
     /// 3 thread, 4 run-out, 5 screw-in and `cw` 1 for clockwise arcs (X as a diameter).

@@ -22,3 +22,4 @@ mod incremental;
 mod input;
 mod plans;
 mod scenes;
+mod tools;

@@ -1,0 +1,118 @@
+//! The program-writing tools JavaScript calls: the thread wizard
+//! ([`crate::wizard`]) and its table of forms. Expanding a plan to blocks is
+//! a [`super::Session`] method (it writes the session's last plan).
+//!
+//! As in `bind`, nothing here may panic: a request is read field by field,
+//! every wrong field is named in the error.
+
+use js_sys::Reflect;
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+use super::js::{dialect, err, to_js};
+use crate::dialect::Dialect;
+use crate::form::Form;
+use crate::wizard::{Request, generate};
+
+/// A form for the wizard's selector.
+#[derive(Serialize)]
+struct FormInfo {
+    name: &'static str,
+    title: &'static str,
+}
+
+/// A dialect and the forms the wizard writes for it.
+#[derive(Serialize)]
+struct DialectForms {
+    dialect: &'static str,
+    title: &'static str,
+    forms: Vec<FormInfo>,
+}
+
+/// The wizard's targets: `[{dialect, title, forms: [{name, title}]}]`.
+#[wasm_bindgen]
+pub fn wizard_forms() -> Result<JsValue, JsValue> {
+    let list: Vec<DialectForms> = Dialect::ALL
+        .iter()
+        .map(|d| DialectForms {
+            dialect: d.name(),
+            title: d.title(),
+            forms: Form::of(*d).iter().map(|f| FormInfo { name: f.name(), title: f.title() }).collect(),
+        })
+        .collect();
+    to_js(&list)
+}
+
+/// Field `key` of `o`: `None` when missing, null or an empty string.
+fn field(o: &JsValue, key: &str) -> Option<JsValue> {
+    let v = Reflect::get(o, &JsValue::from_str(key)).ok()?;
+    if v.is_undefined() || v.is_null() || v.as_string().is_some_and(|s| s.trim().is_empty()) {
+        return None;
+    }
+    Some(v)
+}
+
+/// A number field: a JS number or a numeric string; finite.
+fn number(o: &JsValue, key: &str) -> Result<Option<f64>, JsValue> {
+    let Some(v) = field(o, key) else { return Ok(None) };
+    let n = v.as_f64().or_else(|| v.as_string().and_then(|s| s.trim().parse::<f64>().ok()));
+    match n {
+        Some(n) if n.is_finite() => Ok(Some(n)),
+        _ => Err(err(format!("{key}: not a number"))),
+    }
+}
+
+/// A text field, at most 200 characters.
+fn text(o: &JsValue, key: &str) -> Result<Option<String>, JsValue> {
+    let Some(v) = field(o, key) else { return Ok(None) };
+    let s = v.as_string().ok_or_else(|| err(format!("{key}: not text")))?;
+    if s.chars().count() > 200 {
+        return Err(err(format!("{key}: longer than 200 characters")));
+    }
+    Ok(Some(s.trim().to_string()))
+}
+
+/// Reads a wizard request: `{designation, major, lead, starts, internal,
+/// startZ, endZ, length, noseRadius, maxRpm, maxFeed, dialect, form}` (all
+/// optional but a thread — a designation, or major and lead — and a length or end Z).
+fn request(o: &JsValue) -> Result<Request, JsValue> {
+    let mut r = Request {
+        designation: text(o, "designation")?,
+        major: number(o, "major")?,
+        lead: number(o, "lead")?,
+        ..Request::default()
+    };
+    if let Some(n) = number(o, "starts")? {
+        if n.fract() != 0.0 || !(1.0..=360.0).contains(&n) {
+            return Err(err("starts: a whole number from 1 to 360"));
+        }
+        r.starts = Some(n as u32);
+    }
+    r.internal = field(o, "internal").map(|v| v.as_bool().unwrap_or(false));
+    r.start_z = number(o, "startZ")?.unwrap_or(0.0);
+    r.end_z = number(o, "endZ")?;
+    r.length = number(o, "length")?;
+    r.nose_radius = number(o, "noseRadius")?.unwrap_or(r.nose_radius);
+    r.max_rpm = number(o, "maxRpm")?.unwrap_or(r.max_rpm);
+    r.max_feed = number(o, "maxFeed")?.unwrap_or(r.max_feed);
+    if let Some(d) = text(o, "dialect")? {
+        r.dialect = dialect(&d)?;
+    }
+    if let Some(f) = text(o, "form")? {
+        r.form = Form::parse(&f).ok_or_else(|| {
+            let names: Vec<&str> = Form::ALL.iter().map(|f| f.name()).collect();
+            err(format!("form: unknown '{f}' ({})", names.join(", ")))
+        })?;
+    }
+    Ok(r)
+}
+
+/// The wizard's program for `req` (see [`request`]): `{program, notes,
+/// spec}`; an error names what is wrong with the request or why the thread
+/// cannot be written for the form.
+#[wasm_bindgen]
+pub fn wizard_generate(req: JsValue) -> Result<JsValue, JsValue> {
+    let r = request(&req)?;
+    let g = generate(&r).map_err(err)?;
+    to_js(&g)
+}
