@@ -5,7 +5,7 @@
 // on the page with the same messages (client.js).
 //
 // Messages in: view, size, input, plan, select, highlight, lang, export,
-// json, inspect. Messages out: result (after each plan: counts, lists and
+// json, tool, inspect. Messages out: result (after each plan: counts, lists and
 // the chosen thread's passes as columns), frame (once the drawing that
 // includes an edit is on screen), hover, pick, reply, error.
 
@@ -236,6 +236,21 @@ export class Engine {
   /** Tables the page's panels show: `what: 'settings'` of `dialect`. */
   on_table({ id, what, dialect }) {
     const data = what === 'settings' ? this.core.settings_table(dialect) : null;
+    this.post({ type: 'reply', id, data });
+  }
+
+  /**
+   * The program-writing tools: `what: 'forms'` (the wizard's controllers and
+   * forms), `'generate'` (the wizard's program for `request`), `'expand'`
+   * (the last plan block by block for dialect `to`). A wrong request is
+   * answered with an error naming it.
+   */
+  on_tool({ id, what, request, to }) {
+    let data;
+    if (what === 'forms') data = this.core.wizard_forms();
+    else if (what === 'generate') data = this.core.wizard_generate(request);
+    else if (what === 'expand') data = this.session.expand(to);
+    else throw new Error(`unknown tool '${what}'`);
     this.post({ type: 'reply', id, data });
   }
 
