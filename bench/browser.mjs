@@ -1,8 +1,17 @@
-// In headless Chromium (the system package): time from an edit to the
-// finished frame for a 5,000-line program (to the commit of the frame, which
-// rasterises the canvases), and the wasm plan time of the 20 MB generated
-// program. Usage: node browser.mjs SITE_DIR PROGRAM_20MB
-// Prints figures; asserts nothing.
+// In headless Chromium (the system package, software rendering), what a
+// person typing feels, measured by the browser itself:
+// - Event Timing: keystroke to the next paint (`PerformanceEventTiming`, the
+//   interaction's longest entry), p50 and p95, typing and deleting a digit in
+//   the first pass of a 5,000- and a 50,000-line program;
+// - the app's marks: keystroke to the committed drawing that includes it
+//   (`performance.mark('screwcut:frame', {detail: {input}})`);
+// - long tasks on the page's thread while typing;
+// - the 3-line L99 program (334,125 motions) opened from a link: the page
+//   ready, a click answered, a keystroke's Event Timing;
+// - the wasm planner's rate on the 20 MB program, on the page.
+// Usage: node browser.mjs SITE_DIR PKG_DIR PROGRAM_20MB
+// Prints figures, and `FIG name value` lines for `cargo xtask bench`;
+// asserts nothing.
 import { chromium } from 'playwright-core';
 import fs from 'node:fs';
 import http from 'node:http';
@@ -10,16 +19,21 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 
-const [site, big] = process.argv.slice(2);
+const [site, pkg, big] = process.argv.slice(2);
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.css': 'text/css', '.json': 'application/json', '.svg': 'image/svg+xml', '.nc': 'text/plain' };
+/** The site, the wasm-bindgen glue under /pkg/, the 20 MB program as /bench-20mb.nc. */
 const server = http.createServer((req, res) => {
   const url = decodeURIComponent(req.url.split('?')[0]);
-  if (url === '/bench-20mb.nc') {
-    res.writeHead(200, { 'content-type': 'text/plain' });
-    return fs.createReadStream(big).pipe(res);
+  let file;
+  if (url === '/blank.html') {
+    res.writeHead(200, { 'content-type': 'text/html' });
+    return res.end('<!doctype html><title>screwcut bench</title>');
   }
-  const file = path.join(site, url.endsWith('/') ? url + 'index.html' : url);
-  if (!file.startsWith(path.resolve(site)) || !fs.existsSync(file)) {
+  if (url === '/bench-20mb.nc') file = big;
+  else if (url.startsWith('/pkg/')) file = path.join(pkg, url.slice(5));
+  else file = path.join(site, url.endsWith('/') ? url + 'index.html' : url);
+  const inside = file === big || file.startsWith(path.resolve(site)) || file.startsWith(path.resolve(pkg));
+  if (!inside || !fs.existsSync(file)) {
     res.writeHead(404);
     return res.end();
   }
@@ -29,7 +43,7 @@ const server = http.createServer((req, res) => {
 await new Promise((r) => server.listen(0, '127.0.0.1', r));
 const url = `http://127.0.0.1:${server.address().port}/`;
 
-/** The same 5,000-line program the browser test uses: O1006-style threads between turning moves. */
+/** The browser test's program: O1006-style threads between turning moves, `lines` long. */
 function program(lines) {
   const out = ['O2000', 'G50 X100 Z100', 'S300 M03 T0101'];
   let n = 0;
@@ -44,7 +58,22 @@ function program(lines) {
 }
 const fragment = (state) =>
   '#z=' + zlib.deflateRawSync(Buffer.from(JSON.stringify(state)), { level: 9 }).toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+/** The q-quantile of `a` (nearest rank). */
+const quantile = (a, q) => {
+  const s = [...a].sort((x, y) => x - y);
+  return s.length ? s[Math.min(s.length - 1, Math.max(0, Math.ceil(q * s.length) - 1))] : NaN;
+};
+const fig = (name, value) => console.log(`FIG ${name} ${Number.isFinite(value) ? value.toFixed(1) : 'NaN'}`);
+
+/** Observers on the page's thread from its first script: Event Timing (every entry of 16 ms and more, the API's floor) and long tasks. */
+function observe() {
+  self.__events = [];
+  self.__long = [];
+  new PerformanceObserver((l) => {
+    for (const e of l.getEntries()) if (e.interactionId) self.__events.push({ id: e.interactionId, name: e.name, start: e.startTime, d: e.duration });
+  }).observe({ type: 'event', durationThreshold: 16, buffered: true });
+  new PerformanceObserver((l) => self.__long.push(...l.getEntries().map((e) => ({ start: e.startTime, d: e.duration })))).observe({ type: 'longtask', buffered: true });
+}
 
 const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-bench-'));
 const ctx = await chromium.launchPersistentContext(dir, {
@@ -53,61 +82,130 @@ const ctx = await chromium.launchPersistentContext(dir, {
   args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   viewport: { width: 1400, height: 900 },
 });
-const page = ctx.pages()[0] || (await ctx.newPage());
-try {
-  await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: {}, program: program(5000) }));
-  await page.waitForFunction(() => window.__screwcut.ready && window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 60_000 });
-  const lines = await page.evaluate(() => window.__screwcut.updates.at(-1).lines);
-  /**
-   * Types `keys` (a list of key names) at the end of line `at` ('first',
-   * 'first-pass': the first pass's X rapid on line 9, or 'near-end': the
-   * last pass's X rapid) and prints the medians: from the
-   * keystroke to the frame committed (canvases rasterised), and its parts.
-   */
-  const measure = async (what, at, keys) => {
-    await page.locator('.cm-line').first().click();
-    if (at === 'first-pass') for (let i = 0; i < 8; i++) await page.keyboard.press('ArrowDown');
-    if (at === 'near-end') {
-      await page.keyboard.press('Control+End');
-      for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowUp');
-    }
-    await page.keyboard.press('End');
-    await page.waitForTimeout(300);
-    await page.evaluate(() => { window.__screwcut.frames.length = 0; window.__screwcut.updates.length = 0; });
-    for (const key of keys) {
-      await page.keyboard.press(key);
-      await page.waitForTimeout(100);
-    }
-    await page.waitForTimeout(300);
-    const m = await page.evaluate(() => ({ frames: window.__screwcut.frames, updates: window.__screwcut.updates }));
-    const f = (a, k) => median(a.map((x) => x[k] || 0)).toFixed(1);
-    console.log(
-      `  edit-to-frame, ${lines} lines, ${what}: median ${f(m.frames, 'frame')} ms from the keystroke to the committed frame ` +
-        `(${m.frames.length} keystrokes, max ${Math.max(...m.frames.map((x) => x.frame)).toFixed(1)}; keystroke to re-plan ${f(m.frames, 'editor')} ms, ` +
-        `plan+transfer ${f(m.updates, 'plan')} ms, lists and editor ${f(m.updates, 'draw')} ms, keystroke to frame callbacks done ${f(m.frames, 'raf')} ms, ` +
-        `canvas drawing ${f(m.frames, 'canvas')} ms, commit and rasterisation ${f(m.frames, 'commit')} ms)`,
-    );
-  };
-  const comment = [...' (edit-to-frame)'].map((c) => (c === ' ' ? 'Space' : c));
-  await measure('typing a comment at the top', 'first', comment);
-  // A digit typed and deleted, in turn: every keystroke changes a pass.
-  const digits = Array.from({ length: 16 }, (_, i) => (i % 2 ? 'Backspace' : String(1 + (i / 2) % 9)));
-  await measure('typing and deleting a digit in the first pass', 'first-pass', digits);
-  await measure('typing and deleting a digit in a pass near the end', 'near-end', digits);
-  const big20 = await page.evaluate(async () => {
-    const text = await (await fetch('bench-20mb.nc')).text();
-    const core = window.__screwcut.core;
-    const f = core.plan_summary ? () => core.plan_summary(text, 'gsk980tdc', '') : () => core.update(text, 'gsk980tdc', '', -1, 1, -1);
+await ctx.addInitScript(observe);
+
+/**
+ * Opens the `lines`-line program from a link, types and deletes a digit at
+ * the end of the first pass's X line `keys` times, 150 ms apart (a quick
+ * typist), and prints what the browser measured.
+ */
+async function typing(lines, keys, tag) {
+  const page = await ctx.newPage();
+  await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: {}, program: program(lines) }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
+  await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
+  await page.locator('.cm-line').first().click();
+  for (let i = 0; i < 8; i++) await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('End');
+  await page.waitForTimeout(1000);
+  const t0 = await page.evaluate(() => performance.now());
+  for (let i = 0; i < keys; i++) {
+    await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)));
+    await page.waitForTimeout(150);
+  }
+  await page.waitForTimeout(1500);
+  const m = await page.evaluate((t0) => {
+    const marks = performance.getEntriesByName('screwcut:frame', 'mark').filter((e) => e.startTime > t0 && e.detail && e.detail.input > t0);
+    return {
+      events: self.__events.filter((e) => e.start > t0),
+      long: self.__long.filter((e) => e.start > t0),
+      marks: marks.map((e) => e.startTime - e.detail.input),
+      lines: window.__screwcut.updates.at(-1)?.lines,
+    };
+  }, t0);
+  await page.close();
+  // One interaction per keystroke: its longest entry (keydown, keyup). A keystroke that
+  // painted within 16 ms has no entry (the API's floor): it counts as under 16 ms.
+  const byId = new Map();
+  for (const e of m.events) byId.set(e.id, Math.max(byId.get(e.id) || 0, e.d));
+  const durations = [...byId.values()];
+  while (durations.length < keys) durations.push(0);
+  const p50 = quantile(durations, 0.5);
+  const p95 = quantile(durations, 0.95);
+  const show = (v) => (v < 16 ? '<16' : v.toFixed(0));
+  const longSum = m.long.reduce((s, e) => s + e.d, 0);
+  const longMax = Math.max(0, ...m.long.map((e) => e.d));
+  console.log(
+    `  ${lines} lines, ${keys} keystrokes typing and deleting a digit in the first pass: keystroke to next paint (Event Timing) ` +
+      `p50 ${show(p50)} ms, p95 ${show(p95)} ms, max ${show(Math.max(...durations))} ms (${byId.size} of ${keys} keystrokes took 16 ms or more); ` +
+      `keystroke to the committed drawing (marks, ${m.marks.length}) p50 ${quantile(m.marks, 0.5).toFixed(1)} ms, p95 ${quantile(m.marks, 0.95).toFixed(1)} ms; ` +
+      `page long tasks: ${m.long.length} (${longSum.toFixed(0)} ms in all, longest ${longMax.toFixed(0)} ms)`,
+  );
+  fig(`${tag}_event_p50`, p50);
+  fig(`${tag}_event_p95`, p95);
+  fig(`${tag}_mark_p50`, quantile(m.marks, 0.5));
+  fig(`${tag}_long_max`, longMax);
+  fig(`${tag}_long_sum`, longSum);
+}
+
+/** The 3-line L99 program from a link: the page ready, a click answered, one keystroke. */
+async function l99() {
+  const page = await ctx.newPage();
+  const text = 'G00 X100 Z5\nG78 P1060 Q10 R0.01 L99\nG78 X40 Z-30 P9000 Q300 F2\n';
+  const t0 = Date.now();
+  await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: {}, program: text }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+  const ready = Date.now() - t0;
+  const clicked = await page.evaluate(
+    () =>
+      new Promise((resolve) => {
+        const t = performance.now();
+        const b = document.getElementById('settings-toggle');
+        b.addEventListener('click', () => requestAnimationFrame(() => resolve(performance.now() - t)), { once: true });
+        b.click();
+      }),
+  );
+  await page.locator('.cm-line').nth(2).click();
+  await page.keyboard.press('End');
+  await page.waitForTimeout(500);
+  const k0 = await page.evaluate(() => performance.now());
+  await page.keyboard.press('0');
+  await page.waitForFunction((k0) => performance.getEntriesByName('screwcut:frame', 'mark').some((e) => e.startTime > k0), k0, { timeout: 60_000 });
+  await page.waitForTimeout(500);
+  const m = await page.evaluate((k0) => {
+    const ev = self.__events.filter((e) => e.start > k0 - 1);
+    const mark = performance.getEntriesByName('screwcut:frame', 'mark').find((e) => e.startTime > k0);
+    return { event: Math.max(0, ...ev.map((e) => e.d)), mark: mark ? mark.startTime - mark.detail.input : NaN, long: self.__long.filter((e) => e.start > k0 - 1), plan: window.__screwcut.updates.at(-1).plan };
+  }, k0);
+  await page.close();
+  console.log(
+    `  L99 (3 lines, 66,825 passes, 334,125 motions) from a link: page ready ${ready} ms; a click answered to the next frame in ${clicked.toFixed(1)} ms; ` +
+      `a keystroke to next paint ${m.event < 16 ? '<16' : m.event.toFixed(0)} ms, to the committed drawing ${m.mark.toFixed(0)} ms (re-plan in the worker ${m.plan.toFixed(0)} ms); ` +
+      `page long tasks after the keystroke: ${m.long.length} (longest ${Math.max(0, ...m.long.map((e) => e.d)).toFixed(0)} ms)`,
+  );
+  fig('l99_ready', ready);
+  fig('l99_click', clicked);
+  fig('l99_key_event', m.event);
+  fig('l99_key_mark', m.mark);
+}
+
+/** The wasm planner on the 20 MB program, on a page of its own (glue from /pkg/, the site's optimised wasm). */
+async function wasmRate() {
+  const page = await ctx.newPage();
+  await page.goto(url + 'blank.html');
+  const r = await page.evaluate(async (base) => {
+    const glue = await import(base + 'pkg/screwcut.js');
+    await glue.default({ module_or_path: base + 'screwcut_bg.wasm' });
+    const text = await (await fetch(base + 'bench-20mb.nc')).text();
     let best = Infinity;
-    let out;
     for (let i = 0; i < 3; i++) {
       const t = performance.now();
-      out = f();
+      glue.plan_summary(text, 'gsk980tdc', '');
       best = Math.min(best, performance.now() - t);
     }
-    return { bytes: text.length, best, what: core.plan_summary ? 'plan' : 'plan and side scene (update)' };
-  });
-  console.log(`  wasm in Chromium, 20 MB (${big20.bytes} bytes): ${big20.what} best of 3 ${big20.best.toFixed(0)} ms = ${(big20.bytes / big20.best / 1000).toFixed(1)} MB/s`);
+    return { bytes: new TextEncoder().encode(text).length, best };
+  }, url);
+  await page.close();
+  const rate = r.bytes / r.best / 1000;
+  console.log(`  wasm planner on the page, 20 MB (${r.bytes} bytes): best of 3 ${r.best.toFixed(0)} ms = ${rate.toFixed(1)} MB/s`);
+  fig('wasm_20mb_rate', rate);
+}
+
+try {
+  await typing(5000, 20, 'k5');
+  await typing(50000, 20, 'k50');
+  await l99();
+  await wasmRate();
 } finally {
   await ctx.close();
   server.close();

@@ -6,6 +6,7 @@
 //! the pinned binaryen),
 //! so the README's two commands work on a new clone.
 
+mod bench;
 mod install;
 mod web;
 
@@ -31,7 +32,7 @@ fn main() -> ExitCode {
         "serve" => web::serve(rest),
         "dist" => web::dist(rest),
         "test" => test(rest),
-        "bench" => bench(rest),
+        "bench" => bench::bench(rest),
         _ => return usage(),
     };
     match result {
@@ -69,72 +70,5 @@ fn test(args: &[String]) -> Result {
     step("browser test");
     web::browser_tests()?;
     step("all tests passed");
-    Ok(())
-}
-
-/// The performance figures, measured in one run and printed (never asserted).
-fn bench(args: &[String]) -> Result {
-    if let Some(a) = args.first() {
-        return Err(format!("bench: unknown option '{a}' (usage: cargo xtask bench)"));
-    }
-    let root = install::root();
-    eprintln!("\n== native throughput and memory");
-    let out = std::process::Command::new("cargo")
-        .args(["bench", "--bench", "throughput"])
-        .current_dir(&root)
-        .stderr(std::process::Stdio::inherit())
-        .output()
-        .map_err(|e| format!("cannot run cargo bench: {e}"))?;
-    let text = String::from_utf8_lossy(&out.stdout);
-    if !out.status.success() {
-        return Err(format!("cargo bench failed:\n{text}"));
-    }
-    let mut rates = Vec::new();
-    for line in text.lines() {
-        match line.strip_prefix("RATE ") {
-            Some(r) => rates.push(r.replacen(' ', "=", 1)),
-            None => println!("{line}"),
-        }
-    }
-    eprintln!("\n== wasm build and size");
-    let site = root.join("target").join("site-bench");
-    web::build_site(true, &site)?;
-    let wasm = site.join("screwcut_bg.wasm");
-    let raw = std::fs::metadata(&wasm).map_err(|e| format!("{}: {e}", wasm.display()))?.len();
-    let gz = std::process::Command::new("gzip")
-        .args(["-9", "-c"])
-        .arg(&wasm)
-        .output()
-        .map_err(|e| format!("cannot run gzip: {e}"))?
-        .stdout
-        .len();
-    println!("wasm size: {raw} bytes raw, {gz} bytes gzipped (-9) ({:.1} KiB)", gz as f64 / 1024.0);
-    let bench = root.join("bench");
-    install::ensure_npm(&bench)?;
-    let programs = root.join("target").join("bench");
-    let p = |name: &str| programs.join(name).display().to_string();
-    eprintln!("\n== gcode-toolpath side by side (Node)");
-    println!("gcode-toolpath (cncjs) and screwcut on the same files:");
-    let pkg = root.join("www").join("pkg").display().to_string();
-    let status = std::process::Command::new("node")
-        .args(["toolpath.mjs", &pkg, &p("mixed-1mb.nc"), &p("mixed-20mb.nc")])
-        .env("NATIVE_RATES", rates.join(","))
-        .current_dir(&bench)
-        .status()
-        .map_err(|e| format!("cannot run node: {e}"))?;
-    if !status.success() {
-        return Err("the gcode-toolpath comparison failed".into());
-    }
-    eprintln!("\n== headless Chromium");
-    install::ensure_chromium()?;
-    println!("headless Chromium:");
-    let status = std::process::Command::new("node")
-        .args(["browser.mjs", &site.display().to_string(), &p("mixed-20mb.nc")])
-        .current_dir(&bench)
-        .status()
-        .map_err(|e| format!("cannot run node: {e}"))?;
-    if !status.success() {
-        return Err("the browser benchmark failed".into());
-    }
     Ok(())
 }

@@ -1,0 +1,221 @@
+//! `cargo xtask bench`: the performance figures, measured in one run and
+//! printed (never asserted): native throughput and memory, the wasm size,
+//! gcode-toolpath side by side, and in headless Chromium what a person
+//! typing feels (Event Timing, the app's frame marks, long tasks), the L99
+//! program and the wasm planner's rate. Ends with a table of each figure
+//! beside the one measured when the work to reach it began, and its target.
+
+use std::collections::BTreeMap;
+use std::process::{Command, Stdio};
+
+use comfy_table::{Table, presets::UTF8_FULL_CONDENSED};
+
+use crate::{Result, install, web};
+
+/// A figure of the summary: key, what it is, the value before (issue #11's
+/// "today", 2026-11), the target, and whether smaller is better.
+struct Figure {
+    key: &'static str,
+    what: &'static str,
+    before: &'static str,
+    target: &'static str,
+    unit: &'static str,
+}
+
+const FIGURES: &[Figure] = &[
+    Figure {
+        key: "k5_event_p50",
+        what: "5,000 lines: keystroke to next paint, p50",
+        before: "48",
+        target: "≤ 16",
+        unit: "ms",
+    },
+    Figure {
+        key: "k5_event_p95",
+        what: "5,000 lines: keystroke to next paint, p95",
+        before: "96",
+        target: "≤ 33",
+        unit: "ms",
+    },
+    Figure {
+        key: "k5_mark_p50",
+        what: "5,000 lines: keystroke to committed drawing, p50",
+        before: "39–45",
+        target: "≤ 16",
+        unit: "ms",
+    },
+    Figure {
+        key: "k5_long_max",
+        what: "5,000 lines: longest page task while typing",
+        before: "—",
+        target: "≤ 50",
+        unit: "ms",
+    },
+    Figure {
+        key: "k50_event_p50",
+        what: "50,000 lines: keystroke to next paint, p50",
+        before: "112",
+        target: "≤ 33",
+        unit: "ms",
+    },
+    Figure {
+        key: "k50_long_sum",
+        what: "50,000 lines: page long tasks over 20 keystrokes",
+        before: "≈ 1000",
+        target: "0",
+        unit: "ms",
+    },
+    Figure {
+        key: "k50_long_max",
+        what: "50,000 lines: longest page task while typing",
+        before: "—",
+        target: "≤ 50",
+        unit: "ms",
+    },
+    Figure {
+        key: "l99_ready", what: "L99 from a link: page ready", before: "≈ 19000", target: "≤ 1000", unit: "ms"
+    },
+    Figure {
+        key: "l99_key_event", what: "L99: a keystroke to next paint", before: "—", target: "≤ 100", unit: "ms"
+    },
+    Figure {
+        key: "wasm_20mb_rate", what: "wasm planner, 20 MB program", before: "62", target: "≥ 100", unit: "MB/s"
+    },
+    Figure {
+        key: "native_g01_10mb",
+        what: "native planner, 10 MB G01 program",
+        before: "≈ 150",
+        target: "≥ 250",
+        unit: "MB/s",
+    },
+    Figure {
+        key: "native_mixed_20mb",
+        what: "native planner, 20 MB mixed program",
+        before: "—",
+        target: "—",
+        unit: "MB/s",
+    },
+    Figure { key: "wasm_gz_kib", what: "wasm, gzip -9", before: "—", target: "≤ 195 (200 KB)", unit: "KiB" },
+];
+
+/// Runs `program args` in `dir`, printing its output but for `FIG name value`
+/// and `RATE name value` lines, which are returned.
+fn figures_of(
+    program: &str,
+    args: &[&str],
+    dir: &std::path::Path,
+    env: &[(&str, String)],
+) -> Result<Vec<(String, f64)>> {
+    let mut cmd = Command::new(program);
+    cmd.args(args).current_dir(dir).stderr(Stdio::inherit());
+    for (k, v) in env {
+        cmd.env(k, v);
+    }
+    let out = cmd.output().map_err(|e| format!("cannot run {program}: {e}"))?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let mut figs = Vec::new();
+    for line in text.lines() {
+        let rest = line.strip_prefix("FIG ").or_else(|| line.strip_prefix("RATE "));
+        match rest.and_then(|r| r.split_once(' ')) {
+            Some((k, v)) => figs.push((k.to_string(), v.trim().parse().unwrap_or(f64::NAN))),
+            None => println!("{line}"),
+        }
+    }
+    if !out.status.success() {
+        return Err(format!("{program} {} failed ({})", args.join(" "), out.status));
+    }
+    Ok(figs)
+}
+
+/// The machine: CPU model and count, memory, and the date.
+fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
+    let mem = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|s| s.lines().next().and_then(|l| l.split_whitespace().nth(1)).and_then(|k| k.parse::<f64>().ok()))
+        .map_or(String::new(), |k| format!(", {:.0} GiB", k / 1024.0 / 1024.0));
+    let date = install::output("date", &["-u", "+%Y-%m-%d %H:%M UTC"]).unwrap_or_default();
+    format!("{} · {cpu} × {cores}{mem}", date.trim())
+}
+
+/// `cargo xtask bench`.
+pub fn bench(args: &[String]) -> Result {
+    if let Some(a) = args.first() {
+        return Err(format!("bench: unknown option '{a}' (usage: cargo xtask bench)"));
+    }
+    let root = install::root();
+    let mut figs: BTreeMap<String, f64> = BTreeMap::new();
+    eprintln!("\n== native throughput and memory");
+    let native = figures_of("cargo", &["bench", "--bench", "throughput"], &root, &[])?;
+    let rates: Vec<String> = native.iter().map(|(k, v)| format!("{k}={v}")).collect();
+    for (k, v) in &native {
+        figs.insert(format!("native_{}", k.trim_end_matches(".nc").replace('-', "_")), *v);
+    }
+    eprintln!("\n== wasm build and size");
+    let site = root.join("target").join("site-bench");
+    web::build_site(true, &site)?;
+    let wasm = site.join("screwcut_bg.wasm");
+    let raw = std::fs::metadata(&wasm).map_err(|e| format!("{}: {e}", wasm.display()))?.len();
+    let gz = Command::new("gzip")
+        .args(["-9", "-c"])
+        .arg(&wasm)
+        .output()
+        .map_err(|e| format!("cannot run gzip: {e}"))?
+        .stdout
+        .len();
+    println!("wasm size: {raw} bytes raw, {gz} bytes gzipped (-9) ({:.1} KiB)", gz as f64 / 1024.0);
+    figs.insert("wasm_gz_kib".into(), gz as f64 / 1024.0);
+    let bench = root.join("bench");
+    install::ensure_npm(&bench)?;
+    let programs = root.join("target").join("bench");
+    let p = |name: &str| programs.join(name).display().to_string();
+    let pkg = root.join("www").join("pkg").display().to_string();
+    eprintln!("\n== gcode-toolpath side by side (Node)");
+    println!("gcode-toolpath (cncjs) and screwcut on the same files:");
+    figures_of(
+        "node",
+        &["toolpath.mjs", &pkg, &p("mixed-1mb.nc"), &p("mixed-20mb.nc")],
+        &bench,
+        &[("NATIVE_RATES", rates.join(","))],
+    )?;
+    eprintln!("\n== headless Chromium");
+    install::ensure_chromium()?;
+    let chromium = install::output("chromium", &["--version"]).unwrap_or_default();
+    println!("headless Chromium ({}):", chromium.trim());
+    let browser =
+        figures_of("node", &["browser.mjs", &site.display().to_string(), &pkg, &p("mixed-20mb.nc")], &bench, &[])?;
+    figs.extend(browser);
+    summary(&figs, chromium.trim());
+    Ok(())
+}
+
+/// The table of figures: before, now, target.
+fn summary(figs: &BTreeMap<String, f64>, chromium: &str) {
+    let mut t = Table::new();
+    t.load_style(UTF8_FULL_CONDENSED);
+    t.set_header(["figure", "before (2026-11)", "now", "target", "unit"]);
+    for f in FIGURES {
+        let now = figs.get(f.key).map_or("not measured".to_string(), |v| {
+            if v.is_nan() {
+                "n/a".into()
+            } else if f.unit == "ms" && *v < 16.0 && f.key.contains("event") {
+                "< 16".into()
+            } else {
+                format!("{v:.1}")
+            }
+        });
+        t.add_row([f.what, f.before, &now, f.target, f.unit]);
+    }
+    println!("\n{}  ({chromium})\n{t}", machine());
+    println!(
+        "(Event Timing reports only events of 16 ms and more: \"< 16\" is a keystroke painted within one 60 Hz frame.)"
+    );
+}
