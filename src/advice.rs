@@ -142,12 +142,19 @@ fn finish_one(
         None => diags.push_with(
             Code::CrestAssumed,
             span,
-            || format!(
-                "the program does not turn this thread's {} diameter: crest assumed at {} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; the textbook's δ1/δ2 are not checked",
-                if t.internal { "minor" } else { "major" },
-                fmt(t.crest),
-                fmt(s.get(P::DepthFactor))
-            ),
+            || {
+                // A face thread's crest is a face (a Z), not a diameter.
+                let (what, axis) = match (t.long_axis, t.internal) {
+                    (crate::thread::Axis::X, _) => ("face the crest of this face thread", "Z"),
+                    (_, true) => ("turn this thread's minor diameter", "X"),
+                    (_, false) => ("turn this thread's major diameter", "X"),
+                };
+                format!(
+                    "the program does not {what}: crest assumed at {axis}{} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; the textbook's δ1/δ2 are not checked",
+                    fmt(t.crest),
+                    fmt(s.get(P::DepthFactor))
+                )
+            },
         ),
         Some(_) => {
             let programmed = 2.0 * max_depth * mm;

@@ -162,7 +162,7 @@ const CASES: &[Case] = &[
         1,
         "is not a thread designation",
     ),
-    (Code::CrestAssumed, G, &[], include_str!("../examples/o1006.nc"), 5, 1, "crest assumed at 48"),
+    (Code::CrestAssumed, G, &[], include_str!("../examples/o1006.nc"), 5, 1, "crest assumed at X48"),
     (
         Code::DepthVsStandard,
         G,
@@ -371,4 +371,19 @@ fn internal_thread_in_a_turned_bore() {
     // Started at Z3 instead, δ1 = 1 warns.
     let plan = gsk(&src.replace("Z7", "Z3"));
     assert!(one(&plan, Code::Clearance).message.contains("δ1 = 1"));
+}
+
+/// A face thread's crest is a face: its assumed crest is a Z, not a diameter.
+#[test]
+fn a_face_threads_assumed_crest_is_a_z() {
+    let text = "G00 X60 Z2\nZ-0.5\nG32 X10 F2\nG00 Z2\nX60\nZ-1.0\nG32 X10 F2\nG00 Z2\nX60\n";
+    let plan = screwcut::plan(text, &screwcut::Settings::new(Dialect::Gsk980tdc));
+    assert_eq!(plan.threads.len(), 1);
+    let d = plan.diagnostics.iter().find(|d| d.code == Code::CrestAssumed).expect("crest-assumed");
+    assert!(
+        d.message.contains("face the crest of this face thread") && d.message.contains("crest assumed at Z"),
+        "{}",
+        d.message
+    );
+    assert!(!d.message.contains("diameter"), "{}", d.message);
 }
