@@ -343,6 +343,7 @@ export class Library {
     this.dialects = dialects;
     this.limits = limits;
     this.current = null; // {id, name, created, kept: bool, why}
+    this.unkept = new Map(); // id → entry the full list could not take: kept for this tab, saved once there is room
     this.timer = 0;
     this.$ = (id) => document.getElementById(id);
     this.bind();
@@ -429,9 +430,9 @@ export class Library {
     return { dialect: e.dialect, settings: e.settings, program: e.program };
   }
 
-  /** Makes kept entry `e` the open one; returns its state, checked. */
+  /** Makes entry `e` (kept, or held for this tab) the open one; returns its state, checked. */
   enter(e) {
-    this.current = { id: e.id, name: e.name, created: e.created, kept: true };
+    this.current = { id: e.id, name: programName(e.program), created: e.created, kept: !this.unkept.has(e.id), why: this.unkept.has(e.id) ? 'full' : null };
     this.programs.setCurrent(e.id);
     this.render();
     let dialect = knownDialect(e.dialect, this.dialects);
@@ -445,7 +446,7 @@ export class Library {
   async openId(id) {
     if (this.current && id === this.current.id) return;
     this.saveNow();
-    const e = this.programs.get(id);
+    const e = this.unkept.get(id) || this.programs.get(id);
     if (e) await this.show(this.enter(e));
     else this.render();
   }
@@ -462,7 +463,9 @@ export class Library {
     if (!cur) return;
     this.saveNow();
     const gone = cur.kept ? this.programs.remove(cur.id) : { ...this.getState(), id: cur.id, name: cur.name, created: cur.created, updated: Date.now() };
+    this.unkept.delete(cur.id);
     this.current = null;
+    this.retryUnkept();
     const next = this.programs.list()[0];
     const s = this.getState();
     await this.show(next ? this.enter(this.programs.get(next.id)) : this.create({ dialect: s.dialect, settings: s.settings, program: '' }));
@@ -506,10 +509,23 @@ export class Library {
     this.keep({ id: c.id, dialect: s.dialect, settings: s.settings, program: s.program, created: c.created, updated: Date.now() });
   }
 
+  /** Saves the programs the list could not take, now that there may be room. */
+  retryUnkept() {
+    for (const e of [...this.unkept.values()]) {
+      if (this.current && e.id === this.current.id) continue;
+      if (this.programs.put(e).ok) {
+        this.unkept.delete(e.id);
+        this.notify(tr('kept_again', { name: shownName(e) }), { kind: 'info' });
+      }
+    }
+  }
+
   /** Writes entry `e` (the open one) and says when it cannot be kept, or is kept again. */
   keep(e) {
     const c = this.current;
     const r = this.programs.put(e);
+    if (r.ok) this.unkept.delete(e.id);
+    else this.unkept.set(e.id, { ...e, name: programName(e.program) });
     if (c && c.id === e.id) {
       const was = c.kept;
       c.name = programName(e.program);
@@ -566,7 +582,14 @@ export class Library {
       const name = c && i.id === c.id ? shownName(c) : shownName(i);
       return `<option value="${esc(i.id)}" title="${esc(`${name} · ${titleOf(i.dialect, this.dialects)} · ${stamp(i.updated)}`)}">${esc(name)}</option>`;
     });
-    if (c && !list.some((i) => i.id === c.id)) options.unshift(`<option value="${esc(c.id)}">${esc(`${shownName(c)} (${tr('not_kept')})`)}</option>`);
+    const listed = new Set(list.map((i) => i.id));
+    for (const e of [...this.unkept.values()].reverse()) {
+      if (listed.has(e.id)) continue;
+      const name = c && e.id === c.id ? shownName(c) : shownName(e);
+      options.unshift(`<option value="${esc(e.id)}">${esc(`${name} (${tr('not_kept')})`)}</option>`);
+      listed.add(e.id);
+    }
+    if (c && !listed.has(c.id)) options.unshift(`<option value="${esc(c.id)}">${esc(`${shownName(c)} (${tr('not_kept')})`)}</option>`);
     const html = options.join('');
     if (sel.dataset.html !== html) {
       sel.innerHTML = html;
@@ -592,12 +615,14 @@ export class Library {
 
   /**
    * Shows a message above the page (never blocking): `kind` info, warning
-   * or error; an optional action button; info goes by itself after
-   * `timeout` ms, warnings and errors stay until closed.
+   * or error; an optional action button. Info goes by itself after
+   * `timeout` ms (12 s), a warning after 30 s; errors and `sticky` ones
+   * stay until closed. The same text twice is shown once.
    */
-  notify(text, { kind = 'info', action = null, sticky = false, timeout = 12_000 } = {}) {
+  notify(text, { kind = 'info', action = null, sticky = false, timeout = kind === 'warning' ? 30_000 : 12_000 } = {}) {
     const box = this.$('notices');
     if (!box) return null;
+    for (const old of box.querySelectorAll('.notice')) if (old.querySelector('.text').textContent === text) old.remove();
     const colours = { info: '#eff6ff;#93c5fd', warning: '#fffbeb;#f59e0b', error: '#fef2f2;#f87171' }[kind].split(';');
     const el = document.createElement('div');
     el.className = `notice ${kind}`;
@@ -627,7 +652,7 @@ export class Library {
     el.append(x);
     box.append(el);
     while (box.children.length > 6) box.firstElementChild.remove();
-    if (kind === 'info' && !sticky) setTimeout(() => this.dismiss(el), timeout);
+    if (kind !== 'error' && !sticky) setTimeout(() => this.dismiss(el), timeout);
     return el;
   }
 
