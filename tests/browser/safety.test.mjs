@@ -196,8 +196,10 @@ try {
   };
   const floodLink = zfrag(flood);
   console.log(`the flood link: ${floodLink.length.toLocaleString('en')} characters, ${flood.program.length.toLocaleString('en')} characters of program`);
+  const tFlood = Date.now();
   await openLink(page, floodLink);
   await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.alarms > 0, null, { timeout: 60_000 });
+  const floodMs = Date.now() - tFlood;
   s = await app(page);
   const got = s.settings.gsk980tdc || {};
   check('limits.diagnostics=1000000 from a link is clamped to its default, 1000', got['limits.diagnostics'] === '1000', JSON.stringify(got));
@@ -214,6 +216,8 @@ try {
   await page.waitForFunction((n) => window.__screwcut.updates.length > n, u0, { timeout: 60_000 }).catch(() => {});
   s = await app(page);
   check('… and keystrokes in it re-plan', s.updates > u0 && s.errors.length === 0, JSON.stringify({ before: u0, after: s.updates, errors: s.errors }));
+  const lastPlan = await page.evaluate(() => window.__screwcut.updates.at(-1));
+  console.log(`the flood link: planned and listed ${floodMs} ms after navigation; a keystroke re-planned in ${lastPlan.plan.toFixed(0)} ms in the worker (printed, not asserted)`);
 
   // ---- hostile: an unknown controller, followed in a tab that has the app open ----
   await page.goto(base);
