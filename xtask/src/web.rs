@@ -597,6 +597,30 @@ mod tests {
         }
     }
 
+    /// The app and the element check a dialect name against the planner's
+    /// list in JavaScript (www/src/fragment.js), so they must know every
+    /// spelling the planner accepts (src/dialect.rs `NAMES`).
+    #[test]
+    fn the_front_end_knows_every_dialect_spelling() {
+        let names = read(&root().join("src").join("dialect.rs")).unwrap();
+        let js = read(&root().join("www").join("src").join("fragment.js")).unwrap();
+        let table = names.split("const NAMES").nth(1).expect("src/dialect.rs has NAMES");
+        let table = &table[..table.find("];").expect("NAMES ends")];
+        let mut seen = 0;
+        for row in table.lines().map(str::trim).filter(|l| l.starts_with("(\"")) {
+            let quoted: Vec<&str> = row.split('"').skip(1).step_by(2).collect();
+            let (name, aliases) = (quoted[0], &quoted[2..]);
+            for alias in aliases {
+                assert!(
+                    js.contains(&format!("{alias}: '{name}'")),
+                    "www/src/fragment.js lacks the spelling {alias} of {name}"
+                );
+                seen += 1;
+            }
+        }
+        assert!(seen >= 6, "read {seen} spellings from src/dialect.rs");
+    }
+
     #[test]
     fn mime_types() {
         assert_eq!(mime(Path::new("a/screwcut_bg.wasm")), "application/wasm");
