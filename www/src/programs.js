@@ -396,7 +396,6 @@ export class Library {
       // Without the table no limit can be checked: links keep the defaults.
       for (const d of Object.keys(state.settings)) for (const k of Object.keys(state.settings[d])) if (k.trim().toLowerCase().startsWith('limits.')) delete state.settings[d][k];
     }
-    this.lastLink = { notes, clamped };
     if (notes.length) this.notify(tr('link_changed', { what: notes.join('; ') }), { kind: 'warning' });
     if (clamped.length) {
       const list = clamped.map((c) => `${c.name} ${c.asked} → ${c.value}`).join(', ');
