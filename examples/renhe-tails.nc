@@ -1,4 +1,4 @@
-(Renhe: G30 spiral tail U10 W2, then a metric G33 and an inch G32)
+(Renhe: G30 spiral tail U10 W2 on a metric G33, then G30 alone: the standard tail on a second G33)
 G00 X50 Z10
 G30 U10 W2
 G00 U-16

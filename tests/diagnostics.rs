@@ -302,6 +302,19 @@ fn every_code_has_a_case() {
     }
 }
 
+/// Zero needs no decimal point: X0/Z0/U0/W0 mean 0 in millimetres and in
+/// increments alike, so Fanuc (3401#0 = 0) does not warn about them; X75
+/// beside them still does.
+#[test]
+fn zero_without_a_decimal_point_is_not_a_warning() {
+    let plan = plan_with("G00 X0 Z0\nG00 U0 W0\nG00 X-0 Z75\n", F, &[]);
+    let lines: Vec<u32> = plan.with_code(Code::NoDecimalPoint).map(|d| d.line).collect();
+    assert_eq!(lines, vec![3], "only Z75 warns: {lines:?}");
+    let d = at(&plan, Code::NoDecimalPoint, 3, 9);
+    assert!(d.message.contains("0.075 mm"), "{}", d.message);
+    assert!(!plan.diagnostics.iter().any(|d| d.message.contains("means 0 mm")));
+}
+
 /// The outline makes the crest known: no assumption note, real first infeed.
 #[test]
 fn crest_from_outline() {

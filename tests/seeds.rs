@@ -109,8 +109,8 @@ fn seeds_under_fanuc() {
     no_alarm(&plan);
     let t = &plan.threads[0];
     assert_eq!(t.passes.len(), 5);
-    // N10 G50 X0 Z0: no decimal point, 0 either way, but the words still warn.
-    assert_eq!(plan.with_code(Code::NoDecimalPoint).filter(|d| d.line == 2).count(), 2);
+    // N10 G50 X0 Z0: no decimal point, but 0 is 0 either way: no warning.
+    assert_eq!(plan.with_code(Code::NoDecimalPoint).filter(|d| d.line == 2).count(), 0);
     let plan = plan_with(O0009, Dialect::Fanuc0i, &[]);
     let d = at(&plan, Code::NoDecimalPoint, 2, 14);
     assert!(d.message.contains("0.003 mm"), "{}", d.message);

@@ -144,8 +144,9 @@ impl Reader<'_> {
     }
 
     /// Reads a length word in program units, by the controller's decimal-point rule.
+    /// Zero is zero in millimetres, inches and increments alike: no warning.
     pub fn length(&mut self, w: &Word) -> f64 {
-        if !self.increments || w.num.has_point {
+        if !self.increments || w.num.has_point || w.value() == 0.0 {
             return w.value();
         }
         let inch = self.m.inch;

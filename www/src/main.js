@@ -6,7 +6,8 @@
 
 import { createEditor } from './editor.js';
 import { t, label, setLang, getLang } from './i18n.js';
-import { load, save, encodeFragment, decodeFragment } from './share.js';
+import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
+import { Library } from './programs.js';
 import { num, esc } from './table.js';
 import { startEngine } from './client.js';
 import { VirtualRows, passHead, passRow, passLines, diagnosticRow } from './lists.js';
@@ -54,10 +55,43 @@ function settingsText() {
     .join('\n');
 }
 
-let saveTimer = 0;
+// ---- the programs kept in the browser (programs.js) ----
+
+let library = null;
+
+/** Keeps the open program (and the language) once typing pauses. */
 function persist() {
-  clearTimeout(saveTimer);
-  saveTimer = setTimeout(() => save(state), 300);
+  if (!library) return;
+  library.savePrefs({ lang: state.lang });
+  library.saveSoon();
+}
+
+/** Puts a program (another entry, a link, an example, a new one) in the editor and plans it. */
+async function showProgram(s) {
+  state.dialect = knownDialect(s.dialect, dialects) || DEFAULT_DIALECT;
+  state.settings = s.settings && typeof s.settings === 'object' ? s.settings : {};
+  state.program = s.program;
+  $('dialect').value = state.dialect;
+  makeEditor(state.program);
+  await buildSettings();
+  replan();
+}
+
+/**
+ * A new editor for each program shown: undo never reaches into the
+ * program that was open before.
+ */
+function makeEditor(doc) {
+  if (editor) editor.view.destroy();
+  editor = createEditor($('editor'), { doc, onChange: replan, onCursor });
+  editor.view.dom.addEventListener('keydown', (e) => (pendingInput = e.timeStamp), true);
+  editor.view.dom.addEventListener(
+    'beforeinput',
+    (e) => {
+      if (pendingInput === null) pendingInput = e.timeStamp;
+    },
+    true,
+  );
 }
 
 // ---- planning ----
@@ -375,11 +409,11 @@ function renderExamples() {
     list.map((e, i) => `<option value="${i}">${esc(zh && e.title_zh ? e.title_zh : e.title)}</option>`).join('');
 }
 
+/** Opens an example as a program of its own (the open one stays in the Programs menu). */
 async function openExample(entry) {
   const res = await fetch(`examples/${encodeURIComponent(entry.file)}`);
   const text = await res.text();
-  if (entry.dialect) await setDialect(entry.dialect, false);
-  editor.setText(text);
+  await library.openNew({ dialect: entry.dialect || state.dialect, settings: state.settings, program: text });
 }
 
 async function setDialect(name, plan = true) {
@@ -451,23 +485,27 @@ async function main() {
   probe.text = () => (editor ? editor.text() : null);
   probe.editor = () => editor;
   probe.dialect = () => state.dialect;
-  const linked = decodeFragment(location.hash);
-  const saved = linked || load();
-  if (saved) {
-    if (typeof saved.dialect === 'string') state.dialect = saved.dialect;
-    if (saved.settings && typeof saved.settings === 'object') state.settings = saved.settings;
-    if (typeof saved.program === 'string') state.program = saved.program;
-    if (saved.lang === 'zh' || saved.lang === 'en') state.lang = saved.lang;
-  } else if (navigator.language && navigator.language.startsWith('zh')) {
-    state.lang = 'zh';
-  }
-  if (!dialects.some((d) => d.name === state.dialect)) state.dialect = 'gsk980tdc';
-  if (linked) {
-    // The link's program becomes the kept one; a reload shows later edits, not the link again.
-    save(state);
-    history.replaceState(null, '', location.pathname + location.search);
-  }
+  // A link opens as a new program (its fragment is then taken off the
+  // address, so a reload shows later edits); else the program this tab had open.
+  let limitRows = null;
+  library = new Library({
+    getState: () => ({ dialect: state.dialect, settings: state.settings, program: state.program }),
+    show: showProgram,
+    dialects,
+    limits: async () => (limitRows ||= (await client.request('table', { what: 'settings', dialect: DEFAULT_DIALECT })).filter((s) => s.name.startsWith('limits.'))),
+  });
+  probe.library = library;
+  const prefs = library.prefs();
+  if (prefs.lang === 'zh' || prefs.lang === 'en') state.lang = prefs.lang;
+  else if (navigator.language && navigator.language.startsWith('zh')) state.lang = 'zh';
   setLang(state.lang);
+  const saved = await library.start(location.hash);
+  if (saved) {
+    state.dialect = saved.dialect;
+    state.settings = saved.settings;
+    state.program = saved.program;
+  }
+  library.render();
   client.send({ type: 'lang', lang: state.lang });
   $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
   $('dialect').innerHTML = dialects.map((d) => `<option value="${d.name}">${esc(d.title)}</option>`).join('');
@@ -489,15 +527,7 @@ async function main() {
   });
   passRows.order = [];
 
-  editor = createEditor($('editor'), { doc: state.program, onChange: replan, onCursor });
-  editor.view.dom.addEventListener('keydown', (e) => (pendingInput = e.timeStamp), true);
-  editor.view.dom.addEventListener(
-    'beforeinput',
-    (e) => {
-      if (pendingInput === null) pendingInput = e.timeStamp;
-    },
-    true,
-  );
+  makeEditor(state.program);
 
   const list = await loadExamples();
   if (!saved) {
@@ -597,16 +627,8 @@ function finishSetup() {
     severities = new Set(severities);
     if (result) renderDiagnostics(result.diagnostics);
   });
-  window.addEventListener('hashchange', async () => {
-    const s = decodeFragment(location.hash);
-    if (s && typeof s.program === 'string') {
-      if (typeof s.dialect === 'string') await setDialect(s.dialect, false);
-      if (s.settings) state.settings = s.settings;
-      await buildSettings();
-      editor.setText(s.program);
-      history.replaceState(null, '', location.pathname + location.search);
-    }
-  });
+  // A link followed while the app is open: a new program, checked as at start.
+  window.addEventListener('hashchange', () => library.openLink(location.hash));
 }
 
 main().catch((e) => {

@@ -8,7 +8,8 @@
 //! `screwcut_bg.wasm` (the core, size-optimised by the binaryen pinned in
 //! `www/package.json`; shared by both bundles) and `examples/` (every file
 //! listed in `examples/index.json`). `cargo xtask dist` adds `element/`, the element
-//! as a folder a documentation site can vendor.
+//! as a folder a documentation site can vendor: the element, and the app its
+//! "Open in editor" link opens by default.
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::{TcpListener, TcpStream};
@@ -70,19 +71,29 @@ pub fn dist(args: &[String]) -> Result {
 /// built site `site`, a package.json and the README of `www/element/`.
 pub const ELEMENT_FILES: [&str; 4] = ["screwcut-preview.js", "screwcut_bg.wasm", "package.json", "README.md"];
 
+/// The app, copied from the built site into the element's folder with its
+/// `examples/`: the "Open in editor" link opens the app next to the script
+/// by default, so the link works wherever the folder is copied (the app
+/// shares the element's wasm).
+pub const APP_FILES: [&str; 5] = ["index.html", "app.js", "worker.js", "style.css", "favicon.svg"];
+
 /// Writes `dir` (emptied first) as the vendorable element package, from the built site `site`.
 fn write_element_package(site: &Path, dir: &Path) -> Result {
     if dir.exists() {
         std::fs::remove_dir_all(dir).map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
     }
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    for f in &ELEMENT_FILES[..2] {
+    std::fs::create_dir_all(dir.join("examples")).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    for f in ELEMENT_FILES[..2].iter().chain(&APP_FILES) {
         copy(&site.join(f), &dir.join(f))?;
+    }
+    let index = read(&site.join("examples").join("index.json"))?;
+    for f in example_files(&index)?.iter().map(String::as_str).chain(["index.json"]) {
+        copy(&site.join("examples").join(f), &dir.join("examples").join(f))?;
     }
     let version = crate_version(&read(&root().join("Cargo.toml"))?)?;
     write(&dir.join("package.json"), &element_package_json(&version))?;
     copy(&root().join("www").join("element").join("README.md"), &dir.join("README.md"))?;
-    for f in &ELEMENT_FILES[..2] {
+    for f in ELEMENT_FILES[..2].iter().chain(&APP_FILES[1..3]) {
         let size = std::fs::metadata(dir.join(f)).map(|m| m.len()).unwrap_or(0);
         eprintln!("element: {f} {} KiB", size.div_ceil(1024));
     }
@@ -116,7 +127,7 @@ fn element_package_json(version: &str) -> String {
     ".": "./screwcut-preview.js",
     "./screwcut_bg.wasm": "./screwcut_bg.wasm"
   }},
-  "files": ["screwcut-preview.js", "screwcut_bg.wasm", "README.md"],
+  "files": ["screwcut-preview.js", "screwcut_bg.wasm", "README.md", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "examples/"],
   "sideEffects": true,
   "keywords": ["cnc", "lathe", "g-code", "thread", "web-component", "custom-element", "wasm"]
 }}
@@ -200,17 +211,20 @@ fn passed_count(line: &str) -> Option<u32> {
     counts.split_once(" passed")?.0.trim().parse().ok()
 }
 
-/// Builds the site, serves it on a free local port and runs the Playwright
-/// tests in `tests/browser/` against it with the system Chromium: the app
+/// Builds the site (with `element/`, as `cargo xtask dist` writes it),
+/// serves it on a free local port and runs the Playwright tests in
+/// `tests/browser/` against it with the system Chromium: the app
 /// (`test.mjs`), its engine in a worker and on the page and a program too
-/// big to draw whole (`engine.test.mjs`), then the documentation page of
-/// embedded previews (`docs.test.mjs`); fails when any fails.
+/// big to draw whole (`engine.test.mjs`), the documentation page of
+/// embedded previews (`docs.test.mjs`), then hostile links, the program
+/// list and the element's guards (`safety.test.mjs`); fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
     if let WasmOpt::Skipped(why) = build_site(true, &out)? {
         return Err(format!("the wasm under test was not size-optimised as a release is ({why})"));
     }
+    write_element_package(&out, &out.join("element"))?;
     let dir = root().join("tests").join("browser");
     ensure_npm(&dir)?;
     let listener = TcpListener::bind(("127.0.0.1", 0)).map_err(|e| format!("cannot listen on 127.0.0.1: {e}"))?;
@@ -223,7 +237,8 @@ pub fn browser_tests() -> Result {
     let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
     let engine = run("node", &["engine.test.mjs", &url], Some(&dir));
     let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
-    app.and(engine).and(docs)
+    let safety = run("node", &["safety.test.mjs", &url], Some(&dir));
+    app.and(engine).and(docs).and(safety)
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
@@ -575,6 +590,38 @@ mod tests {
         assert!(json.contains(&format!("\"version\": \"{real}\"")));
         assert!(json.contains("\"main\": \"screwcut-preview.js\""));
         assert!(root().join("www").join("element").join("README.md").exists());
+        // The app the "Open in editor" link opens by default ships in the folder and its package.
+        for f in APP_FILES {
+            assert!(json.contains(&format!("\"{f}\"")), "package.json lacks {f}");
+        }
+        assert!(json.contains("\"examples/\""));
+        for f in ["index.html", "style.css", "favicon.svg"] {
+            assert!(root().join("www").join("static").join(f).exists(), "www/static/{f}");
+        }
+    }
+
+    /// The app and the element check a dialect name against the planner's
+    /// list in JavaScript (www/src/fragment.js), so they must know every
+    /// spelling the planner accepts (src/dialect.rs `NAMES`).
+    #[test]
+    fn the_front_end_knows_every_dialect_spelling() {
+        let names = read(&root().join("src").join("dialect.rs")).unwrap();
+        let js = read(&root().join("www").join("src").join("fragment.js")).unwrap();
+        let table = names.split("const NAMES").nth(1).expect("src/dialect.rs has NAMES");
+        let table = &table[..table.find("];").expect("NAMES ends")];
+        let mut seen = 0;
+        for row in table.lines().map(str::trim).filter(|l| l.starts_with("(\"")) {
+            let quoted: Vec<&str> = row.split('"').skip(1).step_by(2).collect();
+            let (name, aliases) = (quoted[0], &quoted[2..]);
+            for alias in aliases {
+                assert!(
+                    js.contains(&format!("{alias}: '{name}'")),
+                    "www/src/fragment.js lacks the spelling {alias} of {name}"
+                );
+                seen += 1;
+            }
+        }
+        assert!(seen >= 6, "read {seen} spellings from src/dialect.rs");
     }
 
     #[test]

@@ -26,15 +26,52 @@ export function parseThread(attr) {
 
 /** `settings="No.058=55; x_mode=radius"` → `{name: value}` (lines or `;` separate them). */
 export function parseSettings(attr) {
-  const out = {};
+  return readSettings(attr).values;
+}
+
+/**
+ * `settings="..."` → `{values: {name: value}, problems: [{setting, message}]}`:
+ * an entry that is not NAME=VALUE is a problem to show, not dropped silently
+ * (the planner reports unknown names and bad values: `settingErrors`).
+ */
+export function readSettings(attr) {
+  const values = {};
+  const problems = [];
   for (const part of String(attr || '').split(/[;\n]/)) {
-    const eq = part.indexOf('=');
-    if (eq <= 0) continue;
-    const name = part.slice(0, eq).trim();
-    const value = part.slice(eq + 1).trim();
-    if (name) out[name] = value;
+    const text = part.trim();
+    if (!text) continue;
+    const eq = text.indexOf('=');
+    const name = eq > 0 ? text.slice(0, eq).trim() : '';
+    if (!name) {
+      problems.push({ setting: text.slice(0, 40), message: `'${text.slice(0, 40)}' is not NAME=VALUE: ignored` });
+      continue;
+    }
+    values[name] = text.slice(eq + 1).trim();
   }
-  return out;
+  return { values, problems };
+}
+
+/** Schemes a link or a fetch of the element may use. */
+const SAFE = new Set(['http:', 'https:']);
+
+/**
+ * `value` (an `app`, `src` or meta URL) resolved against `base`, if it is
+ * http(s) or relative (a relative URL keeps the page's scheme), else null:
+ * `javascript:`, `data:`, `blob:` and the like are never followed.
+ */
+export function safeUrl(value, base) {
+  if (typeof value !== 'string' || !value.trim()) return null;
+  // What the URL parser ignores: tabs and line breaks anywhere, controls and spaces at the ends.
+  const plain = value.replace(/[\t\n\r]/g, '').replace(/^[\u0000-\u0020]+|[\u0000-\u0020]+$/g, '');
+  let url;
+  try {
+    url = new URL(value, base);
+  } catch {
+    return null;
+  }
+  if (SAFE.has(url.protocol)) return url;
+  const relative = !/^[a-z][a-z0-9+.-]*:/i.test(plain);
+  return relative && url.protocol === new URL(base).protocol ? url : null;
 }
 
 /** `{name: value}` as the planner's `NAME=VALUE` lines. */

@@ -14,7 +14,11 @@
 // of the text content), `editable` (a plain editor that re-plans as you
 // type; without it the program is listed read-only, unless `hide-code`), `app` (the full app the "Open in editor" link goes to; default: a
 // <meta name="screwcut-app" content="..."> of the page, else the app next to
-// this script), `lang` (en, zh). Every element on a page shares one wasm
+// this script; only http(s) and relative URLs), `lang` (en, zh). `src` is
+// fetched without credentials, at most 1 MiB, within 15 s. Whatever the
+// element cannot use (an unknown dialect, a settings entry the planner
+// refuses, an app URL that is not http(s)) is listed under the drawing and
+// in `problems`. Every element on a page shares one wasm
 // instance, loaded when the first element comes into view, and plans in a
 // session of its own; each element plans and draws when it is scrolled near. Properties: `program` (get/set),
 // `result` (the planner's last answer), `start()`. Event `screwcut-plan`
@@ -25,11 +29,11 @@ import { bindCanvas } from '../input.js';
 import { textIn, labelIn } from '../i18n.js';
 import { esc, num } from '../table.js';
 import { VirtualRows, passHead, passRow, passObjects } from '../lists.js';
-import { jsonFragment } from '../fragment.js';
-import { HERE, loadCore, startWhenVisible, forget } from './core.js';
+import { jsonFragment, knownDialect, DEFAULT_DIALECT } from '../fragment.js';
+import { HERE, loadCore, startWhenVisible, forget, fetchProgram } from './core.js';
 import { HeldParts } from '../parts.js';
 import { STYLE } from './style.js';
-import { parseViews, parseHeight, parseThread, parseSettings, settingsLines, dedent } from './attrs.js';
+import { parseViews, parseHeight, parseThread, readSettings, settingsLines, dedent, safeUrl } from './attrs.js';
 
 /** Most diagnostics listed under an embedded drawing. */
 const MAX_LISTED = 6;
@@ -52,6 +56,9 @@ export class ScrewcutPreview extends HTMLElement {
     this._queued = false;
     this._hover = null;
     this._held = new HeldParts(); // parts of the planner's answers, by key
+    this._diagList = []; // the last plan's diagnostics
+    this._dialectProblem = null;
+    this._appProblem = null;
   }
 
   connectedCallback() {
@@ -98,6 +105,21 @@ export class ScrewcutPreview extends HTMLElement {
   /** The planner's last answer (see `update` in src/wasm.rs), or null. */
   get result() {
     return this._result;
+  }
+
+  /**
+   * What the element could not use, as `[{attribute, message}]`: a
+   * `dialect` it does not know, `settings` entries that are not NAME=VALUE
+   * or that the planner refused, an `app` URL that is not http(s) or
+   * relative. Listed under the drawing too.
+   */
+  get problems() {
+    const out = [];
+    if (this._dialectProblem) out.push({ attribute: 'dialect', message: this._dialectProblem });
+    for (const p of readSettings(this.getAttribute('settings')).problems) out.push({ attribute: 'settings', message: p.message });
+    for (const e of (this._result && this._result.settingErrors) || []) out.push({ attribute: 'settings', message: e.message });
+    if (this._appProblem) out.push({ attribute: 'app', message: this._appProblem });
+    return out;
   }
 
   /** Starts now, without waiting to be scrolled into view. */
@@ -172,6 +194,7 @@ export class ScrewcutPreview extends HTMLElement {
       if (li && this._editor) this._gotoLine(Number(li.dataset.line));
     });
     this._updateLink();
+    this._renderDiagnostics(this._diagList);
     if (this._state === 'ready') this._makeViews();
   }
 
@@ -219,12 +242,12 @@ export class ScrewcutPreview extends HTMLElement {
     this._setState('loading');
     try {
       const src = this.getAttribute('src');
-      const fetched = src
-        ? fetch(new URL(src, document.baseURI)).then((r) => {
-            if (!r.ok) throw new Error(`${src}: ${r.status} ${r.statusText}`);
-            return r.text();
-          })
-        : null;
+      let fetched = null;
+      if (src) {
+        const url = safeUrl(src, document.baseURI);
+        if (!url) throw new Error(`src="${src.slice(0, 80)}" is not an http(s) or relative URL: not loaded`);
+        fetched = fetchProgram(url, { label: src.slice(0, 80) });
+      }
       const [core, text] = await Promise.all([loadCore(), fetched]);
       if (text !== null) this._text = text;
       this._renderListing();
@@ -250,11 +273,20 @@ export class ScrewcutPreview extends HTMLElement {
   }
 
   _settings() {
-    return parseSettings(this.getAttribute('settings'));
+    return readSettings(this.getAttribute('settings')).values;
   }
 
+  /** The `dialect` attribute as the planner spells it; an unknown one is planned as GSK980TDc and said. */
   _dialect() {
-    return (this.getAttribute('dialect') || 'gsk980tdc').trim();
+    const asked = (this.getAttribute('dialect') || '').trim();
+    this._dialectProblem = null;
+    if (!asked) return DEFAULT_DIALECT;
+    const known = this._core && this._core.dialects;
+    if (!known) return asked;
+    const d = knownDialect(asked, known);
+    if (d) return d;
+    this._dialectProblem = `dialect="${asked.slice(0, 40)}" is not one of ${known.map((x) => x.name).join(', ')}: planned as ${DEFAULT_DIALECT}`;
+    return DEFAULT_DIALECT;
   }
 
   _plan() {
@@ -356,12 +388,18 @@ export class ScrewcutPreview extends HTMLElement {
   }
 
   _renderDiagnostics(list) {
-    const shown = (list || []).filter((d) => d.severity !== 'info');
+    this._diagList = list || [];
+    const problems = this.problems.map((p) => `<li class="warning problem" data-attribute="${esc(p.attribute)}"><b>${esc(p.attribute)}</b> ${esc(p.message)}</li>`);
+    const shown = this._diagList.filter((d) => d.severity !== 'info');
     const items = shown
       .slice(0, MAX_LISTED)
       .map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}</li>`);
     if (shown.length > MAX_LISTED) items.push(`<li>${esc(this._t('more', { n: shown.length - MAX_LISTED }))}</li>`);
-    this._diags.innerHTML = items.join('');
+    const html = problems.concat(items).join('');
+    if (this._diags.dataset.html !== html) {
+      this._diags.innerHTML = html;
+      this._diags.dataset.html = html;
+    }
   }
 
   /** Points "Open in editor" at the app, carrying the program, dialect and settings. */
@@ -371,12 +409,32 @@ export class ScrewcutPreview extends HTMLElement {
     this._link.href = this._appUrl().href + jsonFragment(state);
   }
 
+  /**
+   * The app "Open in editor" opens: `app`, else the page's
+   * `<meta name="screwcut-app">`, else the app next to this script. Only
+   * http(s) and relative URLs are used; another (`javascript:`, `data:`, …)
+   * falls back to the next choice and is listed under the drawing.
+   */
   _appUrl() {
     const attr = this.getAttribute('app');
     const meta = document.querySelector('meta[name="screwcut-app"]');
-    const base = attr || (meta && meta.content) || '';
-    const url = base ? new URL(base, document.baseURI) : new URL(HERE);
+    const content = meta && meta.getAttribute('content');
+    let problem = null;
+    let url = null;
+    for (const [what, value] of [
+      ['app', attr],
+      ['<meta name="screwcut-app">', content],
+    ]) {
+      if (url || value === null || value === undefined || !value.trim()) continue;
+      url = safeUrl(value, document.baseURI);
+      if (!url) problem ||= `${what}="${value.slice(0, 60)}" is not an http(s) or relative URL: "Open in editor" opens the default app`;
+    }
+    url ||= new URL(HERE);
     url.hash = '';
+    if (problem !== this._appProblem) {
+      this._appProblem = problem;
+      if (this._diags) this._renderDiagnostics(this._diagList);
+    }
     return url;
   }
 
