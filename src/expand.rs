@@ -84,6 +84,8 @@ struct Writer<'p> {
     /// Direction of the last X move (Renhe's run-out goes the other way).
     last_x: f64,
     owner: Vec<Option<(usize, usize, Part)>>,
+    /// The spindle speed last written (rev/min).
+    speed: Option<f64>,
 }
 
 impl<'p> Writer<'p> {
@@ -112,6 +114,7 @@ impl<'p> Writer<'p> {
             tail: Tail::Standard,
             last_x: 0.0,
             owner,
+            speed: None,
         }
     }
 
@@ -151,8 +154,31 @@ impl<'p> Writer<'p> {
         for l in self.w.preamble {
             self.line(l);
         }
-        if let Some(on) = self.w.spindle_on {
+        // The spindle is started with its speed before the first pass that has one (see `spindle`).
+        let speeds = self.plan.threads.iter().flat_map(|t| &t.passes).any(|p| p.spindle.s.is_some() && !p.spindle.css);
+        if let (Some(on), false) = (self.w.spindle_on, speeds) {
             self.line(on);
+        }
+    }
+
+    /// Before pass `p` of thread `t`: its spindle speed, when it differs from
+    /// the last written (`M03 S…`, LinuxCNC `M3 S…`). Constant surface
+    /// speed is not written (a note says so): the target's G96 words differ.
+    fn spindle(&mut self, t: usize, p: usize) {
+        let sp = &self.plan.threads[t].passes[p].spindle;
+        match sp.s {
+            Some(_) if sp.css => {
+                let note = "constant surface speed (G96) is not written: set the spindle speed before the threads".to_string();
+                if !self.notes.contains(&note) {
+                    self.notes.push(note);
+                }
+            }
+            Some(s) if self.speed != Some(s) => {
+                self.speed = Some(s);
+                let on = self.w.spindle_on.unwrap_or("M03");
+                self.line(format!("{on} S{}", crate::num::fmt(s)));
+            }
+            _ => {}
         }
     }
 
@@ -163,6 +189,11 @@ impl<'p> Writer<'p> {
         }
         let mut i = 0;
         while i < moves.len() {
+            if let Some((t, p, _)) = self.owner[i]
+                && self.plan.threads[t].passes[p].moves.all().start == i
+            {
+                self.spindle(t, p);
+            }
             match self.owner[i] {
                 Some((t, p, Part::Cut)) => {
                     let cut = self.plan.threads[t].passes[p].moves.cut.clone();

@@ -169,3 +169,17 @@ fn linuxcnc_g76_round_trips() {
     round_trip(src, L, G, keep);
     round_trip(src, L, L, keep);
 }
+
+/// The spindle speed goes with the passes: O1006 (seed 004, S300) expanded
+/// for every controller cuts in the same 28.5 s (5 × 57 mm at 2 mm × 300 rev/min).
+#[test]
+fn the_spindle_speed_is_kept() {
+    let src = plan_with(include_str!("../examples/o1006.nc"), G, &[]);
+    assert_eq!(src.threads[0].shop.cut_time_s.map(|t| (t * 10.0).round()), Some(285.0));
+    for to in [G, F, R, L] {
+        let text = expand(&src, to).program;
+        let again = plan_with(&text, to, &[]);
+        let t = again.threads[0].shop.cut_time_s.unwrap_or_else(|| panic!("{to:?}: no cutting time\n{text}"));
+        assert!((t - 28.5).abs() < 1e-6, "{to:?}: {t}\n{text}");
+    }
+}

@@ -12,6 +12,8 @@ import { num, esc } from './table.js';
 import { startEngine } from './client.js';
 import { VirtualRows, passHead, passRow, passLines, diagnosticRow } from './lists.js';
 import { DESIGNATION, renderCheck } from './check.js';
+import { SettingsPanel } from './settingspanel.js';
+import { openWizard, openExpand } from './wizard.js';
 
 const $ = (id) => document.getElementById(id);
 /** Sets an element's text unless it already reads so (a new text node means a new layout). */
@@ -31,9 +33,9 @@ const state = {
 };
 
 let client;
+let settingsPanel;
 let dialects = [];
 let editor;
-let settingsTable = [];
 let result = null; // the lists of the last answer (threads, passes as columns, diagnostics)
 let lastGood = null; // the lists of the last answer without alarm
 let thread = 0;
@@ -332,58 +334,20 @@ function onCursor(line) {
   if (!hover) client.send({ type: 'highlight', hover: null, cursor: line });
 }
 
-// ---- settings ----
+// ---- settings (settingspanel.js) ----
 
 async function buildSettings() {
-  settingsTable = await client.request('table', { what: 'settings', dialect: state.dialect });
-  const values = state.settings[state.dialect] || {};
-  const zh = getLang() === 'zh';
-  const html = settingsTable
-    .map((s) => {
-      const id = `set-${s.name.replace(/[^a-z0-9]/gi, '_')}`;
-      const v = values[s.name];
-      let input;
-      if (s.kind === 'choice') {
-        input = `<select id="${id}" data-name="${esc(s.name)}">${s.choices
-          .map((c, i) => `<option value="${esc(c)}"${(v ?? s.choices[s.default]) === c ? ' selected' : ''}>${esc(c)}${i === s.default ? ' *' : ''}</option>`)
-          .join('')}</select>`;
-      } else if (s.kind === 'bool') {
-        const on = v === undefined ? s.default !== 0 : v === '1';
-        input = `<input type="checkbox" id="${id}" data-name="${esc(s.name)}"${on ? ' checked' : ''}>`;
-      } else {
-        const step = s.kind === 'int' ? '1' : 'any';
-        input = `<input type="number" id="${id}" data-name="${esc(s.name)}" step="${step}" min="${s.min}" max="${s.max}" value="${esc(v ?? s.default)}">`;
-      }
-      const range = `${t('default')} ${num(s.default)} · ${t('range')} ${num(s.min)}…${num(s.max)}`;
-      return `<div class="setting${v !== undefined ? ' changed' : ''}" data-name="${esc(s.name)}"><label for="${id}">${esc(s.name)} ${input} <span class="unit">${esc(s.unit)}</span></label><div class="help" title="${esc(range)}">${esc(zh ? s.help_zh : s.help)} <span class="unit">(${esc(range)})</span></div><div class="err"></div></div>`;
-    })
-    .join('');
-  $('settings-form').innerHTML = html;
+  await settingsPanel.build(state.dialect, state.settings[state.dialect] || {});
 }
 
 function onSettingInput(e) {
-  const el = e.target;
-  const name = el.dataset.name;
-  if (!name) return;
-  const def = settingsTable.find((s) => s.name === name);
-  const value = el.type === 'checkbox' ? (el.checked ? '1' : '0') : el.value.trim();
-  const mine = (state.settings[state.dialect] ||= {});
-  const isDefault =
-    def && ((def.kind === 'choice' && def.choices[def.default] === value) || (def.kind !== 'choice' && value !== '' && Number(value) === def.default));
-  if (isDefault || value === '') delete mine[name];
-  else mine[name] = value;
-  el.closest('.setting').classList.toggle('changed', !isDefault && value !== '');
-  persist();
-  replan();
-}
-
-function renderSettingErrors(list) {
-  for (const el of document.querySelectorAll('.setting .err')) el.textContent = '';
-  for (const e of list || []) {
-    const row = [...document.querySelectorAll('.setting')].find((d) => d.dataset.name.toLowerCase() === e.setting.toLowerCase());
-    if (row) row.querySelector('.err').textContent = e.message;
+  if (settingsPanel.change(e.target, (state.settings[state.dialect] ||= {}))) {
+    persist();
+    replan();
   }
 }
+
+const renderSettingErrors = (list) => settingsPanel.showErrors(list);
 
 // ---- examples, sharing, export ----
 
@@ -479,6 +443,7 @@ async function main() {
     onMessage,
   });
   client = started.client;
+  settingsPanel = new SettingsPanel($('settings-form'), { table: (dialect) => client.request('table', { what: 'settings', dialect }), t, lang: getLang });
   dialects = started.dialects;
   probe.mode = client.mode;
   probe.inspect = (what, name, format) => client.request('inspect', { what, name, format });
@@ -550,6 +515,12 @@ function finishSetup() {
     if (entry) await openExample(entry);
   });
   $('settings-form').addEventListener('change', onSettingInput);
+  const tool = (m) => client.request('tool', m);
+  const open = ({ text, dialect }) => library.openNew({ dialect, settings: state.settings, program: text });
+  $('wizard').addEventListener('click', () => openWizard({ request: tool, t, dialect: state.dialect, onOpen: open }).catch((e) => toast(e.message)));
+  $('expand').addEventListener('click', () =>
+    openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: result ? result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)),
+  );
   let designationTimer = 0;
   $('designation').addEventListener('input', (e) => {
     clearTimeout(designationTimer);

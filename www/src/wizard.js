@@ -108,3 +108,59 @@ export async function openWizard({ request, t, dialect, onOpen }) {
   await update();
   return dlg;
 }
+
+/**
+ * Opens "Expand to blocks": the last plan written block by block for a
+ * controller chosen from `dialects` (`[{name, title}]`, `dialect`
+ * preselected), previewed with its notes; "Open as a new program" hands it
+ * to `onOpen({text, dialect})`. `alarms`: the plan's alarm count (the
+ * expansion writes what was planned, so it says so).
+ */
+export async function openExpand({ request, t, dialects, dialect, alarms, onOpen }) {
+  const dlg = document.createElement('dialog');
+  dlg.className = 'wizard';
+  dlg.setAttribute('aria-labelledby', 'ex-title');
+  dlg.innerHTML = `<form method="dialog" class="wz-form">
+    <h2 id="ex-title">${esc(t('ex_title'))}</h2>
+    <p class="wz-help">${esc(t('ex_help'))}</p>
+    <div class="wz-grid">
+      <label class="wz-field"><span>${esc(t('ex_to'))}</span><select name="to">${dialects
+        .map((d) => `<option value="${esc(d.name)}"${d.name === dialect ? ' selected' : ''}>${esc(d.title)}</option>`)
+        .join('')}</select></label>
+      <p class="wz-error" role="alert"${alarms ? '' : ' hidden'}>${esc(t('ex_alarms', { n: alarms }))}</p>
+    </div>
+    <div class="wz-out">
+      <pre class="wz-program" tabindex="0" aria-label="${esc(t('wz_program'))}"></pre>
+      <ul class="wz-notes"></ul>
+    </div>
+    <div class="wz-buttons"><button type="button" value="open" class="primary" disabled>${esc(t('wz_open'))}</button><button type="submit" value="cancel">${esc(t('wz_cancel'))}</button></div>
+  </form>`;
+  document.body.append(dlg);
+  const form = dlg.querySelector('form');
+  let last = null;
+  const update = async () => {
+    const to = form.to.value;
+    let out = null;
+    let error = null;
+    try {
+      out = await request({ what: 'expand', to });
+    } catch (e) {
+      error = e.message;
+    }
+    if (to !== form.to.value) return;
+    last = out ? { text: out.program, dialect: to } : null;
+    dlg.querySelector('.wz-program').textContent = out ? out.program : error;
+    dlg.querySelector('.wz-notes').innerHTML = out ? out.notes.map((n) => `<li>${esc(n)}</li>`).join('') : '';
+    dlg.querySelector('[value="open"]').disabled = !out;
+  };
+  form.to.addEventListener('change', update);
+  dlg.querySelector('[value="open"]').addEventListener('click', () => {
+    if (!last) return;
+    onOpen(last);
+    dlg.close();
+  });
+  dlg.addEventListener('close', () => dlg.remove());
+  dlg.showModal();
+  await update();
+  return dlg;
+}
