@@ -92,6 +92,12 @@ export function passRow(c, i, t, hot, stale) {
   return `<tr data-pass="${i}" class="${cls}" tabindex="-1"><td>${c.index[i]}</td><td>${c.start[i]}</td><td>${num(c.x[i])}</td><td>${num(c.z[i])}</td><td>${num(c.zEnd[i])}</td><td>${num(c.depth[i])}</td><td>${num(c.infeed[i])}</td><td>${area}</td><td>${opt(c.evenArea)}</td><td>${opt(c.time)}</td><td class="role">${esc(t(role))}</td><td class="lines">${lines}</td></tr>`;
 }
 
+/** Pass `i` of columns `c` in words (what a screen reader reads for the row). */
+export function passText(c, i, t) {
+  const role = ROLE_NAMES[c.role[i]] || 'rough';
+  return `${t('col_pass')} ${c.index[i]}, ${t('col_start')} ${c.start[i]}: X${num(c.x[i])}, Z${num(c.z[i])} → ${num(c.zEnd[i])}, ${t('col_depth')} ${num(c.depth[i])}, ${t(role)}, ${t('col_lines')} ${passLines(c, i).join(', ')}`;
+}
+
 /** The source lines of pass `i` of columns `c`. */
 export function passLines(c, i) {
   return c ? Array.from(c.lines.subarray(c.lineStart[i], c.lineStart[i + 1])) : [];
@@ -124,4 +130,17 @@ export function passObjects(c) {
     };
   }
   return out;
+}
+
+/** The tooltip of a drawn item `info` ({thread, pass, lines}): its pass in numbers when it is one of the chosen thread's, else its lines. */
+export function tipText(info, result, thread, t) {
+  const c = result && result.passes;
+  if (!(info.pass >= 0 && info.thread === thread && c && info.pass < c.n)) return `${t('col_lines')} ${info.lines.join(', ')}`;
+  const i = info.pass;
+  const multi = result.threads[thread] && result.threads[thread].starts > 1;
+  return (
+    `${t('thread')} ${info.thread + 1} · ${t('col_pass')} ${c.index[i]}` +
+    (multi ? ` · ${t('col_start')} ${c.start[i]}` : '') +
+    ` · X${num(c.x[i])} Z${num(c.z[i])}→${num(c.zEnd[i])} · ${t('col_depth')} ${num(c.depth[i])} · ${t(ROLE_NAMES[c.role[i]] || 'rough')} · ${t('col_lines')} ${passLines(c, i).join(', ')}`
+  );
 }

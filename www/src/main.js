@@ -9,8 +9,10 @@ import { t, label, setLang, getLang } from './i18n.js';
 import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
 import { Library } from './programs.js';
 import { num, esc } from './table.js';
+import { download, toast } from './pageutil.js';
 import { startEngine } from './client.js';
-import { VirtualRows, passHead, passRow, passLines, diagnosticRow } from './lists.js';
+import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText } from './lists.js';
+import { bindListKeys, labelViews } from './a11y.js';
 import { DESIGNATION, renderCheck } from './check.js';
 import { SettingsPanel } from './settingspanel.js';
 import { openWizard, openExpand } from './wizard.js';
@@ -47,6 +49,7 @@ let wanted = false; // the text changed while a plan was in flight
 let pendingInput = null; // timeStamp of the keystroke the next plan answers
 const inputs = new Map(); // seq → timeStamp of its keystroke
 let passRows;
+const lists = []; // the keyboard-operated lists (a11y.js)
 let diagnosticsShown = [];
 let severities = new Set(['error', 'warning', 'info']);
 
@@ -196,6 +199,7 @@ function renderLists(r) {
   const problem = (r.settingErrors || []).find((e) => e.setting.toLowerCase() === DESIGNATION);
   const strip = { input: $('designation'), verdict: $('check-verdict'), figures: $('check-figures') };
   renderCheck(strip, shown.threads[shown.thread], shown.units, t, (state.settings[state.dialect] || {})[DESIGNATION], problem && problem.message);
+  labelViews(shown, shown.thread ?? 0, start, t);
   renderDiagnostics(r.diagnostics);
   renderSettingErrors(r.settingErrors);
 }
@@ -294,16 +298,7 @@ function tip(info, x, y) {
     el.hidden = true;
     return;
   }
-  let text = `${t('col_lines')} ${info.lines.join(', ')}`;
-  const c = result && result.passes;
-  if (info.pass >= 0 && info.thread === thread && c && info.pass < c.n) {
-    const i = info.pass;
-    const multi = result.threads[thread] && result.threads[thread].starts > 1;
-    text =
-      `${t('thread')} ${info.thread + 1} · ${t('col_pass')} ${c.index[i]}` +
-      (multi ? ` · ${t('col_start')} ${c.start[i]}` : '') +
-      ` · X${num(c.x[i])} Z${num(c.z[i])}→${num(c.zEnd[i])} · ${t('col_depth')} ${num(c.depth[i])} · ${t(['rough', 'finish', 'spring'][c.role[i]])} · ${t('col_lines')} ${passLines(c, i).join(', ')}`;
-  }
+  const text = tipText(info, result, thread, t);
   el.textContent = text;
   el.hidden = false;
   el.style.left = `${Math.min(x + 14, window.innerWidth - el.offsetWidth - 8)}px`;
@@ -388,24 +383,6 @@ async function setDialect(name, plan = true) {
   if (plan) replan();
 }
 
-function download(name, blob) {
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 5000);
-}
-
-function toast(text) {
-  const el = $('toast');
-  el.textContent = text;
-  setTimeout(() => {
-    if (el.textContent === text) el.textContent = '';
-  }, 2500);
-}
-
 async function share() {
   const url = `${location.origin}${location.pathname}${encodeFragment(state)}`;
   history.replaceState(null, '', url);
@@ -488,9 +465,25 @@ async function main() {
   const scroller = $('passes').closest('.scroll');
   passRows = new VirtualRows(scroller, $('passes').tBodies[0], {
     rowHeight: 22,
-    spacer: (h) => `<tr class="spacer" aria-hidden="true" style="height:${h}px"><td colspan="10"></td></tr>`,
+    spacer: (h) => `<tr class="spacer" aria-hidden="true" style="height:${h}px"><td colspan="12"></td></tr>`,
   });
   passRows.order = [];
+  lists.push(
+    ...bindListKeys({
+      passes: scroller,
+      diagnostics: $('diagnostics'),
+      rows: passRows,
+      result: () => result,
+      thread: () => thread,
+      shown: () => diagnosticsShown,
+      setHover: (h) => {
+        hover = h;
+        refreshHighlight();
+      },
+      goto: (line, column) => editor.goto(line, column),
+      t,
+    }),
+  );
 
   makeEditor(state.program);
 
@@ -540,6 +533,7 @@ function finishSetup() {
     persist();
     replan();
   });
+  $('settings-close').addEventListener('click', () => $('settings-toggle').click());
   $('settings-toggle').addEventListener('click', () => {
     $('settings').hidden = !$('settings').hidden;
     $('settings-toggle').setAttribute('aria-pressed', String(!$('settings').hidden));
@@ -555,6 +549,7 @@ function finishSetup() {
     client.send({ type: 'lang', lang: state.lang });
     $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
     renderExamples();
+    lists.forEach((l) => l.relabel());
     await buildSettings();
     persist();
     if (result) renderLists(result);

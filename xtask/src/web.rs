@@ -216,8 +216,9 @@ fn passed_count(line: &str) -> Option<u32> {
 /// `tests/browser/` against it with the system Chromium: the app
 /// (`test.mjs`), its engine in a worker and on the page and a program too
 /// big to draw whole (`engine.test.mjs`), the documentation page of
-/// embedded previews (`docs.test.mjs`), then hostile links, the program
-/// list and the element's guards (`safety.test.mjs`); fails when any fails.
+/// embedded previews (`docs.test.mjs`), hostile links, the program
+/// list and the element's guards (`safety.test.mjs`), then the keyboard,
+/// a phone's screen and Chinese (`access.test.mjs`); fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -235,10 +236,8 @@ pub fn browser_tests() -> Result {
     run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
     let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
     let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
-    let engine = run("node", &["engine.test.mjs", &url], Some(&dir));
-    let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
-    let safety = run("node", &["safety.test.mjs", &url], Some(&dir));
-    app.and(engine).and(docs).and(safety)
+    let rest = ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs"].map(|t| run("node", &[t, &url], Some(&dir)));
+    rest.into_iter().fold(app, |all, r| all.and(r))
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
