@@ -168,7 +168,8 @@ impl<'p> Writer<'p> {
         let sp = &self.plan.threads[t].passes[p].spindle;
         match sp.s {
             Some(_) if sp.css => {
-                let note = "constant surface speed (G96) is not written: set the spindle speed before the threads".to_string();
+                let note =
+                    "constant surface speed (G96) is not written: set the spindle speed before the threads".to_string();
                 if !self.notes.contains(&note) {
                     self.notes.push(note);
                 }

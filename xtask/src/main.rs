@@ -8,6 +8,7 @@
 
 mod bench;
 mod install;
+mod server;
 mod web;
 
 use std::process::ExitCode;

@@ -11,13 +11,12 @@
 //! as a folder a documentation site can vendor: the element, and the app its
 //! "Open in editor" link opens by default.
 
-use std::io::{BufRead, BufReader, Read, Write};
-use std::net::{TcpListener, TcpStream};
+use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use crate::Result;
 use crate::install::{ensure_chromium, ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, output, root, run};
+use crate::{Result, server};
 
 /// Default port of `cargo xtask serve`.
 pub const DEFAULT_PORT: u16 = 8080;
@@ -41,10 +40,9 @@ pub fn serve(args: &[String]) -> Result {
     }
     let out = target_dir()?.join("site");
     build_site(true, &out)?;
-    let listener =
-        TcpListener::bind(("127.0.0.1", port)).map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
+    let server = server::bind(port)?;
     eprintln!("serving {} on http://127.0.0.1:{port}/ (Ctrl-C to stop)", out.display());
-    serve_forever(listener, out);
+    server::serve_forever(server, out);
     Ok(())
 }
 
@@ -228,15 +226,16 @@ pub fn browser_tests() -> Result {
     write_element_package(&out, &out.join("element"))?;
     let dir = root().join("tests").join("browser");
     ensure_npm(&dir)?;
-    let listener = TcpListener::bind(("127.0.0.1", 0)).map_err(|e| format!("cannot listen on 127.0.0.1: {e}"))?;
-    let port = listener.local_addr().map_err(|e| e.to_string())?.port();
-    std::thread::spawn(move || serve_forever(listener, out));
+    let server = server::bind(0)?;
+    let port = server::port(&server)?;
+    std::thread::spawn(move || server::serve_forever(server, out));
     let url = format!("http://127.0.0.1:{port}/");
     // The app's SVG export is compared with the command line's.
     run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
     let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
     let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
-    let rest = ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs"].map(|t| run("node", &[t, &url], Some(&dir)));
+    let rest = ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs"]
+        .map(|t| run("node", &[t, &url], Some(&dir)));
     rest.into_iter().fold(app, |all, r| all.and(r))
 }
 
@@ -458,115 +457,9 @@ fn copy(from: &Path, to: &Path) -> Result {
     std::fs::copy(from, to).map(|_| ()).map_err(|e| format!("cannot copy {} to {}: {e}", from.display(), to.display()))
 }
 
-/// The MIME type of a file by its extension.
-pub fn mime(path: &Path) -> &'static str {
-    match path.extension().and_then(|e| e.to_str()).unwrap_or("") {
-        "html" => "text/html; charset=utf-8",
-        "js" | "mjs" => "text/javascript; charset=utf-8",
-        "css" => "text/css; charset=utf-8",
-        "wasm" => "application/wasm",
-        "json" | "map" => "application/json; charset=utf-8",
-        "svg" => "image/svg+xml",
-        "png" => "image/png",
-        "ico" => "image/x-icon",
-        "nc" | "txt" => "text/plain; charset=utf-8",
-        _ => "application/octet-stream",
-    }
-}
-
-/// Serves the files under `dir` on `listener` until the process ends.
-fn serve_forever(listener: TcpListener, dir: PathBuf) {
-    for stream in listener.incoming().flatten() {
-        let dir = dir.clone();
-        std::thread::spawn(move || {
-            let _ = respond(stream, &dir);
-        });
-    }
-}
-
-/// The file a request path names under `dir`, if it is inside it.
-pub fn resolve(dir: &Path, target: &str) -> Option<PathBuf> {
-    let path = target.split(['?', '#']).next().unwrap_or("/");
-    let decoded = percent_decode(path)?;
-    let mut file = dir.to_path_buf();
-    for part in decoded.split('/').filter(|p| !p.is_empty()) {
-        if part == ".." || part == "." || part.contains('\\') {
-            return None;
-        }
-        file.push(part);
-    }
-    if decoded.ends_with('/') || file == dir {
-        file.push("index.html");
-    }
-    Some(file)
-}
-
-fn percent_decode(s: &str) -> Option<String> {
-    let b = s.as_bytes();
-    let mut out = Vec::with_capacity(b.len());
-    let mut i = 0;
-    while i < b.len() {
-        if b[i] == b'%' {
-            let hex = std::str::from_utf8(b.get(i + 1..i + 3)?).ok()?;
-            out.push(u8::from_str_radix(hex, 16).ok()?);
-            i += 3;
-        } else {
-            out.push(b[i]);
-            i += 1;
-        }
-    }
-    String::from_utf8(out).ok()
-}
-
-fn respond(stream: TcpStream, dir: &Path) -> std::io::Result<()> {
-    let mut reader = BufReader::new(stream.try_clone()?);
-    let mut request = String::new();
-    reader.by_ref().take(8192).read_line(&mut request)?;
-    // Skip the headers.
-    let mut header = String::new();
-    while reader.by_ref().take(8192).read_line(&mut header)? > 2 {
-        header.clear();
-    }
-    let mut parts = request.split_whitespace();
-    let (method, target) = (parts.next().unwrap_or(""), parts.next().unwrap_or("/"));
-    let mut stream = stream;
-    if method != "GET" && method != "HEAD" {
-        return write_response(&mut stream, "405 Method Not Allowed", "text/plain", b"method not allowed\n", false);
-    }
-    let head = method == "HEAD";
-    match resolve(dir, target).and_then(|f| std::fs::read(&f).ok().map(|body| (f, body))) {
-        Some((file, body)) => write_response(&mut stream, "200 OK", mime(&file), &body, head),
-        None => write_response(&mut stream, "404 Not Found", "text/plain", b"not found\n", head),
-    }
-}
-
-fn write_response(stream: &mut TcpStream, status: &str, mime: &str, body: &[u8], head: bool) -> std::io::Result<()> {
-    let header = format!(
-        "HTTP/1.1 {status}\r\nContent-Type: {mime}\r\nContent-Length: {}\r\nCache-Control: no-cache\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n",
-        body.len()
-    );
-    stream.write_all(header.as_bytes())?;
-    if !head {
-        stream.write_all(body)?;
-    }
-    stream.flush()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn paths_resolve_inside_the_site_only() {
-        let d = Path::new("/site");
-        assert_eq!(resolve(d, "/"), Some(PathBuf::from("/site/index.html")));
-        assert_eq!(resolve(d, "/?x=1#frag"), Some(PathBuf::from("/site/index.html")));
-        assert_eq!(resolve(d, "/examples/o1006.nc"), Some(PathBuf::from("/site/examples/o1006.nc")));
-        assert_eq!(resolve(d, "/a%20b.js"), Some(PathBuf::from("/site/a b.js")));
-        assert_eq!(resolve(d, "/../etc/passwd"), None);
-        assert_eq!(resolve(d, "/%2e%2e/etc/passwd"), None);
-        assert_eq!(resolve(d, "/bad%zz"), None);
-    }
 
     #[test]
     fn pass_counts_are_read_from_libtest_summaries() {
@@ -621,15 +514,6 @@ mod tests {
             }
         }
         assert!(seen >= 6, "read {seen} spellings from src/dialect.rs");
-    }
-
-    #[test]
-    fn mime_types() {
-        assert_eq!(mime(Path::new("a/screwcut_bg.wasm")), "application/wasm");
-        assert_eq!(mime(Path::new("app.js")), "text/javascript; charset=utf-8");
-        assert_eq!(mime(Path::new("index.html")), "text/html; charset=utf-8");
-        assert_eq!(mime(Path::new("examples/index.json")), "application/json; charset=utf-8");
-        assert_eq!(mime(Path::new("LICENSE")), "application/octet-stream");
     }
 
     #[test]

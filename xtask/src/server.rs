@@ -1,0 +1,135 @@
+//! The local static file server of `cargo xtask serve` and the browser
+//! tests: HTTP by `tiny_http`, GET and HEAD of the files under one folder
+//! (a path that would leave it is refused), each with its MIME type, not
+//! cached, not sniffed.
+
+use std::path::{Path, PathBuf};
+
+use tiny_http::{Header, Method, Response, Server};
+
+use crate::Result;
+
+/// A server on 127.0.0.1:`port` (0: any free port).
+pub fn bind(port: u16) -> Result<Server> {
+    Server::http(("127.0.0.1", port)).map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))
+}
+
+/// The port `server` listens on.
+pub fn port(server: &Server) -> Result<u16> {
+    server.server_addr().to_ip().map(|a| a.port()).ok_or_else(|| "the server has no IP address".to_string())
+}
+
+/// Serves the files under `dir` until the process ends.
+pub fn serve_forever(server: Server, dir: PathBuf) {
+    for request in server.incoming_requests() {
+        let head = *request.method() == Method::Head;
+        let file = match request.method() {
+            Method::Get | Method::Head => resolve(&dir, request.url()),
+            _ => {
+                let _ = request.respond(Response::from_string("method not allowed\n").with_status_code(405));
+                continue;
+            }
+        };
+        let body = file.as_ref().and_then(|f| std::fs::read(f).ok());
+        let (status, mime, body) = match (&file, body) {
+            (Some(f), Some(body)) => (200, mime(f), body),
+            _ => (404, "text/plain", b"not found\n".to_vec()),
+        };
+        let len = body.len();
+        let mut response = Response::from_data(if head { Vec::new() } else { body }).with_status_code(status);
+        for (k, v) in [("Content-Type", mime), ("Cache-Control", "no-cache"), ("X-Content-Type-Options", "nosniff")] {
+            if let Ok(h) = Header::from_bytes(k, v) {
+                response.add_header(h);
+            }
+        }
+        if head && let Ok(h) = Header::from_bytes("Content-Length", len.to_string()) {
+            response.add_header(h);
+        }
+        let _ = request.respond(response);
+    }
+}
+
+/// The file a request path names under `dir`, if it is inside it.
+pub fn resolve(dir: &Path, target: &str) -> Option<PathBuf> {
+    let path = target.split(['?', '#']).next().unwrap_or("/");
+    let decoded = percent_encoding::percent_decode_str(path).decode_utf8().ok()?;
+    let mut file = dir.to_path_buf();
+    for part in decoded.split('/').filter(|p| !p.is_empty()) {
+        if part == ".." || part == "." || part.contains('\\') {
+            return None;
+        }
+        file.push(part);
+    }
+    if decoded.ends_with('/') || file == dir {
+        file.push("index.html");
+    }
+    Some(file)
+}
+
+/// The MIME type of a file by its extension.
+pub fn mime(path: &Path) -> &'static str {
+    match path.extension().and_then(|e| e.to_str()).unwrap_or("") {
+        "html" => "text/html; charset=utf-8",
+        "js" | "mjs" => "text/javascript; charset=utf-8",
+        "css" => "text/css; charset=utf-8",
+        "wasm" => "application/wasm",
+        "json" | "map" => "application/json; charset=utf-8",
+        "svg" => "image/svg+xml",
+        "png" => "image/png",
+        "ico" => "image/x-icon",
+        "nc" | "txt" => "text/plain; charset=utf-8",
+        _ => "application/octet-stream",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths_resolve_inside_the_site_only() {
+        let d = Path::new("/site");
+        assert_eq!(resolve(d, "/"), Some(PathBuf::from("/site/index.html")));
+        assert_eq!(resolve(d, "/?x=1#frag"), Some(PathBuf::from("/site/index.html")));
+        assert_eq!(resolve(d, "/examples/o1006.nc"), Some(PathBuf::from("/site/examples/o1006.nc")));
+        assert_eq!(resolve(d, "/a%20b.js"), Some(PathBuf::from("/site/a b.js")));
+        assert_eq!(resolve(d, "/../etc/passwd"), None);
+        assert_eq!(resolve(d, "/%2e%2e/etc/passwd"), None);
+        assert_eq!(resolve(d, "/%ff"), None, "not UTF-8");
+    }
+
+    #[test]
+    fn mime_types() {
+        assert_eq!(mime(Path::new("a/screwcut_bg.wasm")), "application/wasm");
+        assert_eq!(mime(Path::new("app.js")), "text/javascript; charset=utf-8");
+        assert_eq!(mime(Path::new("index.html")), "text/html; charset=utf-8");
+        assert_eq!(mime(Path::new("examples/index.json")), "application/json; charset=utf-8");
+        assert_eq!(mime(Path::new("LICENSE")), "application/octet-stream");
+    }
+
+    /// A real request: a file, a missing one, and a way out of the folder.
+    #[test]
+    fn it_serves_files_and_nothing_outside() {
+        let dir = std::env::temp_dir().join(format!("screwcut-server-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("index.html"), "<!doctype html>hi").unwrap();
+        let server = bind(0).unwrap();
+        let port = port(&server).unwrap();
+        let d = dir.clone();
+        std::thread::spawn(move || serve_forever(server, d));
+        let get = |path: &str| {
+            use std::io::{Read, Write};
+            let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+            write!(s, "GET {path} HTTP/1.0\r\nHost: x\r\n\r\n").unwrap();
+            let mut out = String::new();
+            s.read_to_string(&mut out).unwrap();
+            out
+        };
+        let ok = get("/");
+        assert!(ok.starts_with("HTTP/1.0 200") || ok.starts_with("HTTP/1.1 200"), "{ok}");
+        assert!(ok.contains("text/html") && ok.ends_with("<!doctype html>hi"), "{ok}");
+        assert!(get("/nothing.js").contains(" 404 "));
+        assert!(get("/../../etc/passwd").contains(" 404 "));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
