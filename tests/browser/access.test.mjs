@@ -81,6 +81,17 @@ try {
     check('… Enter goes to the diagnostic’s line', (await page.evaluate(() => window.__screwcut.editor().cursorLine())) === 5);
     check('the examples menu has a name', ((await page.getAttribute('#examples', 'aria-label')) || '').length > 5);
     await page.screenshot({ path: path.join(shots, 'access-en-1440.png') });
+    // Another program with an alarm shows no greyed drawing of the one before.
+    await page.click('#program-new');
+    await page.waitForTimeout(500);
+    await page.locator('.cm-content').click();
+    await page.keyboard.type('G00 X40 Z5\nG32 Z-20 F1.2.3\n');
+    await page.waitForSelector('#diagnostics li.error', { timeout: 10_000 }).catch(() => {});
+    await page.waitForTimeout(300);
+    const stale = await page.evaluate(() => ({ banner: !document.getElementById('stale').hidden, table: document.getElementById('passes').classList.contains('stale') }));
+    check('a new program with an alarm shows no greyed drawing or table of the program before', !stale.banner && !stale.table, JSON.stringify(stale));
+    await page.selectOption('#programs', { index: 1 });
+    await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 10_000 }).catch(() => {});
     await page.click('#lang');
     await page.waitForTimeout(600);
     const zh = await page.evaluate(() => ({ head: document.querySelector('#passes thead').textContent, label: document.getElementById('side').getAttribute('aria-label'), summary: document.getElementById('summary').textContent }));

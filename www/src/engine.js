@@ -90,8 +90,13 @@ export class Engine {
     for (const v of Object.values(this.views)) v.draw();
   }
 
-  /** Plans `text` and shows it; answers with a result now and a frame once drawn. */
-  on_plan({ seq, text, dialect, settings, thread, start, input }) {
+  /**
+   * Plans `text` and shows it; answers with a result now and a frame once
+   * drawn. `fresh`: the text is another program's, so an alarm in it shows
+   * no greyed drawing of the program before.
+   */
+  on_plan({ seq, text, dialect, settings, thread, start, input, fresh }) {
+    if (fresh) this.lastGood = null;
     if (thread !== undefined) this.thread = thread;
     if (start !== undefined) this.start = start;
     const t0 = performance.now();

@@ -40,6 +40,7 @@ let dialects = [];
 let editor;
 let result = null; // the lists of the last answer (threads, passes as columns, diagnostics)
 let lastGood = null; // the lists of the last answer without alarm
+let fresh = false; // the next plan is another program's: no last good drawing of this one yet
 let thread = 0;
 let start = 1;
 let hover = null;
@@ -77,6 +78,8 @@ async function showProgram(s) {
   state.settings = s.settings && typeof s.settings === 'object' ? s.settings : {};
   state.program = s.program;
   $('dialect').value = state.dialect;
+  lastGood = null;
+  fresh = true;
   makeEditor(state.program);
   await buildSettings();
   replan();
@@ -117,7 +120,8 @@ function replan() {
     inputs.set(seq, pendingInput);
     pendingInput = null;
   }
-  client.send({ type: 'plan', seq, text, dialect: state.dialect, settings: settingsText(), thread, start, input: inputs.get(seq) ?? null });
+  client.send({ type: 'plan', seq, text, dialect: state.dialect, settings: settingsText(), thread, start, input: inputs.get(seq) ?? null, fresh });
+  fresh = false;
 }
 
 function onMessage(m) {
