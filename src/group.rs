@@ -301,7 +301,7 @@ fn build(cuts: &[Chain]) -> Thread {
             angles.push(c.angle);
         }
     }
-    angles.sort_by(f64::total_cmp);
+    angles.sort_unstable_by(f64::total_cmp);
     let mut counts = vec![0u32; angles.len()];
     let mut passes = Vec::with_capacity(cuts.len());
     for c in cuts {

@@ -114,7 +114,7 @@ pub fn pass_paths(plan: &Plan) -> Vec<PassPath> {
             }
         }
     }
-    found.sort_by_key(|p| p.cut.start);
+    found.sort_unstable_by_key(|p| p.cut.start); // each pass its own motions
     found
 }
 
