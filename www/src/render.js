@@ -336,7 +336,7 @@ export function drawScene(painter, scene, xf, opts) {
   const Y = (y) => xf.ty - xf.sy * y;
   const hi = opts.highlight && opts.highlight.size && !opts.stale ? opts.highlight : null;
   // The cursor line's mark is lighter than what the pointer is over.
-  const haloAlpha = opts.light ? 0.22 : 0.45;
+  const haloAlpha = opts.light ? 0.3 : 0.5;
   // Labels first: where each goes, or whether it is dropped, at this transform.
   const labels = sceneLabels(scene, opts);
   placeLabels(labels, xf, { w: opts.width || 1e6, h: opts.height || 1e6 }, sceneLines(scene));
@@ -352,7 +352,7 @@ export function drawScene(painter, scene, xf, opts) {
     return base;
   };
   const penOf = opts.stale ? (i) => greyPen(colourPen(i)) : colourPen;
-  const haloPen = (pen) => ({ stroke: HIGHLIGHT, width: (pen.width || 1) + (opts.light ? 4 : 5), alpha: haloAlpha });
+  const haloPen = (pen) => ({ stroke: HIGHLIGHT, width: (pen.width || 1) + (opts.light ? 4 : 6), alpha: haloAlpha });
   /** The screen points of a path item. */
   const pathPoints = (c, n) => {
     const pts = new Float64Array(n);
@@ -362,37 +362,56 @@ export function drawScene(painter, scene, xf, opts) {
     }
     return pts;
   };
-  /** A highlight: a halo beneath the item, which keeps its own colours on top. */
-  const drawHalo = (i) => {
-    const o = i * STRIDE;
-    const shape = items[o + F.shape];
-    const pen = penOf(i);
-    const c = items[o + F.coord_start];
-    const n = items[o + F.coord_len];
-    switch (shape) {
-      case SHAPE.polyline:
-      case SHAPE.polygon:
-        painter.path(pathPoints(c, n), shape === SHAPE.polygon, haloPen(pen));
-        break;
-      case SHAPE.circle:
-        painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, haloPen(pen));
-        break;
-      case SHAPE.arrow:
-        painter.path(new Float64Array([X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]), false, haloPen(pen));
-        break;
-      case SHAPE.marker:
-        painter.circle(X(coords[c]), Y(coords[c + 1]), 7, { fill: HIGHLIGHT, alpha: haloAlpha });
-        break;
-      case SHAPE.dim:
-      case SHAPE.text: {
-        const l = labelOf.get(i);
-        if (!l || !l.at) break;
-        const [x0, y0, x1, y1] = l.at.box;
-        painter.path(new Float64Array([x0 - 1, y0, x1 + 1, y0, x1 + 1, y1, x0 - 1, y1]), true, { fill: HIGHLIGHT, alpha: haloAlpha });
-        if (shape === SHAPE.dim) for (const [p, q] of dimLines(l, xf)) painter.path(new Float64Array([p[0], p[1], q[0], q[1]]), false, haloPen(pen));
-        break;
+  /**
+   * Highlights: halos beneath the items, which keep their own colours on
+   * top. The halos of one width are one stroke (their union, at one alpha):
+   * halos of close lines do not pile up into a solid colour between them.
+   */
+  const drawHalos = (set) => {
+    const groups = new Map();
+    const add = (closed, width, pts) => {
+      const key = `${closed}:${width}`;
+      let g = groups.get(key);
+      if (!g) groups.set(key, (g = { closed, width, pts: [], spans: [] }));
+      g.spans.push(g.pts.length, pts.length);
+      for (const v of pts) g.pts.push(v);
+    };
+    const fills = [];
+    for (const i of set) {
+      if (i >= count) continue;
+      const o = i * STRIDE;
+      const shape = items[o + F.shape];
+      const pen = penOf(i);
+      const c = items[o + F.coord_start];
+      const n = items[o + F.coord_len];
+      const width = haloPen(pen).width;
+      switch (shape) {
+        case SHAPE.polyline:
+        case SHAPE.polygon:
+          add(shape === SHAPE.polygon, width, pathPoints(c, n));
+          break;
+        case SHAPE.arrow:
+          add(false, width, [X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]);
+          break;
+        case SHAPE.circle:
+          painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, haloPen(pen));
+          break;
+        case SHAPE.marker:
+          fills.push([X(coords[c]), Y(coords[c + 1])]);
+          break;
+        case SHAPE.dim:
+        case SHAPE.text: {
+          const l = labelOf.get(i);
+          if (!l || !l.at) break;
+          const [x0, y0, x1, y1] = l.at.box;
+          painter.path(new Float64Array([x0 - 1, y0, x1 + 1, y0, x1 + 1, y1, x0 - 1, y1]), true, { fill: HIGHLIGHT, alpha: haloAlpha });
+          if (shape === SHAPE.dim) for (const [p, q] of dimLines(l, xf)) add(false, width, [p[0], p[1], q[0], q[1]]);
+          break;
+        }
       }
     }
+    for (const g of groups.values()) painter.paths(Float64Array.from(g.pts), g.spans, g.closed, { stroke: HIGHLIGHT, width: g.width, alpha: haloAlpha });
+    for (const [x, y] of fills) painter.circle(x, y, 6, { fill: HIGHLIGHT, alpha: haloAlpha });
   };
   const drawItem = (i) => {
     const o = i * STRIDE;
@@ -427,7 +446,7 @@ export function drawScene(painter, scene, xf, opts) {
   };
   painter.begin(opts.stale);
   // Highlights go beneath everything: they mark without covering.
-  if (hi) for (const i of hi) if (i < count) drawHalo(i);
+  if (hi) drawHalos(hi);
   // Paths of one pen are drawn together (one stroke or fill per pen), in the
   // order the pens first appear; the other shapes follow, in item order.
   // A path that repeats one already in its batch (to 1/8 px on screen) adds
