@@ -203,8 +203,9 @@ fn passed_count(line: &str) -> Option<u32> {
 /// Builds the site, serves it on a free local port and runs the Playwright
 /// tests in `tests/browser/` against it with the system Chromium: the app
 /// (`test.mjs`), its engine in a worker and on the page and a program too
-/// big to draw whole (`engine.test.mjs`), then the documentation page of
-/// embedded previews (`docs.test.mjs`); fails when any fails.
+/// big to draw whole (`engine.test.mjs`), the documentation page of
+/// embedded previews (`docs.test.mjs`), then the drawings' labels in the
+/// app and in embeds, English and Chinese (`labels.test.mjs`); fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -220,7 +221,8 @@ pub fn browser_tests() -> Result {
     let app = run("node", &["test.mjs", &url], Some(&dir));
     let engine = run("node", &["engine.test.mjs", &url], Some(&dir));
     let docs = run("node", &["docs.test.mjs", &url], Some(&dir));
-    app.and(engine).and(docs)
+    let labels = run("node", &["labels.test.mjs", &url], Some(&dir));
+    app.and(engine).and(docs).and(labels)
 }
 
 /// Builds the site into `out` (emptied first): wasm (release or debug),
