@@ -284,10 +284,10 @@ try {
           check(`${where} ${name}: the SVG export has every label inside its viewBox, where the canvas has it`, sbad.length === 0, sbad.slice(0, 6).join('; '));
         }
         if (id.endsWith('two-start-en') || id.endsWith('two-start-zh') || id.endsWith('l99-zh')) await page.locator(`#${id}`).screenshot({ path: path.join(shots, `labels-embed-${width}-${id}.png`) });
-      }
+      } else await page.locator(`#${id}`).screenshot({ path: path.join(shots, `labels-docs-${width}-en-${id}.png`) });
     }
     await page.evaluate(() => window.scrollTo(0, 0));
-    await page.screenshot({ path: path.join(shots, `labels-docs-${width}-en.png`), fullPage: width === 390 ? false : true });
+    await page.screenshot({ path: path.join(shots, `labels-docs-${width}-en.png`) });
     // The docs page's embeds in Chinese.
     await page.evaluate(() => {
       for (const el of document.querySelectorAll('screwcut-preview')) el.setAttribute('lang', 'zh');
@@ -300,9 +300,10 @@ try {
         const bad = faults(l, []);
         check(`embed ${width} ${id} zh ${name}: ${summary(l)} inside the view, none overlapping`, bad.length === 0, bad.slice(0, 6).join('; '));
       }
+      await page.locator(`#${id}`).screenshot({ path: path.join(shots, `labels-docs-${width}-zh-${id}.png`) });
     }
     await page.evaluate(() => window.scrollTo(0, 0));
-    await page.screenshot({ path: path.join(shots, `labels-docs-${width}-zh.png`), fullPage: width === 390 ? false : true });
+    await page.screenshot({ path: path.join(shots, `labels-docs-${width}-zh.png`) });
     await page.close();
   }
   check('no console or page errors', problems.length === 0, JSON.stringify(problems.slice(0, 5)));
