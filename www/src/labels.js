@@ -359,51 +359,87 @@ class Boxes {
 }
 
 /**
- * The drawing's lines on screen, in a coarse grid: labels prefer places that
- * cross none. `world` holds x0 y0 x1 y1 of each segment in world coordinates.
+ * The drawing's lines, which labels prefer not to cross, in a grid of world
+ * cells built once per scene (`lineIndex`): a label's box on screen is taken
+ * back to world coordinates to find the lines near it.
  */
-class Lines {
-  constructor(world, xf, view) {
-    this.cells = new Map();
-    const C = (this.C = 48);
-    const w = view.all ? Infinity : view.w;
-    const h = view.all ? Infinity : view.h;
-    for (let k = 0; k + 3 < world.length; k += 4) {
-      const x0 = sx(xf, world[k]);
-      const y0 = sy(xf, world[k + 1]);
-      const x1 = sx(xf, world[k + 2]);
-      const y1 = sy(xf, world[k + 3]);
-      if (!view.all && (Math.max(x0, x1) < 0 || Math.max(y0, y1) < 0 || Math.min(x0, x1) > w || Math.min(y0, y1) > h)) continue;
-      if (!Number.isFinite(x0 + y0 + x1 + y1)) continue;
-      const seg = [
-        [x0, y0],
-        [x1, y1],
-      ];
-      const lo = view.all ? -Infinity : -C;
-      const i0 = Math.floor(Math.max(Math.min(x0, x1), lo) / C);
-      const i1 = Math.floor(Math.min(Math.max(x0, x1), w + C) / C);
-      const j0 = Math.floor(Math.max(Math.min(y0, y1), lo) / C);
-      const j1 = Math.floor(Math.min(Math.max(y0, y1), h + C) / C);
-      // A segment across a huge area (far out of the view) is left out.
-      if ((i1 - i0 + 1) * (j1 - j0 + 1) > 4096) continue;
-      for (let i = i0; i <= i1; i++)
-        for (let j = j0; j <= j1; j++) {
-          const key = i * 1048576 + j;
-          let list = this.cells.get(key);
-          if (!list) this.cells.set(key, (list = []));
-          list.push(seg);
+class LineIndex {
+  /** `world`: x0 y0 x1 y1 of each segment; `rect`: [x0, y0, x1, y1] the grid spans (64 × 64 cells). */
+  constructor(world, rect) {
+    this.world = world;
+    const [x0, y0, x1, y1] = rect;
+    this.x0 = x0;
+    this.y0 = y0;
+    this.cw = Math.max((x1 - x0) / 64, 1e-9);
+    this.ch = Math.max((y1 - y0) / 64, 1e-9);
+    // Cells −1 … 64 on each axis (the outer ones hold what lies beyond), as
+    // compressed rows: the segments of cell c are list[start[c] … start[c + 1]).
+    const N = 66;
+    const count = new Int32Array(N * N + 1);
+    this.wide = []; // segments across more than 256 cells, tested every time
+    let fill = null;
+    for (let pass = 0; pass < 2; pass++) {
+      for (let k = 0; k + 3 < world.length; k += 4) {
+        const a = world[k];
+        const b = world[k + 1];
+        const c = world[k + 2];
+        const d = world[k + 3];
+        if (!Number.isFinite(a + b + c + d)) continue;
+        const i0 = this.col(a < c ? a : c) + 1;
+        const i1 = this.col(a < c ? c : a) + 1;
+        const j0 = this.row(b < d ? b : d) + 1;
+        const j1 = this.row(b < d ? d : b) + 1;
+        if ((i1 - i0 + 1) * (j1 - j0 + 1) > 256) {
+          if (pass === 0) this.wide.push(k);
+          continue;
         }
+        for (let i = i0; i <= i1; i++)
+          for (let j = j0; j <= j1; j++) {
+            if (pass === 0) count[i * N + j + 1]++;
+            else this.list[fill[i * N + j]++] = k;
+          }
+      }
+      if (pass === 0) {
+        for (let c = 1; c <= N * N; c++) count[c] += count[c - 1];
+        this.start = count;
+        this.list = new Int32Array(count[N * N]);
+        fill = count.slice();
+      }
     }
   }
-  hits(b) {
-    const C = this.C;
-    for (let i = Math.floor(b[0] / C); i <= Math.floor(b[2] / C); i++)
-      for (let j = Math.floor(b[1] / C); j <= Math.floor(b[3] / C); j++) {
-        const list = this.cells.get(i * 1048576 + j);
-        if (list) for (const [p, q] of list) if (segmentHitsBox(p, q, b)) return true;
+  col(x) {
+    return Math.max(-1, Math.min(64, Math.floor((x - this.x0) / this.cw)));
+  }
+  row(y) {
+    return Math.max(-1, Math.min(64, Math.floor((y - this.y0) / this.ch)));
+  }
+  /** Whether a line crosses the screen box `b` under transform `xf`. */
+  hits(b, xf) {
+    const w = this.world;
+    const test = (k) =>
+      segmentHitsBox([sx(xf, w[k]), sy(xf, w[k + 1])], [sx(xf, w[k + 2]), sy(xf, w[k + 3])], b);
+    for (const k of this.wide) if (test(k)) return true;
+    const i0 = this.col((b[0] - xf.tx) / xf.sx);
+    const i1 = this.col((b[2] - xf.tx) / xf.sx);
+    const j0 = this.row((xf.ty - b[3]) / xf.sy);
+    const j1 = this.row((xf.ty - b[1]) / xf.sy);
+    const N = 66;
+    for (let i = i0 + 1; i <= i1 + 1; i++)
+      for (let j = j0 + 1; j <= j1 + 1; j++) {
+        const c = i * N + j;
+        for (let e = this.start[c]; e < this.start[c + 1]; e++) if (test(this.list[e])) return true;
       }
     return false;
   }
+}
+
+/**
+ * An index of the drawing's lines for `placeLabels` and `fitLabels`:
+ * `world` holds x0 y0 x1 y1 of each segment in world coordinates, `rect` the
+ * region it is finest over (the scene's focus). Build it once per scene.
+ */
+export function lineIndex(world, rect) {
+  return new LineIndex(world, rect);
 }
 
 /** Whether segment p→q crosses box b. */
@@ -463,8 +499,8 @@ function dimSegments(lab, fr, c) {
  * Places `labels` (records of `label()`) at transform `xf` in a view of
  * `view.w` × `view.h` CSS pixels (`view.all`: without bounds, as the fit
  * does). Sets each label's `at` to its place ({cx, cy, off?, S?, len?, box,
- * angle, lead?}) or null when dropped; returns the placed ones. `world`: the
- * drawing's lines (x0 y0 x1 y1 …, world coordinates) that labels avoid.
+ * angle, lead?}) or null when dropped; returns the placed ones. `drawing`: the
+ * drawing's lines that labels avoid (`lineIndex`), or null.
  *
  * A place must keep the label inside the view and off every label placed
  * before. Among those, the first candidate that is clean wins: its text
@@ -472,9 +508,8 @@ function dimSegments(lab, fr, c) {
  * no other dimension's line, and its text crosses none of the drawing's
  * lines; else the first that is clean of dimension lines; else the first.
  */
-export function placeLabels(labels, xf, view, world = null) {
+export function placeLabels(labels, xf, view, drawing = null) {
   if (!view.all) stackTexts(labels, xf, view);
-  const drawing = world && world.length ? new Lines(world, xf, view) : null;
   const order = labels.map((l, k) => [l, k]).sort((p, q) => p[0].prio - q[0].prio || p[1] - q[1]);
   const boxes = new Boxes();
   const lines = [];
@@ -512,7 +547,7 @@ export function placeLabels(labels, xf, view, world = null) {
         crossing = own.some(([p, q]) => placed.some((o) => segmentHitsBox(p, q, o.at.box)) || lines.some(([r, t]) => segmentsClash(p, q, r, t)));
       }
       if (crossing) score += 2;
-      if (drawing && score < bestScore && drawing.hits(shrink(box))) score += 1;
+      if (drawing && score < bestScore && drawing.hits(shrink(box), xf)) score += 1;
       if (score < bestScore) {
         best = cand;
         bestScore = score;
@@ -604,10 +639,10 @@ function maxScale(els, c, lo, hi, avail) {
  * that fits the world rectangle `focus` [x0, y0, x1, y1] and every label of
  * `labels` (those anchored near the focus) into `width` × `height`, each
  * label where placement would put it in a view without bounds (so away from
- * the drawing's lines `world` where it can be). With `stretch`, the vertical
+ * the drawing's lines (`lineIndex`) where it can be). With `stretch`, the vertical
  * scale may exceed the horizontal one to fill the height.
  */
-export function fitLabels(focus, labels, width, height, stretch, world = null) {
+export function fitLabels(focus, labels, width, height, stretch, lines = null) {
   const [x0, y0, x1, y1] = focus;
   const w = Math.max(x1 - x0, 1e-9);
   const h = Math.max(y1 - y0, 1e-9);
@@ -629,7 +664,7 @@ export function fitLabels(focus, labels, width, height, stretch, world = null) {
   let xf = { sx: iso, sy: stretch ? Math.max(iso, (ah - 2 * P) / h) : iso, tx: 0, ty: 0 };
   const elements = () => {
     const els = [...geometry];
-    placeLabels(set, xf, { all: true }, world);
+    placeLabels(set, xf, { all: true }, lines);
     for (const l of set) if (l.at) fitElements(l, xf, els);
     return els;
   };

@@ -7,7 +7,7 @@
 // (`setLayout(core.scene_layout())` before the first scene). Rendering walks
 // the arrays directly; a painter (canvas or SVG) draws screen-space primitives.
 
-import { label as labelRecord, placeLabels, fitLabels, frameOf } from './labels.js';
+import { label as labelRecord, placeLabels, fitLabels, frameOf, lineIndex } from './labels.js';
 
 /** The record layout: `stride`, field offsets by name, shape codes by name, anchor names. */
 let STRIDE = 10;
@@ -226,37 +226,54 @@ const MAX_AVOIDED = 20000;
 const CROSSABLE = new Set(['axis', 'thread_zone', 'delta1', 'delta2']);
 
 /**
- * The drawing's lines that labels keep off, as x0 y0 x1 y1 of each segment
- * in world coordinates (kept with the scene): paths, arrows and circles.
+ * The drawing's lines that labels keep off (paths, arrows and circles), as an
+ * index (labels.js `lineIndex`) kept with the scene.
  */
 export function sceneLines(scene) {
   const pr = scene.prepared;
   if (pr.lines) return pr.lines;
   const { items, coords } = scene;
-  const out = [];
-  const take = (ofThreads) => {
-    for (let i = 0; i < pr.count && out.length < 4 * MAX_AVOIDED; i++) {
-      const o = i * STRIDE;
-      if (!items[o + F.thread] !== !ofThreads || CROSSABLE.has(pr.styles[i])) continue;
-      const shape = items[o + F.shape];
-      const c = items[o + F.coord_start];
-      const n = items[o + F.coord_len];
-      if (shape === SHAPE.polyline || shape === SHAPE.polygon || shape === SHAPE.arrow) {
-        for (let k = 0; k + 3 < n; k += 2) out.push(coords[c + k], coords[c + k + 1], coords[c + k + 2], coords[c + k + 3]);
-        if (shape === SHAPE.polygon && n >= 6) out.push(coords[c + n - 2], coords[c + n - 1], coords[c], coords[c + 1]);
-      } else if (shape === SHAPE.circle) {
-        const [x, y, r] = [coords[c], coords[c + 1], coords[c + 2]];
-        for (let k = 0; k < 24; k++) {
-          const a = (k * Math.PI) / 12;
-          const b = ((k + 1) * Math.PI) / 12;
-          out.push(x + r * Math.cos(a), y + r * Math.sin(a), x + r * Math.cos(b), y + r * Math.sin(b));
-        }
-      }
-    }
+  // Segments of each item (polygons closed, circles as 24 chords), threads' items first.
+  const segments = (i) => {
+    const o = i * STRIDE;
+    if (CROSSABLE.has(pr.styles[i])) return 0;
+    const shape = items[o + F.shape];
+    const n = items[o + F.coord_len];
+    if (shape === SHAPE.polyline || shape === SHAPE.arrow) return Math.max(0, n / 2 - 1);
+    if (shape === SHAPE.polygon) return n >= 6 ? n / 2 : Math.max(0, n / 2 - 1);
+    return shape === SHAPE.circle ? 24 : 0;
   };
-  take(true);
-  take(false);
-  pr.lines = new Float64Array(out);
+  const order = [];
+  for (const ofThreads of [true, false]) for (let i = 0; i < pr.count; i++) if (!items[i * STRIDE + F.thread] === !ofThreads) order.push(i);
+  let total = 0;
+  for (const i of order) total += segments(i);
+  const out = new Float64Array(4 * Math.min(total, MAX_AVOIDED));
+  let m = 0;
+  const put = (a, b, c, d) => {
+    if (m + 4 > out.length) return false;
+    out[m++] = a;
+    out[m++] = b;
+    out[m++] = c;
+    out[m++] = d;
+    return true;
+  };
+  for (const i of order) {
+    if (!segments(i)) continue;
+    const o = i * STRIDE;
+    const shape = items[o + F.shape];
+    const c = items[o + F.coord_start];
+    const n = items[o + F.coord_len];
+    let room = true;
+    if (shape === SHAPE.circle) {
+      const [x, y, r] = [coords[c], coords[c + 1], coords[c + 2]];
+      for (let k = 0; k < 24 && room; k++) room = put(x + r * Math.cos((k * Math.PI) / 12), y + r * Math.sin((k * Math.PI) / 12), x + r * Math.cos(((k + 1) * Math.PI) / 12), y + r * Math.sin(((k + 1) * Math.PI) / 12));
+    } else {
+      for (let k = 0; k + 3 < n && room; k += 2) room = put(coords[c + k], coords[c + k + 1], coords[c + k + 2], coords[c + k + 3]);
+      if (room && shape === SHAPE.polygon && n >= 6) room = put(coords[c + n - 2], coords[c + n - 1], coords[c], coords[c + 1]);
+    }
+    if (!room) break;
+  }
+  pr.lines = lineIndex(out.subarray(0, m), scene.focus);
   return pr.lines;
 }
 
