@@ -104,17 +104,25 @@ async function svgFaults(page, svg, l) {
   const ws = await widths(page, s.texts.map((t) => t.text));
   s.texts.forEach((t, k) => {
     const [bw, bh] = t.angle ? [LINE, ws[k] + 4] : [ws[k] + 4, LINE];
-    const box = [t.x - bw / 2, t.y - bh / 2, t.x + bw / 2, t.y + bh / 2];
+    const cx = t.anchor === 'start' ? t.x - 2 + bw / 2 : t.anchor === 'end' ? t.x + 2 - bw / 2 : t.x;
+    const box = [cx - bw / 2, t.y - bh / 2, cx + bw / 2, t.y + bh / 2];
     if (box[0] < -0.5 || box[1] < -0.5 || box[2] > s.w + 0.5 || box[3] > s.h + 0.5) out.push(`"${t.text}" outside the viewBox ${s.w}×${s.h}`);
   });
   if (l) {
+    // A label wrapped on several lines is one text per line, a line apart.
+    let lines = 0;
     for (const p of l.placed) {
       if (!p.text) continue;
       const cx = (p.box[0] + p.box[2]) / 2;
       const cy = (p.box[1] + p.box[3]) / 2;
-      if (!s.texts.some((t) => t.text === p.text && Math.abs(t.x - cx) < 0.6 && Math.abs(t.y - cy) < 0.6)) out.push(`"${p.text}" is not where the canvas put it`);
+      const x = p.align === 'start' ? p.box[0] + 2 : p.align === 'end' ? p.box[2] - 2 : cx;
+      p.lines.forEach((line, k) => {
+        lines++;
+        const y = cy + (k - (p.lines.length - 1) / 2) * LINE;
+        if (!s.texts.some((t) => t.text === line && t.anchor === p.align && Math.abs(t.x - x) < 0.6 && Math.abs(t.y - y) < 0.6)) out.push(`"${line}" is not where the canvas put it`);
+      });
     }
-    if (s.texts.length !== l.placed.filter((p) => p.text).length) out.push(`${s.texts.length} texts in the SVG, ${l.placed.length} labels on the canvas`);
+    if (s.texts.length !== lines) out.push(`${s.texts.length} texts in the SVG, ${lines} lines of labels on the canvas`);
   }
   return out;
 }

@@ -78,8 +78,9 @@ const MUST = new Set(['dia_major', 'dia_minor', 'lead']);
  * A label record for `placeLabels` and `fitLabels`.
  * `kind`: 'dim' (a: [x, y], b: [x, y] world, offset px), 'half' (a
  * dimension of a diameter from the axis `a`: one arrowhead at `b`), or
- * 'text' (p: [x, y] world, dx, dy px, dy up, anchor 'start' | 'middle' | 'end').
- * `w`: the text's measured width. `chosen`: whether it belongs to the chosen thread.
+ * 'text' (p: [x, y] world, dx, dy px, dy up, anchor 'start' | 'middle' | 'end';
+ * `lines`: the text wrapped, when it is, one line apart).
+ * `w`: the text's measured width (of its widest line). `chosen`: whether it belongs to the chosen thread.
  */
 export function label(fields) {
   const rank = RANK[fields.key] ?? 20;
@@ -92,6 +93,42 @@ export function label(fields) {
     must: chosen && dim && MUST.has(fields.key),
     at: null,
   };
+}
+
+/**
+ * `text` broken into lines at most `max` pixels wide (by `width`), where a
+ * line may break: after a space or a colon or comma, before a parenthesis,
+ * between two CJK characters; a piece wider than `max` keeps its own line.
+ * Null when it fits on one line.
+ */
+export function wrap(text, max, width) {
+  if (!(width(text) > max)) return null;
+  const pieces = [];
+  let piece = '';
+  const chars = [...text];
+  let depth = 0; // no break inside parentheses
+  chars.forEach((ch, k) => {
+    const next = chars[k + 1] ?? '';
+    piece += ch;
+    if (/[(（]/.test(ch)) depth++;
+    if (/[)）]/.test(ch)) depth = Math.max(0, depth - 1);
+    const cjk = (c) => c.codePointAt(0) >= 0x2e80 && !/[：，、（）()]/.test(c);
+    const after = /[\s:：,，、]/.test(ch) && !/[\s:：,，、]/.test(next);
+    if (!next || (depth === 0 && (after || /[(（]/.test(next) || (cjk(ch) && (cjk(next) || /\s/.test(next)))))) {
+      pieces.push(piece);
+      piece = '';
+    }
+  });
+  const lines = [];
+  let line = '';
+  for (const p of pieces) {
+    if (line && width((line + p).trimEnd()) > max) {
+      lines.push(line.trimEnd());
+      line = p.trimStart();
+    } else line += p;
+  }
+  if (line.trim()) lines.push(line.trimEnd());
+  return lines.length > 1 ? lines : null;
 }
 
 // ---------------------------------------------------------------------------
@@ -217,9 +254,12 @@ function* dimCandidates(lab, fr, view) {
 function textFrame(lab, xf) {
   const X = sx(xf, lab.p[0]);
   const Y = sy(xf, lab.p[1]);
-  const [bw, bh] = boxSize(lab.w, false);
+  const n = lab.lines ? lab.lines.length : 1;
+  const bw = lab.w + 4;
+  const bh = n * LINE;
   const px = X + lab.dx;
-  const py = Y - lab.dy;
+  // A text of several lines grows away from its point.
+  const py = Y - lab.dy - Math.sign(lab.dy) * ((n - 1) * LINE) / 2;
   const half = lab.anchor === 'start' ? bw / 2 : lab.anchor === 'end' ? -bw / 2 : 0;
   return { X, Y, px, py, half, bw, bh };
 }
@@ -260,7 +300,7 @@ function stackTexts(labels, xf, view) {
   const groups = new Map();
   for (const lab of labels) {
     delete lab.slot;
-    if (lab.kind !== 'text' || lab.anchor === 'middle' || Math.abs(lab.dy) > 1e-9) continue;
+    if (lab.kind !== 'text' || lab.anchor === 'middle' || Math.abs(lab.dy) > 1e-9 || lab.lines) continue;
     const fr = textFrame(lab, xf);
     const key = `${lab.anchor}:${Math.round(fr.px)}`;
     let g = groups.get(key);

@@ -7,7 +7,7 @@
 // (`setLayout(core.scene_layout())` before the first scene). Rendering walks
 // the arrays directly; a painter (canvas or SVG) draws screen-space primitives.
 
-import { label as labelRecord, placeLabels, fitLabels, frameOf, lineIndex } from './labels.js';
+import { label as labelRecord, placeLabels, fitLabels, frameOf, lineIndex, wrap, LINE } from './labels.js';
 
 /** The record layout: `stride`, field offsets by name, shape codes by name, anchor names. */
 let STRIDE = 10;
@@ -287,6 +287,7 @@ export function sceneLabels(scene, opts) {
   const { styles, count, annotated } = scene.prepared;
   const chosen = (opts.thread ?? 0) + 1;
   const only = annotated > MAX_ANNOTATED ? chosen : 0;
+  const wrapAt = opts.width > 0 ? Math.max(0.45 * opts.width, 160) : Infinity;
   const out = [];
   for (let i = 0; i < count; i++) {
     const o = i * STRIDE;
@@ -311,7 +312,10 @@ export function sceneLabels(scene, opts) {
         }),
       );
     } else {
-      out.push(labelRecord({ ...common, kind: 'text', p: [coords[c], coords[c + 1]], dx: coords[c + 2], dy: coords[c + 3], anchor: ANCHORS[items[o + F.extra]] || 'start' }));
+      // A text wider than about half the view goes on several lines.
+      const lines = wrap(text, wrapAt, textWidth);
+      if (lines) common.w = Math.max(...lines.map(textWidth));
+      out.push(labelRecord({ ...common, lines, kind: 'text', p: [coords[c], coords[c + 1]], dx: coords[c + 2], dy: coords[c + 3], anchor: ANCHORS[items[o + F.extra]] || 'start' }));
     }
   }
   return out;
@@ -343,7 +347,7 @@ function scratch(coords, count) {
  * opts: { tr(key, value), styleNames, highlight: Set<item index> | null, light
  *   (the cursor line's lighter mark), thread (the chosen one), stale, width,
  *   height, cull (skip paths outside width × height) }
- * Returns the labels as placed: {placed: [{item, key, text, box, angle, must}], dropped: [{item, key, text}]}.
+ * Returns the labels as placed: {placed: [{item, key, text, lines (as drawn), align (of the lines in the box), box, angle, must}], dropped: [{item, key, text}]}.
  */
 export function drawScene(painter, scene, xf, opts) {
   prepare(scene, opts.styleNames);
@@ -453,7 +457,13 @@ export function drawScene(painter, scene, xf, opts) {
         const halo = hi && hi.has(i) ? HIGHLIGHT_HALO[opts.light ? 1 : 0] : true;
         if (shape === SHAPE.dim) dimension(painter, l, xf, pen);
         else if (l.at.lead) painter.path(new Float64Array(l.at.lead), false, { stroke: pen.stroke || pen.text, width: 0.7, alpha: 0.8 });
-        if (l.text) painter.text(l.at.cx, l.at.cy, l.text, { ...pen, halo }, 'middle', 'middle', l.at.angle);
+        if (l.lines) {
+          // Lines of a wrapped text line up on the side of its point.
+          const [x0, , x1] = l.at.box;
+          const x = l.anchor === 'start' ? x0 + 2 : l.anchor === 'end' ? x1 - 2 : l.at.cx;
+          l.lines.forEach((line, k) => painter.text(x, l.at.cy + (k - (l.lines.length - 1) / 2) * LINE, line, { ...pen, halo }, l.anchor, 'middle', 0));
+        }
+        else if (l.text) painter.text(l.at.cx, l.at.cy, l.text, { ...pen, halo }, 'middle', 'middle', l.at.angle);
         break;
       }
       case SHAPE.marker:
@@ -555,7 +565,7 @@ export function drawScene(painter, scene, xf, opts) {
   const placed = [];
   const dropped = [];
   for (const l of labels) {
-    if (l.at) placed.push({ item: l.i, key: l.key, text: l.text, box: l.at.box.map((v) => Math.round(v * 100) / 100), angle: l.at.angle, must: l.must });
+    if (l.at) placed.push({ item: l.i, key: l.key, text: l.text, lines: l.lines || [l.text], align: l.lines ? l.anchor : 'middle', box: l.at.box.map((v) => Math.round(v * 100) / 100), angle: l.at.angle, must: l.must });
     else dropped.push({ item: l.i, key: l.key, text: l.text });
   }
   return { placed, dropped };
