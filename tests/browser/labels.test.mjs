@@ -174,6 +174,27 @@ try {
     }
   }
 
+  // ---- zoomed and panned: labels still inside the view, none overlapping ----
+  {
+    const page = await openApp(PROGRAMS[1], { width: 1400, height: 900 }, 'zh');
+    for (const v of VIEWS) {
+      const box = await page.locator(`#${v}`).boundingBox();
+      await page.mouse.move(box.x + box.width * 0.4, box.y + box.height * 0.55);
+      await page.mouse.wheel(0, -200);
+      await page.waitForTimeout(100);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width * 0.4 + 30, box.y + box.height * 0.55 - 20, { steps: 4 });
+      await page.mouse.up();
+      await page.waitForTimeout(300);
+      const l = await page.evaluate((v) => window.__screwcut.inspect('labels', v), v);
+      const xf = await page.evaluate(async (v) => (await window.__screwcut.inspect('view', v)).transform, v);
+      const bad = faults(l, []);
+      check(`zoomed in ×${xf.sx.toFixed(1)} and panned, ${v}: ${summary(l)} inside the view, none overlapping`, bad.length === 0, bad.slice(0, 6).join('; '));
+    }
+    await page.screenshot({ path: path.join(shots, 'labels-zoomed-g76-zh.png') });
+    await page.close();
+  }
+
   // ---- the cursor line's mark keeps the pass colours ----
   for (const prog of PROGRAMS.filter((p) => ['g76', 'l99'].includes(p.name))) {
     const page = await openApp(prog, { width: 1400, height: 900 }, 'en', '?engine=page');
