@@ -594,7 +594,8 @@ export function placeLabels(labels, xf, view, drawing = null) {
         if (score === 0) break;
       }
     }
-    const at = best || (lab.must ? least : null);
+    // Another thread's label goes only where it crosses no dimension: else it is left out.
+    const at = (best && (lab.chosen || bestScore < 2) ? best : null) || (lab.must ? least : null);
     if (!at) continue;
     at.angle = dim && fr.vertical ? -90 : 0;
     if (!dim && Math.hypot(lab.dx, lab.dy) < LINE && Math.abs(at.cy - fr.py) >= (lab.slot !== undefined ? 2 : LINE / 2)) {
