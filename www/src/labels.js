@@ -6,21 +6,26 @@
 // This module knows nothing of the packed record layout (render.js walks the
 // scene and hands it label records); it does two things with them:
 //
-// - `fitLabels`: the world→screen transform whose scale leaves room, inside
-//   the view, for the geometry to fit and for every label at its preferred
-//   place. World extents grow with the scale, pixel margins do not, so the
-//   largest scale is solved per axis (a bisection on a convex function).
 // - `placeLabels`: at a given transform, a place for each label among its
 //   candidates (the preferred side of its dimension line, the other side,
 //   along the line, past its ends, the line stacked further out; a text
-//   shifted up or down a line, mirrored about its point, slid into the view)
-//   so that no two labels overlap and every label lies inside the view.
-//   Greedy in a stable priority order: the chosen thread's dimensions first.
-//   A label that fits nowhere is dropped, never the chosen thread's major,
-//   minor or lead.
+//   shifted up or down a line, mirrored about its point, slid into the view;
+//   a stack of texts beside one edge, as pass depths, kept in order) so that
+//   no two labels overlap and every label lies inside the view, crossing no
+//   dimension line and none of the drawing's lines where it can. Greedy in a
+//   stable priority order: the chosen thread's dimensions first. A label
+//   that fits nowhere is dropped, never the chosen thread's major, minor or
+//   lead; another thread's label is also dropped where it would cross a
+//   dimension.
+// - `fitLabels`: the world→screen transform whose scale leaves room, inside
+//   the view, for the geometry and for every label where placement puts it
+//   in a view without bounds. World extents grow with the scale, pixel
+//   margins do not, so the largest scale is solved per axis (a bisection on
+//   a convex function), a few rounds since the places depend on the scale.
 //
 // Boxes are [x0, y0, x1, y1] in CSS pixels of the view; every painter (canvas,
-// SVG, PNG) draws a label centred in the box placed here, so they agree.
+// SVG, PNG) draws a label in the box placed here, so they agree. A text
+// wider than about half its view is wrapped (`wrap`) before it is placed.
 
 /** Height of a label's box: 12 px text and its halo. */
 export const LINE = 15;
