@@ -168,6 +168,8 @@ pub enum Shape {
     },
     /// An aligned dimension between `a` and `b`, its line drawn `offset`
     /// pixels to the left of a→b (positive: left, as seen walking from a to b).
+    /// Renderers may move the line further out and its text along or beside
+    /// it, so that labels do not overlap.
     Dim {
         /// First end.
         a: Pt,
@@ -250,11 +252,15 @@ pub enum Style {
     Start,
     /// The ruler of axial offsets.
     Ruler,
+    /// A diameter in the side section: a dimension from the spindle axis to
+    /// the diameter, drawn as a half-section's half dimension (one arrowhead,
+    /// at the diameter; its line runs towards the axis).
+    Diameter,
 }
 
 impl Style {
     /// Every style, in the order of their packed codes.
-    pub const ALL: [Style; 23] = [
+    pub const ALL: [Style; 24] = [
         Style::Axis,
         Style::Outline,
         Style::Crest,
@@ -278,6 +284,7 @@ impl Style {
         Style::Circle,
         Style::Start,
         Style::Ruler,
+        Style::Diameter,
     ];
 
     /// The name renderers know the style by (as serialised).
@@ -306,6 +313,7 @@ impl Style {
             Style::Circle => "circle",
             Style::Start => "start",
             Style::Ruler => "ruler",
+            Style::Diameter => "diameter",
         }
     }
 

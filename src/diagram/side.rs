@@ -444,7 +444,7 @@ pub fn thread_items(
             let (c, r) = (band.crest(band.l1), band.root(band.l1));
             if t.internal { (r, c) } else { (c, r) }
         };
-        // Diameters at the cut's end, beyond it.
+        // Diameters at the cut's end, beyond it: half dimensions from the axis.
         for (r, key, off) in [(minor_r, "dia_minor", 18.0), (major_r, "dia_major", 36.0)] {
             let shape = Shape::Dim {
                 a: [band.l1, 0.0],
@@ -452,7 +452,7 @@ pub fn thread_items(
                 offset: -s * off,
                 label: Label::new(key, num(2.0 * r)),
             };
-            front.push((own(shape, Style::Dimension), false));
+            front.push((own(shape, Style::Diameter), false));
         }
     } else {
         let outer = band.l0.max(band.l1);

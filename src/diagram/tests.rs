@@ -506,3 +506,26 @@ fn indexed_work_extent_equals_the_scan() {
     }
     assert!(found >= 10, "{found} threads with work");
 }
+
+/// The diameters of a thread along Z are half dimensions from the axis (one
+/// arrowhead, at the diameter): style `Diameter`, first end on the axis; the
+/// other dimensions keep the `Dimension` style.
+#[test]
+fn diameters_are_half_dimensions_from_the_axis() {
+    let plan = plan_default(O1006, Dialect::Gsk980tdc);
+    let scene = side(&plan);
+    let dias: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Diameter).collect();
+    let keys: Vec<&str> = dias
+        .iter()
+        .filter_map(|i| match &i.shape {
+            Shape::Dim { a, b, label, .. } => {
+                assert!(a[1] == 0.0 && a[0] == b[0] && b[1] > 0.0, "{:?}", i.shape);
+                Some(label.key)
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(keys, ["dia_minor", "dia_major"]);
+    let others: Vec<&'static str> = dims(&scene).iter().map(|(k, _)| *k).filter(|k| !k.starts_with("dia_")).collect();
+    assert_eq!(others, ["lead", "length"]);
+}

@@ -173,6 +173,10 @@ try {
   const y1 = await page.evaluate(() => window.scrollY);
   check('the wheel over a drawing scrolls the page', y1 > y0, `${y0} → ${y1}`);
   const before = await page.evaluate(() => document.getElementById('o1006')._views.side.transform().sx);
+  // The drawing back in view (the scroll may have taken its middle out of it).
+  await page.locator('#o1006 .view[data-view="side"] canvas').scrollIntoViewIfNeeded();
+  await page.waitForTimeout(150);
+  const y2 = await page.evaluate(() => window.scrollY);
   const box2 = await page.locator('#o1006 .view[data-view="side"] canvas').boundingBox();
   await page.mouse.move(box2.x + box2.width / 2, box2.y + box2.height / 2);
   await page.keyboard.down('Control');
@@ -180,7 +184,7 @@ try {
   await page.keyboard.up('Control');
   await page.waitForTimeout(150);
   const zoom = await page.evaluate(() => ({ sx: document.getElementById('o1006')._views.side.transform().sx, y: window.scrollY }));
-  check('Ctrl + wheel zooms the drawing instead', zoom.sx > before * 1.2 && zoom.y === y1, `${before} → ${zoom.sx}, scroll ${y1} → ${zoom.y}`);
+  check('Ctrl + wheel zooms the drawing instead', zoom.sx > before * 1.2 && zoom.y === y2, `${before} → ${zoom.sx}, scroll ${y2} → ${zoom.y}`);
   await page.evaluate(() => document.getElementById('o1006')._views.side.fit());
   await page.waitForTimeout(100);
   const at = await page.evaluate(() => {

@@ -265,7 +265,7 @@ export class Engine {
 
   /**
    * For tests and benchmarks: `view` (what view `name` shows), `pixels`
-   * (the inked pixels of its canvas), `layout`, `result` (keys and thread
+   * (the inked pixels of its canvas), `labels` (its labels as placed), `layout`, `result` (keys and thread
    * list of the last answer), `same_as_full` (whether the side section shown
    * equals a full build), `transfer` (the cost of a side scene as typed
    * arrays, objects and JSON).
@@ -290,6 +290,7 @@ export class Engine {
         return { n, w: c.width, h: c.height };
       },
       layout: () => this.core.scene_layout(),
+      labels: () => v && v.labels(),
       result: () => {
         const r = this.result;
         return r && { threads: r.threads, thread: r.thread, sideKey: r.sideKey, toothKey: r.toothKey, resumedAt: r.resumedAt, toothLabels: r.tooth?.labels };

@@ -7,6 +7,8 @@
 // (`setLayout(core.scene_layout())` before the first scene). Rendering walks
 // the arrays directly; a painter (canvas or SVG) draws screen-space primitives.
 
+import { label as labelRecord, placeLabels, fitLabels, frameOf, lineIndex, wrap, LINE } from './labels.js';
+
 /** The record layout: `stride`, field offsets by name, shape codes by name, anchor names. */
 let STRIDE = 10;
 let F = null;
@@ -44,6 +46,7 @@ export const PENS = {
   delta1: { fill: 'rgba(234,179,8,0.22)', text: '#854d0e' },
   delta2: { fill: 'rgba(249,115,22,0.20)', text: '#9a3412' },
   dimension: { stroke: '#374151', width: 1, text: '#111827' },
+  diameter: { stroke: '#374151', width: 1, text: '#111827' },
   note: { stroke: '#4b5563', width: 1, text: '#374151' },
   material: { fill: 'rgba(148,163,184,0.38)' },
   profile: { stroke: '#111827', width: 1.8 },
@@ -57,8 +60,44 @@ export const PENS = {
 };
 const ROLE_STROKE = [null, null, '#059669', '#7c3aed']; // none, rough, finish, spring
 const HIGHLIGHT = '#f59e0b';
-const HIGHLIGHT_TEXT = '#b45309';
-const FONT = '12px system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif';
+/** The halo of a highlighted label's text (strong, light). */
+const HIGHLIGHT_HALO = ['#fcd34d', '#fde68a'];
+const FAMILY = 'system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif';
+const FONT = `12px ${FAMILY}`;
+
+/** Widths of label texts in FONT, measured once each. */
+const WIDTHS = new Map();
+let measurer;
+
+/**
+ * The width of `s` in the label font, in CSS pixels: measured on a canvas
+ * (an OffscreenCanvas in a worker), else estimated. Every painter places
+ * labels with these widths, so a canvas, its PNG and its SVG agree.
+ */
+export function textWidth(s) {
+  let w = WIDTHS.get(s);
+  if (w !== undefined) return w;
+  if (measurer === undefined) {
+    measurer = null;
+    try {
+      const c = typeof OffscreenCanvas === 'function' ? new OffscreenCanvas(1, 1) : typeof document !== 'undefined' ? document.createElement('canvas') : null;
+      measurer = (c && c.getContext('2d')) || null;
+    } catch {
+      measurer = null;
+    }
+  }
+  if (measurer) {
+    measurer.font = FONT;
+    w = measurer.measureText(s).width;
+  } else {
+    // No canvas: wide glyphs (CJK) at a full em, the rest at about 0.6 em.
+    w = 0;
+    for (const ch of s) w += ch.codePointAt(0) > 0x2e80 ? 12 : 7;
+  }
+  if (WIDTHS.size > 4096) WIDTHS.clear();
+  WIDTHS.set(s, w);
+  return w;
+}
 
 /** Area fill colour of pass `i` (distinct hues, finishing passes green). */
 export function areaColour(pass, role) {
@@ -172,19 +211,114 @@ export function itemInfo(scene, i) {
   return { thread: it[o + F.thread] - 1, pass: it[o + F.pass] - 1, lines, style: scene.prepared.styles[i] };
 }
 
-/** A world→screen transform: X = tx + sx·x, Y = ty − sy·y. */
-export function fitTransform(rect, width, height, pad, stretch) {
-  const [x0, y0, x1, y1] = rect;
-  const w = Math.max(x1 - x0, 1e-9);
-  const h = Math.max(y1 - y0, 1e-9);
-  const aw = Math.max(width - 2 * pad, 10);
-  const ah = Math.max(height - 2 * pad, 10);
-  let sx = Math.min(aw / w, ah / h);
-  let sy = sx;
-  if (stretch) sy = Math.max(sx, ah / h);
-  const tx = width / 2 - sx * (x0 + x1) / 2;
-  const ty = height / 2 + sy * (y0 + y1) / 2;
-  return { sx, sy, tx, ty };
+/**
+ * The world→screen transform (X = tx + sx·x, Y = ty − sy·y) that fits the
+ * scene's focus and the labels drawn with `opts` (tr, styleNames, thread)
+ * into `width` × `height`; `stretch` lets the vertical scale exceed the horizontal.
+ */
+export function fitScene(scene, width, height, stretch, opts) {
+  return fitLabels(scene.focus, sceneLabels(scene, opts), width, height, stretch, sceneLines(scene));
+}
+
+/** Most of the drawing's segments labels keep off (those of threads and passes first). */
+const MAX_AVOIDED = 20000;
+/** Styles whose lines labels may cross: centre lines and filled zones. */
+const CROSSABLE = new Set(['axis', 'thread_zone', 'delta1', 'delta2']);
+
+/**
+ * The drawing's lines that labels keep off (paths, arrows and circles), as an
+ * index (labels.js `lineIndex`) kept with the scene.
+ */
+export function sceneLines(scene) {
+  const pr = scene.prepared;
+  if (pr.lines) return pr.lines;
+  const { items, coords } = scene;
+  // Segments of each item (polygons closed, circles as 24 chords), threads' items first.
+  const segments = (i) => {
+    const o = i * STRIDE;
+    if (CROSSABLE.has(pr.styles[i])) return 0;
+    const shape = items[o + F.shape];
+    const n = items[o + F.coord_len];
+    if (shape === SHAPE.polyline || shape === SHAPE.arrow) return Math.max(0, n / 2 - 1);
+    if (shape === SHAPE.polygon) return n >= 6 ? n / 2 : Math.max(0, n / 2 - 1);
+    return shape === SHAPE.circle ? 24 : 0;
+  };
+  const order = [];
+  for (const ofThreads of [true, false]) for (let i = 0; i < pr.count; i++) if (!items[i * STRIDE + F.thread] === !ofThreads) order.push(i);
+  let total = 0;
+  for (const i of order) total += segments(i);
+  const out = new Float64Array(4 * Math.min(total, MAX_AVOIDED));
+  let m = 0;
+  const put = (a, b, c, d) => {
+    if (m + 4 > out.length) return false;
+    out[m++] = a;
+    out[m++] = b;
+    out[m++] = c;
+    out[m++] = d;
+    return true;
+  };
+  for (const i of order) {
+    if (!segments(i)) continue;
+    const o = i * STRIDE;
+    const shape = items[o + F.shape];
+    const c = items[o + F.coord_start];
+    const n = items[o + F.coord_len];
+    let room = true;
+    if (shape === SHAPE.circle) {
+      const [x, y, r] = [coords[c], coords[c + 1], coords[c + 2]];
+      for (let k = 0; k < 24 && room; k++) room = put(x + r * Math.cos((k * Math.PI) / 12), y + r * Math.sin((k * Math.PI) / 12), x + r * Math.cos(((k + 1) * Math.PI) / 12), y + r * Math.sin(((k + 1) * Math.PI) / 12));
+    } else {
+      for (let k = 0; k + 3 < n && room; k += 2) room = put(coords[c + k], coords[c + k + 1], coords[c + k + 2], coords[c + k + 3]);
+      if (room && shape === SHAPE.polygon && n >= 6) room = put(coords[c + n - 2], coords[c + n - 1], coords[c], coords[c + 1]);
+    }
+    if (!room) break;
+  }
+  pr.lines = lineIndex(out.subarray(0, m), scene.focus);
+  return pr.lines;
+}
+
+/**
+ * The label records (labels.js) of the dimensions and texts drawn of
+ * `scene` with `opts`: with many threads, only the chosen thread's.
+ */
+export function sceneLabels(scene, opts) {
+  prepare(scene, opts.styleNames);
+  const { items, coords } = scene;
+  const { styles, count, annotated } = scene.prepared;
+  const chosen = (opts.thread ?? 0) + 1;
+  const only = annotated > MAX_ANNOTATED ? chosen : 0;
+  const wrapAt = opts.width > 0 ? Math.max(0.45 * opts.width, 160) : Infinity;
+  const out = [];
+  for (let i = 0; i < count; i++) {
+    const o = i * STRIDE;
+    const shape = items[o + F.shape];
+    if (shape !== SHAPE.dim && shape !== SHAPE.text) continue;
+    const thread = items[o + F.thread];
+    if (only && thread && thread !== only) continue;
+    const idx = items[o + F.label];
+    const text = labelText(scene, idx, opts.tr);
+    if (!text && shape === SHAPE.text) continue;
+    const key = scene.prepared.labels[idx - 1]?.[0] ?? '';
+    const c = items[o + F.coord_start];
+    const common = { i, key, text, w: text ? textWidth(text) : 0, chosen: !thread || annotated <= 1 || thread === chosen };
+    if (shape === SHAPE.dim) {
+      out.push(
+        labelRecord({
+          ...common,
+          kind: styles[i] === 'diameter' ? 'half' : 'dim',
+          a: [coords[c], coords[c + 1]],
+          b: [coords[c + 2], coords[c + 3]],
+          offset: coords[c + 4],
+        }),
+      );
+    } else {
+      // A text wider than about half the view goes on several lines.
+      const lines = wrap(text, wrapAt, textWidth);
+      if (lines) common.w = Math.max(...lines.map(textWidth));
+      out.push(labelRecord({ ...common, lines, kind: 'text', p: [coords[c], coords[c + 1]], dx: coords[c + 2], dy: coords[c + 3], anchor: ANCHORS[items[o + F.extra]] || 'start' }));
+    }
+  }
+  return out;
 }
 
 function labelText(scene, idx, tr) {
@@ -210,8 +344,10 @@ function scratch(coords, count) {
 
 /**
  * Draws `scene` with `painter` under transform `xf`.
- * opts: { tr(key, value), highlight: Set<item index> | null, stale, width, height,
- *   cull (skip paths outside width × height) }
+ * opts: { tr(key, value), styleNames, highlight: Set<item index> | null, light
+ *   (the cursor line's lighter mark), thread (the chosen one), stale, width,
+ *   height, cull (skip paths outside width × height) }
+ * Returns the labels as placed: {placed: [{item, key, text, lines (as drawn), align (of the lines in the box), box, angle, must}], dropped: [{item, key, text}]}.
  */
 export function drawScene(painter, scene, xf, opts) {
   prepare(scene, opts.styleNames);
@@ -219,11 +355,14 @@ export function drawScene(painter, scene, xf, opts) {
   const { styles, count } = scene.prepared;
   const X = (x) => xf.tx + xf.sx * x;
   const Y = (y) => xf.ty - xf.sy * y;
-  const hi = opts.highlight;
+  const hi = opts.highlight && opts.highlight.size && !opts.stale ? opts.highlight : null;
   // The cursor line's mark is lighter than what the pointer is over.
-  const haloAlpha = opts.light ? 0.22 : 0.45;
-  const placed = [];
-  const view = { w: opts.width, h: opts.height };
+  const haloAlpha = opts.light ? 0.3 : 0.5;
+  // Labels first: where each goes, or whether it is dropped, at this transform.
+  const labels = sceneLabels(scene, opts);
+  placeLabels(labels, xf, { w: opts.width || 1e6, h: opts.height || 1e6 }, sceneLines(scene));
+  const labelOf = new Map();
+  for (const l of labels) labelOf.set(l.i, l);
   const colourPen = (i) => {
     const o = i * STRIDE;
     const shape = items[o + F.shape];
@@ -234,63 +373,107 @@ export function drawScene(painter, scene, xf, opts) {
     return base;
   };
   const penOf = opts.stale ? (i) => greyPen(colourPen(i)) : colourPen;
-  const drawItem = (i, glow) => {
+  const haloPen = (pen) => ({ stroke: HIGHLIGHT, width: (pen.width || 1) + (opts.light ? 4 : 6), alpha: haloAlpha });
+  /** The screen points of a path item. */
+  const pathPoints = (c, n) => {
+    const pts = new Float64Array(n);
+    for (let k = 0; k < n; k += 2) {
+      pts[k] = X(coords[c + k]);
+      pts[k + 1] = Y(coords[c + k + 1]);
+    }
+    return pts;
+  };
+  /**
+   * Highlights: halos beneath the items, which keep their own colours on
+   * top. The halos of one width are one stroke (their union, at one alpha):
+   * halos of close lines do not pile up into a solid colour between them.
+   */
+  const drawHalos = (set) => {
+    const groups = new Map();
+    const add = (closed, width, pts) => {
+      const key = `${closed}:${width}`;
+      let g = groups.get(key);
+      if (!g) groups.set(key, (g = { closed, width, pts: [], spans: [] }));
+      g.spans.push(g.pts.length, pts.length);
+      for (const v of pts) g.pts.push(v);
+    };
+    const fills = [];
+    for (const i of set) {
+      if (i >= count) continue;
+      const o = i * STRIDE;
+      const shape = items[o + F.shape];
+      const pen = penOf(i);
+      const c = items[o + F.coord_start];
+      const n = items[o + F.coord_len];
+      const width = haloPen(pen).width;
+      switch (shape) {
+        case SHAPE.polyline:
+        case SHAPE.polygon:
+          add(shape === SHAPE.polygon, width, pathPoints(c, n));
+          break;
+        case SHAPE.arrow:
+          add(false, width, [X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]);
+          break;
+        case SHAPE.circle:
+          painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, haloPen(pen));
+          break;
+        case SHAPE.marker:
+          fills.push([X(coords[c]), Y(coords[c + 1])]);
+          break;
+        case SHAPE.dim:
+        case SHAPE.text: {
+          const l = labelOf.get(i);
+          if (!l || !l.at) break;
+          const [x0, y0, x1, y1] = l.at.box;
+          painter.path(new Float64Array([x0 - 1, y0, x1 + 1, y0, x1 + 1, y1, x0 - 1, y1]), true, { fill: HIGHLIGHT, alpha: haloAlpha });
+          if (shape === SHAPE.dim) for (const [p, q] of dimLines(l, xf)) add(false, width, [p[0], p[1], q[0], q[1]]);
+          break;
+        }
+      }
+    }
+    for (const g of groups.values()) painter.paths(Float64Array.from(g.pts), g.spans, g.closed, { stroke: HIGHLIGHT, width: g.width, alpha: haloAlpha });
+    for (const [x, y] of fills) painter.circle(x, y, 6, { fill: HIGHLIGHT, alpha: haloAlpha });
+  };
+  const drawItem = (i) => {
     const o = i * STRIDE;
     const shape = items[o + F.shape];
     const pen = penOf(i);
     const c = items[o + F.coord_start];
-    const n = items[o + F.coord_len];
     switch (shape) {
       case SHAPE.polyline:
-      case SHAPE.polygon: {
-        const pts = new Float64Array(n);
-        for (let k = 0; k < n; k += 2) {
-          pts[k] = X(coords[c + k]);
-          pts[k + 1] = Y(coords[c + k + 1]);
-        }
-        const closed = shape === SHAPE.polygon;
-        // A highlight is a halo under the item, which keeps its own colours on top.
-        if (glow === 'halo') painter.path(pts, closed, closed ? { stroke: HIGHLIGHT, width: 3, alpha: 2 * haloAlpha } : { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
-        else painter.path(pts, closed, pen);
+      case SHAPE.polygon:
+        painter.path(pathPoints(c, items[o + F.coord_len]), shape === SHAPE.polygon, pen);
         break;
-      }
       case SHAPE.circle:
-        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
-        else painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, pen);
+        painter.circle(X(coords[c]), Y(coords[c + 1]), coords[c + 2] * xf.sx, pen);
         break;
       case SHAPE.arrow:
-        if (glow === 'halo') painter.path(new Float64Array([X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3])]), false, { stroke: HIGHLIGHT, width: (pen.width || 1) + 5, alpha: haloAlpha });
-        else arrow(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), pen);
+        arrow(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), pen);
         break;
       case SHAPE.dim:
-        if (glow === 'halo') break;
-        dimension(painter, X(coords[c]), Y(coords[c + 1]), X(coords[c + 2]), Y(coords[c + 3]), coords[c + 4],
-          labelText(scene, items[o + F.label], opts.tr), glow ? { ...pen, stroke: HIGHLIGHT_TEXT, text: HIGHLIGHT_TEXT } : pen, view);
-        break;
       case SHAPE.text: {
-        const s = labelText(scene, items[o + F.label], opts.tr);
-        if (!s || glow === 'halo') break;
-        const x = X(coords[c]) + coords[c + 2];
-        const y = Y(coords[c + 1]) - coords[c + 3];
-        const anchor = ANCHORS[items[o + F.extra]] || 'start';
-        if (!glow) {
-          // Skip a text that would overprint one already drawn.
-          const w = painter.measure(s);
-          const x0 = anchor === 'start' ? x : anchor === 'end' ? x - w : x - w / 2;
-          const box = [x0, y - 7, x0 + w, y + 7];
-          if (placed.some((b) => box[0] < b[2] && b[0] < box[2] && box[1] < b[3] && b[1] < box[3])) break;
-          placed.push(box);
+        const l = labelOf.get(i);
+        if (!l || !l.at) break;
+        const halo = hi && hi.has(i) ? HIGHLIGHT_HALO[opts.light ? 1 : 0] : true;
+        if (shape === SHAPE.dim) dimension(painter, l, xf, pen);
+        else if (l.at.lead) painter.path(new Float64Array(l.at.lead), false, { stroke: pen.stroke || pen.text, width: 0.7, alpha: 0.8 });
+        if (l.lines) {
+          // Lines of a wrapped text line up on the side of its point.
+          const [x0, , x1] = l.at.box;
+          const x = l.anchor === 'start' ? x0 + 2 : l.anchor === 'end' ? x1 - 2 : l.at.cx;
+          l.lines.forEach((line, k) => painter.text(x, l.at.cy + (k - (l.lines.length - 1) / 2) * LINE, line, { ...pen, halo }, l.anchor, 'middle', 0));
         }
-        painter.text(x, y, s, glow ? { ...pen, text: HIGHLIGHT_TEXT } : pen, anchor, 'middle');
+        else if (l.text) painter.text(l.at.cx, l.at.cy, l.text, { ...pen, halo }, 'middle', 'middle', l.at.angle);
         break;
       }
       case SHAPE.marker:
-        if (glow === 'halo') painter.circle(X(coords[c]), Y(coords[c + 1]), 7, { fill: HIGHLIGHT, alpha: haloAlpha });
-        else marker(painter, X(coords[c]), Y(coords[c + 1]), items[o + F.extra], pen);
+        marker(painter, X(coords[c]), Y(coords[c + 1]), items[o + F.extra], pen);
         break;
     }
   };
   painter.begin(opts.stale);
+  // Highlights go beneath everything: they mark without covering.
+  if (hi) drawHalos(hi);
   // Paths of one pen are drawn together (one stroke or fill per pen), in the
   // order the pens first appear; the other shapes follow, in item order.
   // A path that repeats one already in its batch (to 1/8 px on screen) adds
@@ -366,21 +549,26 @@ export function drawScene(painter, scene, xf, opts) {
     const o = b.first * STRIDE;
     painter.paths(buf, b.spans, items[o + F.shape] === SHAPE.polygon, penOf(b.first));
   }
-  // With many threads, dimensions and texts of the chosen thread only.
-  const only = scene.prepared.annotated > MAX_ANNOTATED ? (opts.thread ?? 0) + 1 : 0;
-  for (const i of rest) {
-    const o = i * STRIDE;
-    const shape = items[o + F.shape];
-    if (only && items[o + F.thread] && items[o + F.thread] !== only && (shape === SHAPE.dim || shape === SHAPE.text)) continue;
-    drawItem(i, false);
-  }
-  if (hi && hi.size && !opts.stale) {
-    // Every halo first, then the items over them in their own colours:
-    // a highlight marks what it highlights without washing it out.
-    for (const i of hi) if (i < count) drawItem(i, 'halo');
-    for (const i of hi) if (i < count) drawItem(i, true);
+  for (const i of rest) drawItem(i);
+  if (hi && !opts.light) {
+    // What the pointer is over also comes to the front: its lines in their
+    // own pens, a filled area outlined (a second fill would change its colour).
+    for (const i of hi) {
+      if (i >= count) continue;
+      const o = i * STRIDE;
+      const shape = items[o + F.shape];
+      if (shape === SHAPE.polygon) painter.path(pathPoints(items[o + F.coord_start], items[o + F.coord_len]), true, { stroke: HIGHLIGHT, width: 1.5 });
+      else if (shape === SHAPE.polyline || shape === SHAPE.arrow || shape === SHAPE.marker) drawItem(i);
+    }
   }
   painter.end();
+  const placed = [];
+  const dropped = [];
+  for (const l of labels) {
+    if (l.at) placed.push({ item: l.i, key: l.key, text: l.text, lines: l.lines || [l.text], align: l.lines ? l.anchor : 'middle', box: l.at.box.map((v) => Math.round(v * 100) / 100), angle: l.at.angle, must: l.must });
+    else dropped.push({ item: l.i, key: l.key, text: l.text });
+  }
+  return { placed, dropped };
 }
 
 /** Whether the `n` numbers at `a` and at `c` of `buf` agree to 1/8 px. */
@@ -404,81 +592,58 @@ function marker(p, x, y, glyph, pen) {
   else p.path(new Float64Array([x - 4, y - 4, x + 4, y + 4, x - 4, y + 4, x + 4, y - 4]), false, { stroke, width: 1.6, segments: true });
 }
 
-/** An aligned dimension: extension lines, dimension line with arrows, text. */
-function dimension(p, ax, ay, bx, by, offset, text, pen, view) {
-  const dx = bx - ax;
-  const dy = by - ay;
-  const len = Math.hypot(dx, dy);
-  if (!(len > 0.5)) return;
-  // Left of a→b in world terms is (dy, -dx) on screen (y points down).
-  const nx = dy / len;
-  const ny = -dx / len;
-  const sgn = offset >= 0 ? 1 : -1;
-  const ext = (x, y) => new Float64Array([x + nx * 2 * sgn, y + ny * 2 * sgn, x + nx * (offset + 4 * sgn), y + ny * (offset + 4 * sgn)]);
-  const thin = { stroke: pen.stroke, width: 0.8 };
-  if (Math.abs(offset) > 3) {
-    p.path(ext(ax, ay), false, thin);
-    p.path(ext(bx, by), false, thin);
+/** The lines a placed dimension label `l` draws: [[p, q], …] in pixels (its line first). */
+function dimLines(l, xf) {
+  const fr = frameOf(l, xf);
+  const { A, B, n, u, sgn } = fr;
+  const o = l.at.off;
+  const ext = (P) => [
+    [P[0] + n[0] * 2 * sgn, P[1] + n[1] * 2 * sgn],
+    [P[0] + n[0] * (o + 4 * sgn), P[1] + n[1] * (o + 4 * sgn)],
+  ];
+  if (l.kind === 'half') {
+    const S = l.at.S;
+    const line = [S, [S[0] - u[0] * l.at.len, S[1] - u[1] * l.at.len]];
+    return Math.abs(o) > 3 ? [line, ext(B)] : [line];
   }
-  const x0 = ax + nx * offset;
-  const y0 = ay + ny * offset;
-  const x1 = bx + nx * offset;
-  const y1 = by + ny * offset;
+  const line = [
+    [A[0] + n[0] * o, A[1] + n[1] * o],
+    [B[0] + n[0] * o, B[1] + n[1] * o],
+  ];
+  return Math.abs(o) > 3 ? [line, ext(A), ext(B)] : [line];
+}
+
+/**
+ * A dimension placed by labels.js: extension lines, its line with arrows.
+ * A half dimension (of a diameter, from the axis) has one arrowhead, at the
+ * feature, and its line runs towards the axis as far as its text needs.
+ */
+function dimension(p, l, xf, pen) {
+  const fr = frameOf(l, xf);
+  const [line, ...exts] = dimLines(l, xf);
+  const thin = { stroke: pen.stroke, width: 0.8 };
+  for (const [a, b] of exts) p.path(new Float64Array([a[0], a[1], b[0], b[1]]), false, thin);
+  const [[x0, y0], [x1, y1]] = line;
   p.path(new Float64Array([x0, y0, x1, y1]), false, pen);
-  const ux = dx / len;
-  const uy = dy / len;
+  const { n, u } = fr;
   const head = (x, y, dir) => {
     const L = 7;
     const W = 2.6;
-    const bx2 = x - ux * L * dir;
-    const by2 = y - uy * L * dir;
-    p.path(new Float64Array([x, y, bx2 + nx * W, by2 + ny * W, bx2 - nx * W, by2 - ny * W]), true, { fill: pen.stroke });
+    const bx2 = x - u[0] * L * dir;
+    const by2 = y - u[1] * L * dir;
+    p.path(new Float64Array([x, y, bx2 + n[0] * W, by2 + n[1] * W, bx2 - n[0] * W, by2 - n[1] * W]), true, { fill: pen.stroke });
   };
-  if (len > 20) {
+  if (l.kind === 'half') {
+    head(x0, y0, 1);
+    return;
+  }
+  if (Math.hypot(x1 - x0, y1 - y0) > 20) {
     head(x0, y0, -1);
     head(x1, y1, 1);
   } else {
     head(x0, y0, 1);
     head(x1, y1, -1);
   }
-  if (!text) return;
-  // The text sits at the middle of the part of the line that is on screen.
-  const [cx, cy] = visibleMiddle(x0, y0, x1, y1, view);
-  const tx = cx + nx * 7 * sgn;
-  const ty = cy + ny * 7 * sgn;
-  if (Math.abs(nx) > 0.7) {
-    // A vertical dimension: the text runs along its line, reading upward.
-    p.text(cx + nx * 4 * sgn, cy, text, { ...pen, halo: true }, 'middle', nx * sgn > 0 ? 'top' : 'bottom', -90);
-    return;
-  }
-  p.text(tx, ty, text, { ...pen, halo: true }, 'middle', ny * sgn < 0 ? 'bottom' : 'top');
-}
-
-function visibleMiddle(x0, y0, x1, y1, view) {
-  if (!view.w) return [(x0 + x1) / 2, (y0 + y1) / 2];
-  // Liang–Barsky clip to the view with a margin.
-  const m = 14;
-  let t0 = 0;
-  let t1 = 1;
-  const dx = x1 - x0;
-  const dy = y1 - y0;
-  const clip = (pp, q) => {
-    if (pp === 0) return q >= 0;
-    const r = q / pp;
-    if (pp < 0) {
-      if (r > t1) return false;
-      if (r > t0) t0 = r;
-    } else {
-      if (r < t0) return false;
-      if (r < t1) t1 = r;
-    }
-    return true;
-  };
-  if (clip(-dx, x0 - m) && clip(dx, view.w - m - x0) && clip(-dy, y0 - m) && clip(dy, view.h - m - y0)) {
-    const t = (t0 + t1) / 2;
-    return [x0 + dx * t, y0 + dy * t];
-  }
-  return [(x0 + x1) / 2, (y0 + y1) / 2];
 }
 
 /** A painter on a 2D canvas context (already scaled for devicePixelRatio). */
@@ -551,7 +716,7 @@ export function canvasPainter(ctx) {
       ctx.textBaseline = baseline;
       if (pen.halo) {
         ctx.lineWidth = 3;
-        ctx.strokeStyle = 'rgba(255,255,255,0.85)';
+        ctx.strokeStyle = typeof pen.halo === 'string' ? pen.halo : 'rgba(255,255,255,0.85)';
         ctx.setLineDash([]);
         ctx.strokeText(s, 0, 0);
       }
@@ -560,8 +725,7 @@ export function canvasPainter(ctx) {
       ctx.restore();
     },
     measure(s) {
-      ctx.font = FONT;
-      return ctx.measureText(s).width;
+      return textWidth(s);
     },
   };
 }
@@ -618,15 +782,15 @@ export function svgPainter(width, height) {
     },
     text(x, y, s, pen, anchor, baseline, angle = 0) {
       const dominant = baseline === 'middle' ? 'central' : baseline === 'top' ? 'hanging' : 'text-after-edge';
-      const halo = pen.halo ? ' stroke="white" stroke-width="3" paint-order="stroke"' : '';
+      const halo = pen.halo ? ` stroke="${typeof pen.halo === 'string' ? pen.halo : 'white'}" stroke-width="3" paint-order="stroke"` : '';
       const rot = angle ? ` transform="rotate(${angle} ${f(x)} ${f(y)})"` : '';
       out.push(`<text x="${f(x)}" y="${f(y)}" text-anchor="${anchor}" dominant-baseline="${dominant}"${rot} fill="${pen.text || pen.stroke || '#111827'}"${halo}>${esc(s)}</text>`);
     },
     measure(s) {
-      return s.length * 7;
+      return textWidth(s);
     },
     svg() {
-      return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="system-ui, sans-serif" font-size="12">\n<rect width="100%" height="100%" fill="white"/>\n${out.join('\n')}\n</svg>\n`;
+      return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="${esc(FAMILY)}" font-size="12">\n<rect width="100%" height="100%" fill="white"/>\n${out.join('\n')}\n</svg>\n`;
     },
   };
 }

@@ -5,9 +5,7 @@
 // zoom around a point, fit, an optional radial stretch, hit-testing and
 // SVG/PNG export of what it shows.
 
-import { drawScene, canvasPainter, fitTransform, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
-
-const PAD = 56;
+import { drawScene, canvasPainter, fitScene, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
 
 /** The next frame: the window's or the worker's animation frame, else a timer. */
 const nextFrame = (f) => (typeof globalThis.requestAnimationFrame === 'function' ? globalThis.requestAnimationFrame(f) : setTimeout(f, 16));
@@ -33,6 +31,8 @@ export class SceneView {
     this.cssH = 1;
     this.lastDraw = 0;
     this.drawTime = 0; // milliseconds spent drawing since the owner last zeroed it
+    this.placed = { placed: [], dropped: [] }; // the labels of the last draw
+    this.fitFor = ''; // the language the fit made room for
   }
 
   /** The size shown, in CSS pixels, and the device pixel ratio. */
@@ -73,9 +73,29 @@ export class SceneView {
     return this.stretch;
   }
 
+  /**
+   * The world→screen transform: until the user pans or zooms, the fit of the
+   * scene with room for its labels (made again when the labels' language changes).
+   */
   transform() {
-    if (!this.xf && this.scene) this.xf = fitTransform(this.scene.focus, this.cssW, this.cssH, PAD, this.stretch);
+    if (!this.scene) return this.xf;
+    const lang = this.language();
+    if (this.auto && this.xf && this.fitFor !== lang) this.xf = null;
+    if (!this.xf) {
+      this.xf = fitScene(this.scene, this.cssW, this.cssH, this.stretch, this.drawOptions(null, false, false));
+      this.fitFor = lang;
+    }
     return this.xf;
+  }
+
+  /** What tells the languages of labels apart: two labels as `tr` words them. */
+  language() {
+    return `${this.opts.tr('dia_minor', '')}|${this.opts.tr('axial_offsets', '')}`;
+  }
+
+  /** The labels of the last draw as placed (boxes in CSS pixels) and those dropped, with the view's size. */
+  labels() {
+    return { size: [this.cssW, this.cssH], ...this.placed };
   }
 
   /** Moves the drawing by (dx, dy) CSS pixels. */
@@ -104,6 +124,8 @@ export class SceneView {
   setThread(t) {
     if (t !== this.thread) {
       this.thread = t;
+      // Its labels are others: a fit makes room for them.
+      if (this.auto) this.xf = null;
       this.draw();
     }
   }
@@ -146,7 +168,7 @@ export class SceneView {
     if (this.scene) {
       const t0 = performance.now();
       ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-      drawScene(canvasPainter(ctx), this.scene, this.transform(), this.drawOptions(this.highlight, this.stale, true));
+      this.placed = drawScene(canvasPainter(ctx), this.scene, this.transform(), this.drawOptions(this.highlight, this.stale, true));
       this.lastDraw = performance.now() - t0;
       this.drawTime += this.lastDraw;
     }

@@ -61,9 +61,13 @@ pub fn ensure_wasm_bindgen() -> Result {
     run("cargo", &["install", "wasm-bindgen-cli", "--version", &want, "--force"], None)
 }
 
-/// Installs Debian's Chromium and ChromeDriver when they are missing.
+/// Installs Debian's Chromium, ChromeDriver and CJK fonts (Chinese labels) when they are missing.
 pub fn ensure_chromium() -> Result {
-    ensure_debian(&[("/usr/bin/chromium", "chromium"), ("/usr/bin/chromedriver", "chromium-driver")])
+    ensure_debian(&[
+        ("/usr/bin/chromium", "chromium"),
+        ("/usr/bin/chromedriver", "chromium-driver"),
+        ("/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc", "fonts-noto-cjk"),
+    ])
 }
 
 /// Installs Debian's `linuxcnc-uspace` when `rs274`, LinuxCNC's stand-alone

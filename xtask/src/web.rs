@@ -215,8 +215,10 @@ fn passed_count(line: &str) -> Option<u32> {
 /// (`test.mjs`), its engine in a worker and on the page and a program too
 /// big to draw whole (`engine.test.mjs`), the documentation page of
 /// embedded previews (`docs.test.mjs`), hostile links, the program
-/// list and the element's guards (`safety.test.mjs`), then the keyboard,
-/// a phone's screen and Chinese (`access.test.mjs`); fails when any fails.
+/// list and the element's guards (`safety.test.mjs`), the keyboard, a
+/// phone's screen and Chinese (`access.test.mjs`), then the drawings' labels
+/// in the app and in embeds, English and Chinese (`labels.test.mjs`); fails
+/// when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -234,7 +236,7 @@ pub fn browser_tests() -> Result {
     run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
     let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
     let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
-    let rest = ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs"]
+    let rest = ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs", "labels.test.mjs"]
         .map(|t| run("node", &[t, &url], Some(&dir)));
     rest.into_iter().fold(app, |all, r| all.and(r))
 }

@@ -38,8 +38,9 @@ fn o1006_side_scene_has_five_pass_paths() {
         assert_eq!(rapids.len(), 3, "pass {k}");
         assert_close(&rapids[0].coords, &[70.0, 29.0, 70.0, radii[k as usize]]);
     }
-    // Dimensions in program units: major Ø48 (assumed), minor Ø45.4, lead 2, thread length 57.
-    let dims = s.labels("dimension");
+    // Dimensions in program units: major Ø48 (assumed), minor Ø45.4 (diameters), lead 2, thread length 57.
+    let mut dims = s.labels("dimension");
+    dims.extend(s.labels("diameter"));
     for want in [("dia_major", "48"), ("dia_minor", "45.4"), ("lead", "2"), ("length", "57")] {
         assert!(dims.iter().any(|(k, v)| k == want.0 && v == want.1), "{want:?} in {dims:?}");
     }

@@ -11,12 +11,23 @@ export const STYLE = `
 :host { display: block; margin: 1em 0; color: #111827; font: 13px/1.4 system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif; }
 :host([hidden]) { display: none; }
 * { box-sizing: border-box; }
-.box { position: relative; border: 1px solid var(--screwcut-border, #d1d5db); border-radius: 6px; background: var(--screwcut-bg, #fff); overflow: hidden; }
-.views { display: grid; grid-template-columns: repeat(auto-fit, minmax(240px, 1fr)); gap: 1px; background: var(--screwcut-border, #d1d5db); }
-.view { position: relative; background: var(--screwcut-bg, #fff); min-width: 0; height: var(--h, 320px); }
-.view canvas { display: block; width: 100%; height: 100%; cursor: grab; touch-action: pan-y; }
-.view .cap { position: absolute; left: 6px; top: 4px; font-size: 11px; color: #6b7280; pointer-events: none; }
-.view.table { overflow: auto; padding-top: 20px; }
+.box { position: relative; border: 1px solid var(--screwcut-border, #d1d5db); border-radius: 6px; background: var(--screwcut-bg, #fff); overflow: hidden; container-type: inline-size; }
+/* Two drawings share a row; three put the side section on a row of its own
+   and the tooth and starts side by side under it; a drawing alone, and the
+   pass table (it needs the width for its columns), take whole rows. A
+   narrow element has one column. No cell is left empty. */
+.views { display: grid; grid-template-columns: repeat(2, minmax(0, 1fr)); grid-auto-flow: row dense; gap: 1px; background: var(--screwcut-border, #d1d5db); }
+.views > .view.table,
+.views > .view:only-child,
+.views:not(:has(> .view:not(.table) ~ .view:not(.table))) > .view,
+.views:has(> [data-view="tooth"]):has(> [data-view="starts"]) > [data-view="side"] { grid-column: 1 / -1; }
+@container (max-width: 560px) { .views { grid-template-columns: minmax(0, 1fr); } }
+.view { position: relative; background: var(--screwcut-bg, #fff); min-width: 0; height: var(--h, 320px); display: flex; flex-direction: column; }
+/* A drawing's caption is a line above its canvas, so that no label goes under it. */
+.view canvas { display: block; width: 100%; flex: 1; min-height: 0; cursor: grab; touch-action: pan-y; }
+.view .cap { order: -1; padding: 3px 6px 0; line-height: 14px; font-size: 11px; color: #6b7280; pointer-events: none; }
+.view.table .cap { position: absolute; left: 6px; top: 4px; padding: 0; }
+.view.table { display: block; overflow: auto; padding-top: 20px; height: auto; max-height: var(--h, 320px); }
 .wait { display: flex; align-items: center; justify-content: center; color: #9ca3af; }
 table { border-collapse: collapse; width: 100%; font-variant-numeric: tabular-nums; font-size: 12px; }
 th, td { padding: 2px 6px; text-align: right; border-bottom: 1px solid #f3f4f6; white-space: nowrap; }
