@@ -122,7 +122,7 @@ fn pen(style: Style) -> Pen {
         Style::OtherRapid => line("#a3a9b5", 1.0, &[3.0, 4.0]),
         Style::Delta1 => Pen { fill: Some("rgba(234,179,8,0.22)"), text: Some("#854d0e"), ..NONE },
         Style::Delta2 => Pen { fill: Some("rgba(249,115,22,0.20)"), text: Some("#9a3412"), ..NONE },
-        Style::Dimension => Pen { text: Some("#111827"), ..line("#374151", 1.0, &[]) },
+        Style::Dimension | Style::Diameter => Pen { text: Some("#111827"), ..line("#374151", 1.0, &[]) },
         Style::Note => Pen { text: Some("#374151"), ..line("#4b5563", 1.0, &[]) },
         Style::Material => Pen { fill: Some("rgba(148,163,184,0.38)"), ..NONE },
         Style::Profile => line("#111827", 1.8, &[]),
