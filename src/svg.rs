@@ -1,61 +1,131 @@
-//! A scene as a standalone SVG document (`screwcut svg`), drawn as the web
-//! app draws it (`www/src/render.js`: the same pens, dashes, widths, role
-//! colours, dimensions, markers and text placement), so that the app's SVG
-//! export and the command line give the same drawing.
+//! A scene as a standalone SVG document (`screwcut svg`, and the web app's
+//! SVG export through `Session::svg`), drawn as the app's canvas draws it
+//! (`www/src/render.js`: the same pens, dashes, widths, role colours, area
+//! fills, dimensions, markers, arrowheads and label halos).
 //!
-//! The scene's focus (what the app's Fit shows) is fitted into `width ×
-//! height` less a padding (world → screen, +y up in the world, down on the
-//! page), then the `viewBox` is grown to hold every label, whose extent is
-//! estimated from the font size and the characters ([`measure`]); shapes are
-//! clipped to it as the app's canvas clips them. Fonts are named by a family list that
-//! covers Latin, Greek and CJK text; the background is white, the document
-//! has a title: it prints as it shows.
+//! The page is `width × height` px and the `viewBox` is `0 0 width height`:
+//! shapes are clipped to it, every label is inside it.
+//!
+//! - With a [`Layout`] (what the app passes: the view's transform and the
+//!   labels as its canvas placed them), shapes are drawn with that transform
+//!   and every label exactly where it is given, so the export is what the
+//!   view shows.
+//! - With a transform and no labels, labels are placed at that transform
+//!   ([`place`]).
+//! - Without a layout (the command line), the drawing and its labels are
+//!   fitted to the page ([`fit`]) and the labels placed ([`place`]) by the
+//!   rules of `www/src/labels.js`, with text widths estimated from a table of
+//!   a sans-serif's advances ([`measure`]).
+//!
+//! Fonts are named by the app's family list, covering Latin, Greek and CJK;
+//! the background is white and the document has a title: it prints as it shows.
 
 use std::fmt::Write;
 
-use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Rect, Scene, Shape, Style, ViewKind};
-use crate::thread::Role;
+use serde::{Deserialize, Serialize};
 
-/// The font family list of every text.
-pub const FONT_FAMILY: &str = "system-ui, -apple-system, 'Segoe UI', 'Noto Sans', 'Noto Sans CJK SC', 'Microsoft YaHei', 'DejaVu Sans', sans-serif";
+use crate::diagram::scene::{Anchor, Pt, Scene, Shape, ViewKind};
+
+mod fit;
+mod labels;
+mod lines;
+mod paint;
+mod pens;
+mod place;
+mod text;
+
+pub use text::{measure, wrap};
+
+/// The font family list of every text (the app's label font).
+pub const FONT_FAMILY: &str = "system-ui, -apple-system, 'Segoe UI', 'Noto Sans CJK SC', 'Microsoft YaHei', sans-serif";
+
+/// The font size of every text, px (the app's label font).
+pub const FONT_SIZE: f64 = 12.0;
 
 /// Above this many threads with dimensions, only the chosen thread's are drawn (as in the app).
 pub const MAX_ANNOTATED: usize = 6;
 
+/// The largest page side accepted, px.
+pub const MAX_SIZE: f64 = 100_000.0;
+
 /// How to draw a scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
-    /// Width of the drawing area before labels are fitted in, in px.
+    /// Width of the page, px.
     pub width: f64,
-    /// Height of the drawing area, in px.
+    /// Height of the page, px.
     pub height: f64,
-    /// Space kept around the fitted scene, in px.
-    pub pad: f64,
-    /// Font size, px.
-    pub font_size: f64,
-    /// Stretch the vertical scale to fill the height (the app's radial stretch).
+    /// Stretch the vertical scale to fill the height (the app's radial stretch; without a layout).
     pub stretch: bool,
-    /// The world rectangle to fit (default: the scene's focus, as the app's Fit; the viewBox still grows to hold every item).
-    pub view: Option<Rect>,
     /// The thread whose dimensions are drawn when the scene has many.
     pub thread: usize,
     /// Label templates by key (`"lead"` → `"Ph {}"`); missing keys use [`english`].
     pub labels: Vec<(String, String)>,
+    /// The view's transform and its labels as placed (the app's export); `None`: fitted and placed here.
+    pub layout: Option<Layout>,
 }
 
 impl Default for Options {
     fn default() -> Options {
-        Options {
-            width: 800.0,
-            height: 500.0,
-            pad: 56.0,
-            font_size: 12.0,
-            stretch: false,
-            view: None,
-            thread: 0,
-            labels: Vec::new(),
-        }
+        Options { width: 800.0, height: 500.0, stretch: false, thread: 0, labels: Vec::new(), layout: None }
     }
+}
+
+/// World → page: `X = tx + sx·x`, `Y = ty − sy·y` (y down on the page), as
+/// the app's views keep it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Transform {
+    /// Horizontal scale, px per world unit.
+    pub sx: f64,
+    /// Vertical scale, px per world unit.
+    pub sy: f64,
+    /// Page x of the world origin.
+    pub tx: f64,
+    /// Page y of the world origin.
+    pub ty: f64,
+}
+
+impl Transform {
+    /// The page point of world point `p`.
+    pub fn at(&self, p: Pt) -> Pt {
+        [self.tx + self.sx * p[0], self.ty - self.sy * p[1]]
+    }
+}
+
+/// A label where it is drawn: what the app's `drawScene` reports of each
+/// placed label (other fields of its records are ignored).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Placed {
+    /// Index of the scene item (a dimension or a text) the label belongs to.
+    pub item: usize,
+    /// The text as drawn, one entry per line.
+    pub lines: Vec<String>,
+    /// How the lines line up in the box (`middle` for a one-line label).
+    pub align: Anchor,
+    /// The label's box `[x0, y0, x1, y1]` on the page; the text is centred in it.
+    #[serde(rename = "box")]
+    pub bounds: [f64; 4],
+    /// Rotation of the text, degrees (−90: a vertical dimension's text reads upward).
+    pub angle: f64,
+    /// A dimension's line: its offset from the dimension's points, px.
+    #[serde(default)]
+    pub off: f64,
+    /// A half dimension's line: its length from the arrowhead towards the axis, px.
+    #[serde(default)]
+    pub len: f64,
+    /// A leader from a text's point to its box, `[x0, y0, x1, y1]` on the page.
+    #[serde(default)]
+    pub lead: Option<[f64; 4]>,
+}
+
+/// The view a drawing is made for: its transform and, optionally, its labels as placed.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Layout {
+    /// World → page.
+    pub transform: Transform,
+    /// The labels as placed; `None`: placed at `transform` by the writer.
+    #[serde(default)]
+    pub labels: Option<Vec<Placed>>,
 }
 
 /// The English template of a label key, as the app shows it.
@@ -86,104 +156,100 @@ pub fn english(key: &str) -> Option<&'static str> {
         "starts_capped" => "{} starts: the first 360 are drawn",
         "moves_capped" => "drawing stops after {} moves",
         "square_tool" => "0° tool: width {} assumed",
+        "detail_passes" => "every n-th pass drawn (n/all): {}",
+        "detail_starts" => "one start drawn, the others cut the same path (1/starts): {}",
+        "detail_starts_passes" => "one start and every n-th pass drawn (1/starts n/all): {}",
         _ => return None,
     })
 }
 
-/// A pen: what `render.js` calls by the style's name.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Pen {
-    stroke: Option<&'static str>,
-    width: f64,
-    dash: &'static [f64],
-    fill: Option<&'static str>,
-    text: Option<&'static str>,
-    alpha: Option<f64>,
-}
-
-const NONE: Pen = Pen { stroke: None, width: 1.0, dash: &[], fill: None, text: None, alpha: None };
-
-const fn line(stroke: &'static str, width: f64, dash: &'static [f64]) -> Pen {
-    Pen { stroke: Some(stroke), width, dash, ..NONE }
-}
-
-/// The pens of `render.js` (`PENS`).
-fn pen(style: Style) -> Pen {
-    match style {
-        Style::Axis => line("#8a94a6", 1.0, &[14.0, 3.0, 2.0, 3.0]),
-        Style::Outline => line("#1f2937", 1.6, &[]),
-        Style::Crest => line("#1f2937", 1.3, &[7.0, 3.0]),
-        Style::Root => line("#64748b", 1.0, &[2.0, 3.0]),
-        Style::ThreadZone => Pen { fill: Some("rgba(100,116,139,0.14)"), ..NONE },
-        Style::Rapid => line("#dc2626", 1.0, &[5.0, 4.0]),
-        Style::Cut => line("#2563eb", 2.0, &[]),
-        Style::Runout => line("#ea580c", 2.0, &[2.0, 2.0]),
-        Style::ScrewIn => line("#b45309", 2.0, &[2.0, 2.0]),
-        Style::OtherRapid => line("#a3a9b5", 1.0, &[3.0, 4.0]),
-        Style::Delta1 => Pen { fill: Some("rgba(234,179,8,0.22)"), text: Some("#854d0e"), ..NONE },
-        Style::Delta2 => Pen { fill: Some("rgba(249,115,22,0.20)"), text: Some("#9a3412"), ..NONE },
-        Style::Dimension | Style::Diameter => Pen { text: Some("#111827"), ..line("#374151", 1.0, &[]) },
-        Style::Note => Pen { text: Some("#374151"), ..line("#4b5563", 1.0, &[]) },
-        Style::Material => Pen { fill: Some("rgba(148,163,184,0.38)"), ..NONE },
-        Style::Profile => line("#111827", 1.8, &[]),
-        Style::Tool => Pen { alpha: Some(0.75), ..line("#1d4ed8", 1.1, &[]) },
-        Style::Area => Pen { fill: Some("#93c5fd"), ..line("rgba(30,64,175,0.5)", 0.6, &[]) },
-        Style::DepthTick => Pen { text: Some("#1f2937"), ..line("#374151", 1.0, &[]) },
-        Style::Infeed => Pen { text: Some("#991b1b"), ..line("#dc2626", 1.6, &[]) },
-        Style::Circle => line("#1f2937", 1.5, &[]),
-        Style::Start => Pen { text: Some("#1e3a8a"), ..line("#2563eb", 1.6, &[]) },
-        Style::Ruler => line("#374151", 1.2, &[]),
-    }
-}
-
-/// The fill of pass `pass`'s area (distinct hues; finishing green, spring violet).
-fn area_colour(pass: u32, role: Option<Role>) -> String {
-    match role {
-        Some(Role::Finish) => "rgba(16,185,129,0.65)".into(),
-        Some(Role::Spring) => "rgba(139,92,246,0.5)".into(),
-        _ => format!("hsla({},75%,62%,0.6)", (200 + pass as u64 * 47) % 360),
-    }
-}
-
-/// The stroke of an item: finishing and spring passes have their own colour.
-fn stroke_of(item: &Item, p: &Pen) -> Option<String> {
-    let role = match item.shape {
-        Shape::Polyline { .. } | Shape::Polygon { .. } | Shape::Circle { .. } | Shape::Arrow { .. } => item.role,
-        _ => None,
-    };
-    p.stroke.map(|s| {
-        match role {
-            Some(Role::Finish) => "#059669",
-            Some(Role::Spring) => "#7c3aed",
-            _ => s,
+impl Options {
+    /// The text of a label: its key's template (the options', else English)
+    /// with the value in place of `{}`; a key without a template as the app
+    /// shows it (the key and the value).
+    pub fn label_text(&self, key: &str, value: &str) -> String {
+        if key.is_empty() {
+            return value.to_string();
         }
-        .to_string()
-    })
-}
-
-/// World → page: `X = tx + sx·x`, `Y = ty − sy·y`.
-#[derive(Clone, Copy, Debug)]
-struct Fit {
-    sx: f64,
-    sy: f64,
-    tx: f64,
-    ty: f64,
-}
-
-impl Fit {
-    fn new(r: Rect, o: &Options) -> Fit {
-        let w = r.width().max(1e-9);
-        let h = r.height().max(1e-9);
-        let aw = (o.width - 2.0 * o.pad).max(10.0);
-        let ah = (o.height - 2.0 * o.pad).max(10.0);
-        let sx = (aw / w).min(ah / h);
-        let sy = if o.stretch { sx.max(ah / h) } else { sx };
-        Fit { sx, sy, tx: o.width / 2.0 - sx * (r.x0 + r.x1) / 2.0, ty: o.height / 2.0 + sy * (r.y0 + r.y1) / 2.0 }
+        let own = self.labels.iter().find(|(k, _)| k == key).map(|(_, t)| t.as_str());
+        match own.or_else(|| english(key)) {
+            Some(t) => t.replacen("{}", value, 1),
+            None if value.is_empty() => key.to_string(),
+            None => format!("{key} {value}"),
+        }
     }
 
-    fn at(&self, p: Pt) -> (f64, f64) {
-        (self.tx + self.sx * p[0], self.ty - self.sy * p[1])
+    /// Whether the options can draw `scene`: a page size within [`MAX_SIZE`],
+    /// finite numbers, a transform that maps, and labels that name
+    /// dimensions and texts of the scene (at most one each). The error says
+    /// what is wrong. [`svg`] never fails: it skips what this refuses.
+    pub fn validate(&self, scene: &Scene) -> Result<(), String> {
+        for (what, v) in [("width", self.width), ("height", self.height)] {
+            if !(v.is_finite() && v > 0.0 && v <= MAX_SIZE) {
+                return Err(format!("the page {what} {v} is not a size in px (0 to {MAX_SIZE})"));
+            }
+        }
+        let Some(layout) = &self.layout else { return Ok(()) };
+        let t = layout.transform;
+        if ![t.sx, t.sy, t.tx, t.ty].iter().all(|v| v.is_finite()) || t.sx <= 0.0 || t.sy <= 0.0 {
+            return Err(format!("the transform {t:?} needs finite numbers and positive scales"));
+        }
+        let Some(labels) = &layout.labels else { return Ok(()) };
+        let mut seen = vec![false; scene.items.len()];
+        for (k, p) in labels.iter().enumerate() {
+            check_placed(scene, p).map_err(|e| format!("label {k}: {e}"))?;
+            if std::mem::replace(&mut seen[p.item], true) {
+                return Err(format!("label {k}: item {} is placed twice", p.item));
+            }
+        }
+        Ok(())
     }
+}
+
+/// Most lines of one label, and most characters of one line.
+const MAX_LINES: usize = 64;
+const MAX_LINE: usize = 4096;
+
+/// What is wrong with one placed label of `scene`, if anything.
+fn check_placed(scene: &Scene, p: &Placed) -> Result<(), String> {
+    match scene.items.get(p.item).map(|i| &i.shape) {
+        Some(Shape::Dim { .. } | Shape::Text { .. }) => {}
+        Some(_) => return Err(format!("item {} is neither a dimension nor a text", p.item)),
+        None => return Err(format!("item {} is not in the scene ({} items)", p.item, scene.items.len())),
+    }
+    if p.lines.is_empty() || p.lines.len() > MAX_LINES || p.lines.iter().any(|l| l.chars().count() > MAX_LINE) {
+        return Err(format!("1 to {MAX_LINES} lines of at most {MAX_LINE} characters"));
+    }
+    let numbers = p.bounds.iter().chain(p.lead.iter().flatten()).chain([&p.angle, &p.off, &p.len]);
+    if !numbers.into_iter().all(|v| v.is_finite()) {
+        return Err("a number that is not finite".into());
+    }
+    if !(p.bounds[0] <= p.bounds[2] && p.bounds[1] <= p.bounds[3]) {
+        return Err(format!("the box {:?} is upside down", p.bounds));
+    }
+    Ok(())
+}
+
+/// The scene as an SVG document (see the module documentation).
+pub fn svg(scene: &Scene, o: &Options) -> String {
+    let (w, h) = page_size(o);
+    let (xf, placed) = match &o.layout {
+        Some(Layout { transform, labels: Some(given) }) => {
+            (*transform, given.iter().filter(|p| check_placed(scene, p).is_ok()).cloned().collect())
+        }
+        Some(Layout { transform, labels: None }) => (*transform, place::placed(scene, o, transform, (w, h))),
+        None => {
+            let xf = fit::fit(scene, o, (w, h));
+            (xf, place::placed(scene, o, &xf, (w, h)))
+        }
+    };
+    paint::document(scene, &xf, &placed, (w, h))
+}
+
+/// The page size of `o`, bounded (a size [`Options::validate`] refuses becomes 800 × 500).
+fn page_size(o: &Options) -> (f64, f64) {
+    let ok = |v: f64, d: f64| if v.is_finite() && v > 0.0 { v.min(MAX_SIZE) } else { d };
+    (ok(o.width, 800.0), ok(o.height, 500.0))
 }
 
 /// Two decimals, trimmed.
@@ -211,14 +277,6 @@ pub fn escape(s: &str) -> String {
     out
 }
 
-mod paint;
-pub use paint::measure;
-
-/// The scene as an SVG document.
-pub fn svg(scene: &Scene, o: &Options) -> String {
-    paint::document(scene, o)
-}
-
 /// The title of a view.
 fn title(view: ViewKind) -> &'static str {
     match view {
@@ -228,32 +286,18 @@ fn title(view: ViewKind) -> &'static str {
     }
 }
 
-/// `"{}"` in a template replaced by the value.
-fn fill(template: &str, value: &str) -> String {
-    template.replacen("{}", value, 1)
-}
-
 /// Appends `s` to `out` (a `String` never fails).
 fn push(out: &mut String, s: std::fmt::Arguments) {
     let _ = out.write_fmt(s);
 }
 
 impl Anchor {
+    /// The SVG `text-anchor` value.
     fn svg(self) -> &'static str {
         match self {
             Anchor::Start => "start",
             Anchor::Middle => "middle",
             Anchor::End => "end",
-        }
-    }
-}
-
-impl Glyph {
-    fn code(self) -> u8 {
-        match self {
-            Glyph::Dot => 0,
-            Glyph::Bar => 1,
-            Glyph::Cross => 2,
         }
     }
 }

@@ -79,15 +79,21 @@ enum Command {
         /// Start (1-based) of the tooth drawing.
         #[arg(long, default_value_t = 1)]
         start: u32,
-        /// Width of the drawing area in px (labels may widen the page).
+        /// Width of the page in px.
         #[arg(long, default_value_t = 800.0)]
         width: f64,
-        /// Height of the drawing area in px.
+        /// Height of the page in px.
         #[arg(long, default_value_t = 500.0)]
         height: f64,
         /// Stretch the radial scale to fill the height (the app's "Stretch radially").
         #[arg(long)]
         stretch: bool,
+        /// A JSON file of the view to draw: `{"transform": {"sx", "sy", "tx",
+        /// "ty"}, "labels": [...]}` (what the app's SVG export passes: its
+        /// view's transform and labels as placed); without it, the drawing
+        /// and its labels are fitted to the page.
+        #[arg(long, value_name = "FILE")]
+        layout: Option<String>,
     },
 }
 
@@ -185,13 +191,19 @@ fn parse_dialect(s: &str) -> Result<Dialect, String> {
     Dialect::parse(s).ok_or_else(|| format!("unknown dialect '{s}' ({})", Dialect::names()))
 }
 
+/// The view layout of `screwcut svg --layout` from JSON file `path`.
+fn read_layout(path: &str) -> Result<screwcut::svg::Layout, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+    serde_json::from_str(&text).map_err(|e| format!("{path}: not a layout: {e}"))
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
         Command::Generate(a) => generate(a),
-        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch } => {
+        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, layout } => {
             let (settings, text) = match input(&file, dialect, &set) {
                 Ok(v) => v,
                 Err(code) => return code,
@@ -210,7 +222,18 @@ fn main() -> ExitCode {
                 );
                 return ExitCode::from(2);
             };
-            let opts = screwcut::svg::Options { width, height, stretch, thread: ti, ..Default::default() };
+            let layout = match layout.as_deref().map(read_layout).transpose() {
+                Ok(l) => l,
+                Err(e) => {
+                    eprintln!("screwcut: {e}");
+                    return ExitCode::from(2);
+                }
+            };
+            let opts = screwcut::svg::Options { width, height, stretch, thread: ti, layout, ..Default::default() };
+            if let Err(e) = opts.validate(&scene) {
+                eprintln!("screwcut: cannot draw the {view} view: {e}");
+                return ExitCode::from(2);
+            }
             emit(&screwcut::svg::svg(&scene, &opts));
             ExitCode::SUCCESS
         }

@@ -4,7 +4,7 @@
 //! screen and styles to pens; sizes given in pixels (dimension offsets, text
 //! offsets, arrow heads, markers) stay constant while the view zooms.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::thread::Role;
 
@@ -115,7 +115,7 @@ impl Label {
 }
 
 /// Where text sits relative to its anchor point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Anchor {
     /// Text starts at the point.

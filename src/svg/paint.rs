@@ -1,91 +1,53 @@
-//! The painter: scene items → SVG elements, as `render.js` draws them, with
-//! the page extent for the viewBox: the fitted drawing area grown to hold
-//! every label (estimated). Shapes are clipped to the viewBox, as the app's
-//! canvas clips them: motions far from the threads (a return to a tool
-//! change point) do not shrink the drawing to a corner of the page.
+//! The painter: scene items → SVG elements at a transform, as `drawScene`
+//! in `www/src/render.js` draws them on the canvas: paths of one pen
+//! together (one element per pen, in the order the pens first appear; a
+//! path that repeats one of its pen adds no ink and is left out, as is one
+//! wholly off the page), then the other shapes in item order, each label
+//! where it was placed, with its dimension line, arrowheads and halo.
 
-use super::{FONT_FAMILY, Fit, MAX_ANNOTATED, Options, Pen, english, escape, f, fill, pen, push, stroke_of, title};
-use crate::diagram::scene::{Item, Label, Rect, Scene, Shape, Style};
+use std::collections::{HashMap, HashSet};
 
-/// Average advance of a character as a share of the font size (Latin, digits).
-const CHAR_WIDTH: f64 = 0.6;
+use super::labels::LINE;
+use super::pens::{Pen, pen_of};
+use super::{FONT_FAMILY, FONT_SIZE, Placed, Transform, escape, f, push, title};
+use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style};
 
-/// Estimated width of text `s` at `font_size` px: a full em for CJK and
-/// other wide characters (U+2E80 and above), [`CHAR_WIDTH`] for the rest.
-pub fn measure(s: &str, font_size: f64) -> f64 {
-    s.chars().map(|c| if c >= '\u{2E80}' { 1.0 } else { CHAR_WIDTH }).sum::<f64>() * font_size
-}
+/// Paths wholly this far off the page are left out.
+const CULL: f64 = 12.0;
+/// The halo behind a label's text.
+const HALO: &str = "rgba(255,255,255,0.85)";
 
 struct Painter<'a> {
-    o: &'a Options,
-    fit: Fit,
+    xf: &'a Transform,
     out: String,
-    /// Page extent of everything drawn.
-    extent: Rect,
-    /// Boxes of the texts placed so far (a text that would overprint one is skipped).
-    placed: Vec<[f64; 4]>,
 }
 
-/// The document: background, paths by pen, the other shapes, texts.
-pub(super) fn document(scene: &Scene, o: &Options) -> String {
-    let fit = if scene.focus.is_empty() { scene.bounds } else { scene.focus };
-    let view = o.view.unwrap_or(fit).or_unit();
-    let mut p = Painter { o, fit: Fit::new(view, o), out: String::new(), extent: Rect::EMPTY, placed: Vec::new() };
-    p.extent.add([0.0, 0.0]);
-    p.extent.add([o.width, o.height]);
-    p.paths(scene);
-    let annotated = {
-        let mut threads: Vec<u32> = scene
-            .items
-            .iter()
-            .filter(|i| matches!(i.shape, Shape::Dim { .. } | Shape::Text { .. }))
-            .filter_map(|i| i.thread)
-            .collect();
-        threads.sort_unstable();
-        threads.dedup();
-        threads.len()
-    };
-    for item in &scene.items {
-        let text_like = matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. });
-        if annotated > MAX_ANNOTATED && text_like && item.thread.is_some_and(|t| t as usize != o.thread) {
-            continue;
-        }
-        p.item(item);
+/// The document: background, clip, paths by pen, the other shapes and labels.
+pub(super) fn document(scene: &Scene, xf: &Transform, placed: &[Placed], (w, h): (f64, f64)) -> String {
+    let mut p = Painter { xf, out: String::new() };
+    p.paths(scene, (w, h));
+    let by_item: HashMap<usize, &Placed> = placed.iter().map(|l| (l.item, l)).collect();
+    for (i, item) in scene.items.iter().enumerate() {
+        p.item(item, by_item.get(&i).copied());
     }
-    let m = 4.0;
-    let e = p.extent;
-    let (x, y, w, h) = (e.x0 - m, e.y0 - m, e.width() + 2.0 * m, e.height() + 2.0 * m);
-    let mut doc = String::with_capacity(p.out.len() + 512);
+    let (ws, hs) = (f(w), f(h));
+    let mut doc = String::with_capacity(p.out.len() + 768);
     doc.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     push(
         &mut doc,
         format_args!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"{} {} {} {}\" font-family=\"{FONT_FAMILY}\" font-size=\"{}\">\n",
-            f(w),
-            f(h),
-            f(x),
-            f(y),
-            f(w),
-            f(h),
-            f(o.font_size)
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{ws}\" height=\"{hs}\" viewBox=\"0 0 {ws} {hs}\" font-family=\"{FONT_FAMILY}\" font-size=\"{}\">\n",
+            f(FONT_SIZE)
         ),
     );
     push(&mut doc, format_args!("<title>screwcut: {}</title>\n", title(scene.view)));
-    push(
-        &mut doc,
-        format_args!("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\"/>\n", f(x), f(y), f(w), f(h)),
-    );
-    // Shapes beyond the page are clipped; the id names the rectangle, so that
-    // several drawings inlined in one HTML page never take another's clip.
-    let id = format!("screwcut-page-{}-{}-{}-{}", f(x), f(y), f(w), f(h)).replace(['.', ' '], "_");
+    push(&mut doc, format_args!("<rect x=\"0\" y=\"0\" width=\"{ws}\" height=\"{hs}\" fill=\"white\"/>\n"));
+    // The id names the drawing, so that several inlined in one HTML page never take another's clip.
+    let id = format!("screwcut-{}-{:016x}", title(scene.view).replace(' ', "-"), fnv(&p.out));
     push(
         &mut doc,
         format_args!(
-            "<defs><clipPath id=\"{id}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath></defs>\n",
-            f(x),
-            f(y),
-            f(w),
-            f(h)
+            "<defs><clipPath id=\"{id}\"><rect x=\"0\" y=\"0\" width=\"{ws}\" height=\"{hs}\"/></clipPath></defs>\n"
         ),
     );
     push(&mut doc, format_args!("<g stroke-linejoin=\"round\" clip-path=\"url(#{id})\">\n"));
@@ -94,10 +56,14 @@ pub(super) fn document(scene: &Scene, o: &Options) -> String {
     doc
 }
 
-/// The pen of a batch of paths: style, role, closed, and the pass of an area.
-type BatchKey = (u32, u8, bool, u32);
+/// FNV-1a of `s`.
+fn fnv(s: &str) -> u64 {
+    s.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}
 
-/// The batch a path goes in: its pen (style, role, shape; an area per pass).
+/// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
+type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
+
 fn batch_key(item: &Item, closed: bool) -> BatchKey {
     let role = match item.role {
         None => 0,
@@ -105,297 +71,211 @@ fn batch_key(item: &Item, closed: bool) -> BatchKey {
         Some(crate::thread::Role::Finish) => 2,
         Some(crate::thread::Role::Spring) => 3,
     };
-    let pass = if item.style == Style::Area { item.pass.unwrap_or(0) + 1 + 1000 * item.thread.unwrap_or(0) } else { 0 };
-    (item.style.code(), role, closed, pass)
+    let area = (item.style == Style::Area).then(|| (item.thread.map_or(0, |t| t + 1), item.pass.map_or(0, |p| p + 1)));
+    (item.style.code(), role, closed, area)
+}
+
+/// One pen's paths: the first item (its pen), the path data, the subpaths seen.
+struct Batch {
+    key: BatchKey,
+    first: usize,
+    d: String,
+    seen: HashSet<String>,
 }
 
 impl Painter<'_> {
-    /// Every polyline and polygon, one path per pen in the order the pens first appear.
-    fn paths(&mut self, scene: &Scene) {
-        let mut batches: Vec<(BatchKey, usize, String)> = Vec::new();
+    /// Every polyline and polygon, one path element per pen.
+    fn paths(&mut self, scene: &Scene, (w, h): (f64, f64)) {
+        let mut batches: Vec<Batch> = Vec::new();
         for (i, item) in scene.items.iter().enumerate() {
             let (points, closed) = match &item.shape {
                 Shape::Polyline { points } => (points, false),
                 Shape::Polygon { points } => (points, true),
                 _ => continue,
             };
-            if points.len() < 2 {
+            let pts: Vec<Pt> = points.iter().map(|p| self.xf.at(*p)).collect();
+            let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
+            if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {
                 continue;
             }
-            let mut d = String::new();
-            for (k, p) in points.iter().enumerate() {
-                let (x, y) = self.fit.at(*p);
-                push(&mut d, format_args!("{}{} {}", if k == 0 { 'M' } else { 'L' }, f(x), f(y)));
-            }
-            if closed {
-                d.push('Z');
-            }
+            let d = path_data(&pts, closed);
             let key = batch_key(item, closed);
-            match batches.iter_mut().find(|b| b.0 == key) {
-                Some(b) => b.2.push_str(&d),
-                None => batches.push((key, i, d)),
+            let b = match batches.iter().position(|b| b.key == key) {
+                Some(k) => &mut batches[k],
+                None => {
+                    batches.push(Batch { key, first: i, d: String::new(), seen: HashSet::new() });
+                    batches.last_mut().expect("just pushed")
+                }
+            };
+            if b.seen.insert(d.clone()) {
+                b.d.push_str(&d);
             }
         }
-        for (key, first, d) in batches {
-            let item = &scene.items[first];
-            let attrs = self.style(item, key.2);
-            push(&mut self.out, format_args!("<path d=\"{d}\" {attrs}/>\n"));
+        for b in batches {
+            let attrs = pen_of(&scene.items[b.first]).attrs(b.key.2);
+            push(&mut self.out, format_args!("<path d=\"{}\" {attrs}/>\n", b.d));
         }
     }
 
-    /// Whether page point (x, y) is in the fitted drawing area: a label anchored outside it is not drawn (the app's canvas would not show it).
-    fn in_frame(&self, x: f64, y: f64) -> bool {
-        (0.0..=self.o.width).contains(&x) && (0.0..=self.o.height).contains(&y)
-    }
-
-    /// The fill and stroke attributes of an item's pen.
-    fn style(&self, item: &Item, closed: bool) -> String {
-        let p = pen(item.style);
-        let fill = if item.style == Style::Area {
-            Some(super::area_colour(item.pass.unwrap_or(0), item.role))
-        } else {
-            p.fill.map(str::to_string)
-        };
-        attrs(&p, fill.filter(|_| closed), stroke_of(item, &p))
-    }
-
-    fn item(&mut self, item: &Item) {
-        let p = pen(item.style);
-        let stroke = stroke_of(item, &p);
+    fn item(&mut self, item: &Item, placed: Option<&Placed>) {
+        let pen = pen_of(item);
         match &item.shape {
             Shape::Polyline { .. } | Shape::Polygon { .. } => {}
             Shape::Circle { center, radius } => {
-                let (x, y) = self.fit.at(*center);
-                let r = (radius * self.fit.sx).max(0.0);
-                let a = self.style(item, true);
+                let [x, y] = self.xf.at(*center);
+                let r = (radius * self.xf.sx).max(0.0);
+                let a = pen.attrs(true);
                 push(&mut self.out, format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {a}/>\n", f(x), f(y), f(r)));
             }
-            Shape::Arrow { from, to } => {
-                let (a, b) = (self.fit.at(*from), self.fit.at(*to));
-                self.arrow(a, b, &p, stroke.as_deref().unwrap_or("#374151"));
-            }
-            Shape::Dim { a, b, offset, label } => {
-                let text = self.label(label);
-                let (a, b) = (self.fit.at(*a), self.fit.at(*b));
-                self.dimension(a, b, *offset, &text, &p);
-            }
-            Shape::Text { at, label, anchor, dx, dy } => {
-                let s = self.label(label);
-                if s.is_empty() {
-                    return;
+            Shape::Arrow { from, to } => self.arrow(self.xf.at(*from), self.xf.at(*to), &pen),
+            Shape::Marker { at, glyph } => self.marker(self.xf.at(*at), *glyph, &pen),
+            Shape::Dim { a, b, .. } => {
+                if let Some(l) = placed {
+                    self.dimension(self.xf.at(*a), self.xf.at(*b), item.style == Style::Diameter, l, &pen);
+                    self.label(l, &pen);
                 }
-                let (x, y) = self.fit.at(*at);
-                if !self.in_frame(x, y) {
-                    return;
-                }
-                let (x, y) = (x + dx, y - dy);
-                let w = self.measure(&s);
-                let x0 = match anchor.svg() {
-                    "start" => x,
-                    "end" => x - w,
-                    _ => x - w / 2.0,
-                };
-                let bx = [x0, y - 7.0, x0 + w, y + 7.0];
-                if self.placed.iter().any(|b| bx[0] < b[2] && b[0] < bx[2] && bx[1] < b[3] && b[1] < bx[3]) {
-                    return;
-                }
-                self.placed.push(bx);
-                let colour = p.text.or(p.stroke).unwrap_or("#111827");
-                self.text(x, y, &s, colour, false, anchor.svg(), "middle", 0.0);
             }
-            Shape::Marker { at, glyph } => {
-                let (x, y) = self.fit.at(*at);
-                self.marker(x, y, glyph.code(), stroke.as_deref().unwrap_or("#374151"));
+            Shape::Text { .. } => {
+                if let Some(l) = placed {
+                    if let Some([x0, y0, x1, y1]) = l.lead {
+                        let stroke = pen.stroke.clone().unwrap_or_else(|| pen.text_colour().to_string());
+                        let lead = Pen { alpha: Some(0.8), ..Pen::thin(&stroke, 0.7) };
+                        self.path(&[[x0, y0], [x1, y1]], false, &lead);
+                    }
+                    self.label(l, &pen);
+                }
             }
         }
     }
 
-    /// A label's text: its key's template (the options', else English) with the value.
-    fn label(&self, l: &Label) -> String {
-        if l.key.is_empty() {
-            return l.value.clone();
-        }
-        let own = self.o.labels.iter().find(|(k, _)| k == l.key).map(|(_, t)| t.as_str());
-        match own.or_else(|| english(l.key)) {
-            Some(t) => fill(t, &l.value),
-            None => l.value.clone(),
-        }
+    /// A path element of page points.
+    fn path(&mut self, pts: &[Pt], closed: bool, pen: &Pen) {
+        let d = path_data(pts, closed);
+        push(&mut self.out, format_args!("<path d=\"{d}\" {}/>\n", pen.attrs(closed)));
     }
 
-    fn measure(&self, s: &str) -> f64 {
-        measure(s, self.o.font_size)
-    }
-
-    /// A text and its estimated extent (rotated by `angle`, −90 or 0).
-    #[allow(clippy::too_many_arguments)]
-    fn text(&mut self, x: f64, y: f64, s: &str, colour: &str, halo: bool, anchor: &str, baseline: &str, angle: f64) {
-        let (w, h) = (self.measure(s), self.o.font_size * 1.25);
-        let (ax0, ax1) = match anchor {
-            "start" => (0.0, w),
-            "end" => (-w, 0.0),
-            _ => (-w / 2.0, w / 2.0),
-        };
-        let (by0, by1, dominant) = match baseline {
-            "top" => (0.0, h, "hanging"),
-            "bottom" => (-h, 0.0, "text-after-edge"),
-            _ => (-h / 2.0, h / 2.0, "central"),
-        };
-        if angle == 0.0 {
-            self.extent.add([x + ax0, y + by0]);
-            self.extent.add([x + ax1, y + by1]);
-        } else {
-            // Rotated −90°: the text runs upward from its anchor.
-            self.extent.add([x + by0, y - ax1]);
-            self.extent.add([x + by1, y - ax0]);
-        }
-        let halo = if halo { " stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\"" } else { "" };
-        let rot =
-            if angle != 0.0 { format!(" transform=\"rotate({} {} {})\"", f(angle), f(x), f(y)) } else { String::new() };
-        push(
-            &mut self.out,
-            format_args!(
-                "<text x=\"{}\" y=\"{}\" text-anchor=\"{anchor}\" dominant-baseline=\"{dominant}\"{rot} fill=\"{colour}\"{halo}>{}</text>\n",
-                f(x),
-                f(y),
-                escape(s)
-            ),
-        );
-    }
-
-    fn line(&mut self, pts: &[(f64, f64)], closed: bool, a: &str) {
-        let mut d = String::new();
-        for (k, (x, y)) in pts.iter().enumerate() {
-            push(&mut d, format_args!("{}{} {}", if k == 0 { 'M' } else { 'L' }, f(*x), f(*y)));
-        }
-        if closed {
-            d.push('Z');
-        }
-        push(&mut self.out, format_args!("<path d=\"{d}\" {a}/>\n"));
-    }
-
-    fn arrow(&mut self, (x0, y0): (f64, f64), (x1, y1): (f64, f64), p: &Pen, stroke: &str) {
-        self.line(&[(x0, y0), (x1, y1)], false, &attrs(p, None, Some(stroke.to_string())));
-        let a = (y1 - y0).atan2(x1 - x0);
+    /// An arrow: its line in the pen, a filled head of the pen's stroke at `b`.
+    fn arrow(&mut self, a: Pt, b: Pt, pen: &Pen) {
+        self.path(&[a, b], false, pen);
+        let t = (b[1] - a[1]).atan2(b[0] - a[0]);
         let (l, s) = (9.0, 0.42);
         let head = [
-            (x1 - l * (a - s).cos(), y1 - l * (a - s).sin()),
-            (x1, y1),
-            (x1 - l * (a + s).cos(), y1 - l * (a + s).sin()),
+            [b[0] - l * (t - s).cos(), b[1] - l * (t - s).sin()],
+            b,
+            [b[0] - l * (t + s).cos(), b[1] - l * (t + s).sin()],
         ];
-        self.line(&head, true, &format!("fill=\"{stroke}\" stroke=\"{stroke}\" stroke-width=\"{}\"", f(p.width)));
+        let head_pen = Pen { fill: pen.stroke.clone(), dash: &[], ..pen.clone() };
+        self.path(&head, true, &head_pen);
     }
 
-    fn marker(&mut self, x: f64, y: f64, glyph: u8, stroke: &str) {
+    fn marker(&mut self, [x, y]: Pt, glyph: Glyph, pen: &Pen) {
+        let stroke = pen.stroke.as_deref().unwrap_or("#374151");
         match glyph {
-            0 => {
-                push(
-                    &mut self.out,
-                    format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{stroke}\"/>\n", f(x), f(y)),
+            Glyph::Dot => {
+                let a = Pen::filled(stroke).attrs(true);
+                push(&mut self.out, format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"3\" {a}/>\n", f(x), f(y)));
+            }
+            Glyph::Bar => self.path(&[[x, y - 6.0], [x, y + 6.0]], false, &Pen::thin(stroke, 2.0)),
+            Glyph::Cross => {
+                let d = format!(
+                    "{}{}",
+                    path_data(&[[x - 4.0, y - 4.0], [x + 4.0, y + 4.0]], false),
+                    path_data(&[[x - 4.0, y + 4.0], [x + 4.0, y - 4.0]], false)
                 );
-            }
-            1 => self.line(
-                &[(x, y - 6.0), (x, y + 6.0)],
-                false,
-                &format!("fill=\"none\" stroke=\"{stroke}\" stroke-width=\"2\""),
-            ),
-            _ => {
-                let a = format!("fill=\"none\" stroke=\"{stroke}\" stroke-width=\"1.6\"");
-                self.line(&[(x - 4.0, y - 4.0), (x + 4.0, y + 4.0)], false, &a);
-                self.line(&[(x - 4.0, y + 4.0), (x + 4.0, y - 4.0)], false, &a);
+                push(&mut self.out, format_args!("<path d=\"{d}\" {}/>\n", Pen::thin(stroke, 1.6).attrs(false)));
             }
         }
     }
 
-    /// An aligned dimension: extension lines, the dimension line with its heads, the text.
-    fn dimension(&mut self, (ax, ay): (f64, f64), (bx, by): (f64, f64), offset: f64, text: &str, p: &Pen) {
-        let (dx, dy) = (bx - ax, by - ay);
+    /// A placed dimension: extension lines, its line and arrowheads. A half
+    /// dimension (of a diameter, from the axis `a`) has one arrowhead, at the
+    /// diameter `b`; its line runs towards the axis as far as it was placed.
+    fn dimension(&mut self, a: Pt, b: Pt, half: bool, l: &Placed, pen: &Pen) {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
         let len = dx.hypot(dy);
-        if len.is_nan() || len <= 0.5 {
+        if len.is_nan() || len <= 1e-9 {
             return;
         }
-        let stroke = p.stroke.unwrap_or("#374151");
-        // Left of a→b in world terms is (dy, −dx) on the page (y down).
-        let (nx, ny) = (dy / len, -dx / len);
-        let sgn = if offset >= 0.0 { 1.0 } else { -1.0 };
-        let thin = format!("fill=\"none\" stroke=\"{stroke}\" stroke-width=\"0.8\"");
-        if offset.abs() > 3.0 {
-            for (x, y) in [(ax, ay), (bx, by)] {
-                let ext = [
-                    (x + nx * 2.0 * sgn, y + ny * 2.0 * sgn),
-                    (x + nx * (offset + 4.0 * sgn), y + ny * (offset + 4.0 * sgn)),
-                ];
-                self.line(&ext, false, &thin);
-            }
-        }
-        let (x0, y0, x1, y1) = (ax + nx * offset, ay + ny * offset, bx + nx * offset, by + ny * offset);
-        self.line(&[(x0, y0), (x1, y1)], false, &attrs(p, None, Some(stroke.to_string())));
-        let (ux, uy) = (dx / len, dy / len);
-        let mut head = |x: f64, y: f64, dir: f64| {
-            let (l, w) = (7.0, 2.6);
-            let (hx, hy) = (x - ux * l * dir, y - uy * l * dir);
-            let pts = [(x, y), (hx + nx * w, hy + ny * w), (hx - nx * w, hy - ny * w)];
-            self.line(&pts, true, &format!("fill=\"{stroke}\" stroke=\"none\""));
+        let u = [dx / len, dy / len];
+        let n = [u[1], -u[0]];
+        let o = l.off;
+        let sgn = if o >= 0.0 { 1.0 } else { -1.0 };
+        let at = |p: Pt, k: f64| [p[0] + n[0] * k, p[1] + n[1] * k];
+        let (line, ends): ((Pt, Pt), &[Pt]) = if half {
+            let s = at(b, o);
+            ((s, [s[0] - u[0] * l.len, s[1] - u[1] * l.len]), &[b])
+        } else {
+            ((at(a, o), at(b, o)), &[a, b])
         };
-        let out = if len > 20.0 { 1.0 } else { -1.0 };
-        head(x0, y0, -out);
-        head(x1, y1, out);
-        if text.is_empty() {
-            return;
-        }
-        // The text sits at the middle of the part of the line on the page (as the app puts it in its view).
-        let (cx, cy) = visible_middle((x0, y0), (x1, y1), (self.o.width, self.o.height));
-        let colour = p.text.or(p.stroke).unwrap_or("#111827");
-        if nx.abs() > 0.7 {
-            // A vertical dimension: the text runs along its line, reading upward.
-            let baseline = if nx * sgn > 0.0 { "top" } else { "bottom" };
-            self.text(cx + nx * 4.0 * sgn, cy, text, colour, true, "middle", baseline, -90.0);
-        } else {
-            let baseline = if ny * sgn < 0.0 { "bottom" } else { "top" };
-            self.text(cx + nx * 7.0 * sgn, cy + ny * 7.0 * sgn, text, colour, true, "middle", baseline, 0.0);
-        }
-    }
-}
-
-/// The middle of the part of segment (x0, y0)–(x1, y1) inside the page
-/// `0..w × 0..h` less a 14 px margin (the segment's middle when none of it is).
-fn visible_middle((x0, y0): (f64, f64), (x1, y1): (f64, f64), (w, h): (f64, f64)) -> (f64, f64) {
-    const M: f64 = 14.0;
-    let (dx, dy) = (x1 - x0, y1 - y0);
-    // Parametric clip: each side bounds t to one side of q / p.
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [(-dx, x0 - M), (dx, w - M - x0), (-dy, y0 - M), (dy, h - M - y0)] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        let stroke = pen.stroke.clone().unwrap_or_else(|| "#374151".into());
+        if o.abs() > 3.0 {
+            for &p in ends {
+                self.path(&[at(p, 2.0 * sgn), at(p, o + 4.0 * sgn)], false, &Pen::thin(&stroke, 0.8));
             }
-            continue;
         }
-        let r = q / p;
-        if p < 0.0 {
-            t0 = t0.max(r);
+        let (p, q) = line;
+        self.path(&[p, q], false, pen);
+        let head_pen = Pen::filled(&stroke);
+        let mut head = |x: Pt, dir: f64| {
+            let (lh, wh) = (7.0, 2.6);
+            let base = [x[0] - u[0] * lh * dir, x[1] - u[1] * lh * dir];
+            self.path(&[x, at(base, wh), at(base, -wh)], true, &head_pen);
+        };
+        if half {
+            head(p, 1.0);
+        } else if (q[0] - p[0]).hypot(q[1] - p[1]) > 20.0 {
+            head(p, -1.0);
+            head(q, 1.0);
         } else {
-            t1 = t1.min(r);
+            head(p, 1.0);
+            head(q, -1.0);
         }
     }
-    if t0 > t1 {
-        return ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+
+    /// A label's text in its box, with a halo: one line centred (rotated by
+    /// its angle), or several lines a line apart, lined up as placed.
+    fn label(&mut self, l: &Placed, pen: &Pen) {
+        let [x0, y0, x1, y1] = l.bounds;
+        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        let x = match l.align {
+            Anchor::Start => x0 + 2.0,
+            Anchor::End => x1 - 2.0,
+            Anchor::Middle => cx,
+        };
+        let n = l.lines.len() as f64;
+        let colour = pen.text_colour().to_string();
+        for (k, line) in l.lines.iter().enumerate() {
+            if line.is_empty() {
+                continue;
+            }
+            let y = cy + (k as f64 - (n - 1.0) / 2.0) * LINE;
+            let rot = if l.angle != 0.0 {
+                format!(" transform=\"rotate({} {} {})\"", f(l.angle), f(x), f(y))
+            } else {
+                String::new()
+            };
+            push(
+                &mut self.out,
+                format_args!(
+                    "<text x=\"{}\" y=\"{}\" text-anchor=\"{}\" dominant-baseline=\"central\"{rot} fill=\"{colour}\" stroke=\"{HALO}\" stroke-width=\"3\" paint-order=\"stroke\">{}</text>\n",
+                    f(x),
+                    f(y),
+                    l.align.svg(),
+                    escape(line)
+                ),
+            );
+        }
     }
-    let t = (t0 + t1) / 2.0;
-    (x0 + dx * t, y0 + dy * t)
 }
 
-/// Fill, stroke, dashes and opacity of a pen.
-fn attrs(p: &Pen, fill: Option<String>, stroke: Option<String>) -> String {
-    let mut a = format!("fill=\"{}\"", fill.as_deref().unwrap_or("none"));
-    if let Some(s) = stroke {
-        push(&mut a, format_args!(" stroke=\"{s}\" stroke-width=\"{}\"", f(p.width)));
-        if !p.dash.is_empty() {
-            let d: Vec<String> = p.dash.iter().map(|v| f(*v)).collect();
-            push(&mut a, format_args!(" stroke-dasharray=\"{}\"", d.join(" ")));
-        }
+/// SVG path data of page points (`Z` closing a polygon).
+fn path_data(pts: &[Pt], closed: bool) -> String {
+    let mut d = String::new();
+    for (k, p) in pts.iter().enumerate() {
+        push(&mut d, format_args!("{}{} {}", if k == 0 { 'M' } else { 'L' }, f(p[0]), f(p[1])));
     }
-    if let Some(o) = p.alpha {
-        push(&mut a, format_args!(" opacity=\"{}\"", f(o)));
+    if closed {
+        d.push('Z');
     }
-    a
+    d
 }

@@ -121,12 +121,23 @@ impl Session {
 
     /// View `view` (`side`, `tooth`, `starts`) of the last plan as a
     /// standalone SVG document, written by the same writer as the command
-    /// line's `screwcut svg` ([`crate::svg`]): fitted to `width × height` px
-    /// (the view's size on screen) as the view's Fit shows it, with the radial
-    /// `stretch`, thread `thread` (its dimensions when many threads are drawn;
-    /// the tooth and starts views' thread) and start `start`, and the label
-    /// templates `labels` (`[key, template, key, template…]`, the page's
-    /// language; missing keys in English).
+    /// line's `screwcut svg` ([`crate::svg`]) on a `size` page (`[width,
+    /// height]` px, the view's size on screen), with thread `thread` (its
+    /// dimensions when many threads are drawn; the tooth and starts views'
+    /// thread), start `start` and the label templates `labels` (`[key,
+    /// template, key, template…]`, the page's language; missing keys in
+    /// English).
+    ///
+    /// `layout` is what the view shows: `{transform: {sx, sy, tx, ty},
+    /// labels: [{item, lines, align, box, angle, off, len, lead}…]}` (see
+    /// [`crate::svg::Layout`]); the drawing is then made with that transform
+    /// and each label drawn where it is given (without `labels`, placed at
+    /// the transform). Without a layout (undefined or null), the drawing
+    /// and its labels are fitted to the page as the view's Fit does, with
+    /// the radial `stretch`. A layout that does not fit the scene (a label
+    /// naming an item that is not a label, numbers that are not finite) is
+    /// an error.
+    #[allow(clippy::too_many_arguments)] // the JavaScript call's positional arguments
     pub fn svg(
         &self,
         view: &str,
@@ -135,7 +146,13 @@ impl Session {
         size: Vec<f64>,
         stretch: bool,
         labels: Vec<String>,
+        layout: JsValue,
     ) -> Result<String, JsValue> {
+        let layout: Option<crate::svg::Layout> = if layout.is_undefined() || layout.is_null() {
+            None
+        } else {
+            Some(serde_wasm_bindgen::from_value(layout).map_err(|e| err(format!("the SVG layout: {e}")))?)
+        };
         self.with_last(|plan| {
             let t = pick(plan, thread);
             let scene = match view {
@@ -145,16 +162,12 @@ impl Session {
                 _ => return Err(err(format!("unknown view '{view}': side, tooth or starts"))),
             };
             let scene = scene.ok_or_else(|| err(format!("no thread to draw the {view} view of")))?;
-            let finite = |v: Option<&f64>, d: f64| v.copied().filter(|v| v.is_finite() && *v > 0.0).unwrap_or(d);
-            let pairs = labels.chunks_exact(2).map(|kv| (kv[0].clone(), kv[1].clone())).collect();
-            let opts = crate::svg::Options {
-                width: finite(size.first(), 800.0).min(20_000.0),
-                height: finite(size.get(1), 500.0).min(20_000.0),
-                stretch,
-                thread: t.unwrap_or(0),
-                labels: pairs,
-                ..Default::default()
+            let [width, height] = size[..] else {
+                return Err(err(format!("the page size is [width, height], not {} numbers", size.len())));
             };
+            let pairs = labels.chunks_exact(2).map(|kv| (kv[0].clone(), kv[1].clone())).collect();
+            let opts = crate::svg::Options { width, height, stretch, thread: t.unwrap_or(0), labels: pairs, layout };
+            opts.validate(&scene).map_err(err)?;
             Ok(crate::svg::svg(&scene, &opts))
         })
     }

@@ -1,0 +1,188 @@
+//! The drawing's lines, which labels prefer not to cross (`sceneLines` in
+//! `www/src/render.js`, `lineIndex` in `www/src/labels.js`): the segments
+//! of paths, arrows and circles in a grid of world cells built once per
+//! scene; a label's box on the page is taken back to world coordinates to
+//! find the lines near it.
+
+use super::Transform;
+use crate::diagram::scene::{Pt, Rect, Scene, Shape, Style};
+
+/// Most of the drawing's segments labels keep off (those of threads first).
+const MAX_SEGMENTS: usize = 20_000;
+/// Cells of the grid on each axis, plus one on each side for what lies beyond.
+const CELLS: i64 = 64;
+const N: usize = CELLS as usize + 2;
+/// A segment across more cells than this is tested every time.
+const WIDE: i64 = 256;
+
+/// Whether segment p→q crosses box `b` (`[x0, y0, x1, y1]`).
+pub(super) fn segment_hits_box(p: Pt, q: Pt, b: &[f64; 4]) -> bool {
+    let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (pp, qq) in [(-dx, p[0] - b[0]), (dx, b[2] - p[0]), (-dy, p[1] - b[1]), (dy, b[3] - p[1])] {
+        if pp == 0.0 {
+            if qq < 0.0 {
+                return false;
+            }
+            continue;
+        }
+        let r = qq / pp;
+        if pp < 0.0 {
+            t0 = t0.max(r);
+        } else {
+            t1 = t1.min(r);
+        }
+        if t0 > t1 {
+            return false;
+        }
+    }
+    true
+}
+
+/// World segments `[x0, y0, x1, y1]` in a grid over a rectangle.
+pub(super) struct LineIndex {
+    world: Vec<[f64; 4]>,
+    x0: f64,
+    y0: f64,
+    cw: f64,
+    ch: f64,
+    /// Cell `c` holds `list[start[c]..start[c + 1]]`.
+    start: Vec<usize>,
+    list: Vec<usize>,
+    /// Segments across many cells, tested every time.
+    wide: Vec<usize>,
+}
+
+impl LineIndex {
+    /// The index of `world` segments, finest over `rect`.
+    pub fn new(world: Vec<[f64; 4]>, rect: Rect) -> LineIndex {
+        let mut ix = LineIndex {
+            world: Vec::new(),
+            x0: rect.x0,
+            y0: rect.y0,
+            cw: (rect.width() / CELLS as f64).max(1e-9),
+            ch: (rect.height() / CELLS as f64).max(1e-9),
+            start: vec![0; N * N + 1],
+            list: Vec::new(),
+            wide: Vec::new(),
+        };
+        let spans: Vec<Option<(i64, i64, i64, i64)>> = world.iter().map(|s| ix.span(s)).collect();
+        for (k, span) in spans.iter().enumerate() {
+            match span {
+                Some((i0, i1, j0, j1)) if (i1 - i0 + 1) * (j1 - j0 + 1) <= WIDE => {
+                    LineIndex::cells(*i0, *i1, *j0, *j1).for_each(|c| ix.start[c + 1] += 1)
+                }
+                Some(_) => ix.wide.push(k),
+                None => {}
+            }
+        }
+        for c in 1..ix.start.len() {
+            ix.start[c] += ix.start[c - 1];
+        }
+        let mut fill = ix.start.clone();
+        ix.list = vec![0; ix.start[N * N]];
+        for (k, span) in spans.iter().enumerate() {
+            if let Some((i0, i1, j0, j1)) = *span {
+                if (i1 - i0 + 1) * (j1 - j0 + 1) <= WIDE {
+                    for c in LineIndex::cells(i0, i1, j0, j1) {
+                        ix.list[fill[c]] = k;
+                        fill[c] += 1;
+                    }
+                }
+            }
+        }
+        ix.world = world;
+        ix
+    }
+
+    /// The cell columns and rows (shifted by one) a finite segment spans.
+    fn span(&self, s: &[f64; 4]) -> Option<(i64, i64, i64, i64)> {
+        if !s.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let (i0, i1) = (self.col(s[0].min(s[2])) + 1, self.col(s[0].max(s[2])) + 1);
+        let (j0, j1) = (self.row(s[1].min(s[3])) + 1, self.row(s[1].max(s[3])) + 1);
+        Some((i0, i1, j0, j1))
+    }
+
+    /// The cells of columns `i0..=i1` and rows `j0..=j1`, as indices.
+    fn cells(i0: i64, i1: i64, j0: i64, j1: i64) -> impl Iterator<Item = usize> {
+        (i0..=i1).flat_map(move |i| (j0..=j1).map(move |j| i as usize * N + j as usize))
+    }
+
+    fn col(&self, x: f64) -> i64 {
+        ((x - self.x0) / self.cw).floor().clamp(-1.0, CELLS as f64) as i64
+    }
+
+    fn row(&self, y: f64) -> i64 {
+        ((y - self.y0) / self.ch).floor().clamp(-1.0, CELLS as f64) as i64
+    }
+
+    /// Whether a line crosses the page box `b` under transform `xf`.
+    pub fn hits(&self, b: &[f64; 4], xf: &Transform) -> bool {
+        let test = |k: usize| {
+            let w = &self.world[k];
+            segment_hits_box(xf.at([w[0], w[1]]), xf.at([w[2], w[3]]), b)
+        };
+        if self.wide.iter().any(|&k| test(k)) {
+            return true;
+        }
+        let (i0, i1) = (self.col((b[0] - xf.tx) / xf.sx), self.col((b[2] - xf.tx) / xf.sx));
+        let (j0, j1) = (self.row((xf.ty - b[3]) / xf.sy), self.row((xf.ty - b[1]) / xf.sy));
+        if i0 > i1 || j0 > j1 {
+            return false;
+        }
+        LineIndex::cells(i0 + 1, i1 + 1, j0 + 1, j1 + 1)
+            .any(|c| self.list[self.start[c]..self.start[c + 1]].iter().any(|&k| test(k)))
+    }
+}
+
+/// Styles whose lines labels may cross: centre lines and filled zones.
+fn crossable(style: Style) -> bool {
+    matches!(style, Style::Axis | Style::ThreadZone | Style::Delta1 | Style::Delta2)
+}
+
+/// The segments of one item: paths (polygons closed), arrows, circles as 24 chords.
+fn segments(shape: &Shape, out: &mut Vec<[f64; 4]>) {
+    let path = |points: &[Pt], closed: bool, out: &mut Vec<[f64; 4]>| {
+        out.extend(points.windows(2).map(|w| [w[0][0], w[0][1], w[1][0], w[1][1]]));
+        if let (true, Some(first), Some(last)) = (closed && points.len() >= 3, points.first(), points.last()) {
+            out.push([last[0], last[1], first[0], first[1]]);
+        }
+    };
+    match shape {
+        Shape::Polyline { points } => path(points, false, out),
+        Shape::Polygon { points } => path(points, true, out),
+        Shape::Arrow { from, to } => path(&[*from, *to], false, out),
+        Shape::Circle { center: [x, y], radius: r } => {
+            let at = |k: f64| {
+                let a = k * std::f64::consts::PI / 12.0;
+                [x + r * a.cos(), y + r * a.sin()]
+            };
+            out.extend((0..24).map(|k| {
+                let (p, q) = (at(f64::from(k)), at(f64::from(k + 1)));
+                [p[0], p[1], q[0], q[1]]
+            }));
+        }
+        _ => {}
+    }
+}
+
+/// The drawing's lines that labels keep off: every segment of the items
+/// whose lines may not be crossed, the threads' items first, at most
+/// [`MAX_SEGMENTS`], in a grid over the scene's focus.
+pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
+    let mut out = Vec::new();
+    'all: for of_threads in [true, false] {
+        for item in scene.items.iter().filter(|i| i.thread.is_some() == of_threads && !crossable(i.style)) {
+            let mut one = Vec::new();
+            segments(&item.shape, &mut one);
+            if out.len() + one.len() > MAX_SEGMENTS {
+                out.extend(one.into_iter().take(MAX_SEGMENTS - out.len()));
+                break 'all;
+            }
+            out.extend(one);
+        }
+    }
+    LineIndex::new(out, scene.focus)
+}
