@@ -154,7 +154,7 @@ pub fn english(key: &str) -> Option<&'static str> {
         "axial_offsets" => "axial offsets lead·θ/360",
         "start_angle" => "{}",
         "starts_capped" => "{} starts: the first 360 are drawn",
-        "moves_capped" => "drawing stops after {} moves",
+        "moves_capped" => "motions outside the threads: only the first {} are drawn",
         "square_tool" => "0° tool: width {} assumed",
         "detail_passes" => "every n-th pass drawn (n/all): {}",
         "detail_starts" => "one start drawn, the others cut the same path (1/starts): {}",

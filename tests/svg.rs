@@ -1,19 +1,33 @@
 #![cfg(not(target_arch = "wasm32"))]
-//! `svg`: every view gives well-formed SVG (parsed by roxmltree) whose
-//! viewBox holds the fitted drawing area and the estimated box of every
-//! label, with the shapes clipped to it.
+//! `svg`: every view of every example gives well-formed SVG (parsed by
+//! roxmltree) whose viewBox is `0 0 width height`, with the shapes clipped
+//! to it and every label inside it, none overlapping another (boxes from
+//! the writer's own width estimate), in English and in Chinese, at the
+//! default size and at 300 × 200. A given layout (the app's export) puts
+//! each label exactly where it is given; a layout that does not fit the
+//! scene is refused.
 
 mod common;
 use common::plan_with;
 use screwcut::Dialect;
 use screwcut::diagram::scene::{Anchor, Item, Label, Scene, Shape, Style, ViewKind};
 use screwcut::diagram::{side, starts, tooth};
-use screwcut::svg::{Options, measure, svg};
+use screwcut::svg::{Layout, Options, Placed, Transform, measure, svg};
 
-/// What a check found: the viewBox and how many texts and paths it holds.
+/// Height of a label's box (the app's `LINE`).
+const LINE: f64 = 15.0;
+
+/// A text of the document: its string, its box estimated as the writer estimates it, and its colour.
+#[derive(Debug)]
+struct Text {
+    s: String,
+    bounds: [f64; 4],
+}
+
+/// What a check found: the page, the texts and how many paths.
 struct Checked {
-    view_box: [f64; 4],
-    texts: Vec<String>,
+    size: [f64; 2],
+    texts: Vec<Text>,
     paths: usize,
 }
 
@@ -24,36 +38,46 @@ fn numbers(s: &str) -> Vec<f64> {
         .collect()
 }
 
-/// Parses `doc` and checks its structure and extents.
+/// The box of a `<text>` element: the label box the writer centred it in (one line of it).
+fn text_box(n: roxmltree::Node, s: &str) -> [f64; 4] {
+    let a = |k| n.attribute(k).unwrap().parse::<f64>().unwrap();
+    let (x, y) = (a("x"), a("y"));
+    assert_eq!(n.attribute("dominant-baseline"), Some("central"));
+    let w = measure(s, 12.0) + 4.0;
+    if let Some(t) = n.attribute("transform") {
+        assert!(t.starts_with("rotate(-90 "), "{t}");
+        return [x - LINE / 2.0, y - w / 2.0, x + LINE / 2.0, y + w / 2.0];
+    }
+    let x0 = match n.attribute("text-anchor").unwrap() {
+        "start" => x - 2.0,
+        "end" => x + 2.0 - w,
+        "middle" => x - w / 2.0,
+        other => panic!("anchor {other}"),
+    };
+    [x0, y - LINE / 2.0, x0 + w, y + LINE / 2.0]
+}
+
+/// Parses `doc` and checks its structure: the page, the clip, finite numbers.
 fn check(doc: &str) -> Checked {
     let xml = roxmltree::Document::parse(doc).unwrap_or_else(|e| panic!("not XML: {e}\n{doc}"));
     let root = xml.root_element();
     assert_eq!(root.tag_name().name(), "svg");
     assert_eq!(root.tag_name().namespace(), Some("http://www.w3.org/2000/svg"));
     let vb = numbers(root.attribute("viewBox").expect("a viewBox"));
-    assert_eq!(vb.len(), 4);
-    let [x, y, w, h] = [vb[0], vb[1], vb[2], vb[3]];
+    let [x, y, w, h] = vb[..] else { panic!("viewBox {vb:?}") };
+    assert_eq!([x, y], [0.0, 0.0], "the viewBox is the page");
     assert!(w > 0.0 && h > 0.0);
     assert_eq!(numbers(root.attribute("width").unwrap()), [w]);
     assert_eq!(numbers(root.attribute("height").unwrap()), [h]);
     assert!(root.attribute("font-family").unwrap().ends_with("sans-serif"));
-    let font = numbers(root.attribute("font-size").unwrap())[0];
+    assert_eq!(root.attribute("font-size"), Some("12"));
     assert!(root.children().any(|n| n.has_tag_name("title")));
-    let inside = |px: f64, py: f64, what: &str| {
-        assert!(
-            px >= x - 1e-6 && px <= x + w + 1e-6 && py >= y - 1e-6 && py <= y + h + 1e-6,
-            "{what} at ({px}, {py}) is outside the viewBox {vb:?}"
-        );
-    };
-    // The fitted drawing area (0, 0)–(width, height) is on the page, and the shapes are clipped to the page.
-    inside(0.0, 0.0, "the drawing area");
     let clip = xml.descendants().find(|n| n.has_tag_name("clipPath")).expect("a clip path");
     let rect = clip.children().find(|n| n.has_tag_name("rect")).expect("a clip rectangle");
     let r = |k| rect.attribute(k).unwrap().parse::<f64>().unwrap();
-    assert_eq!([r("x"), r("y"), r("width"), r("height")], [x, y, w, h], "the clip is the page");
-    let id = clip.attribute("id").unwrap();
+    assert_eq!([r("x"), r("y"), r("width"), r("height")], [0.0, 0.0, w, h], "the clip is the page");
     let group = root.children().find(|n| n.has_tag_name("g")).expect("the drawing group");
-    assert_eq!(group.attribute("clip-path"), Some(format!("url(#{id})").as_str()));
+    assert_eq!(group.attribute("clip-path"), Some(format!("url(#{})", clip.attribute("id").unwrap()).as_str()));
     let (mut texts, mut paths) = (Vec::new(), 0);
     for n in xml.descendants().filter(|n| n.is_element()) {
         match n.tag_name().name() {
@@ -65,80 +89,146 @@ fn check(doc: &str) -> Checked {
             }
             "circle" => {
                 let a = |k| n.attribute(k).unwrap().parse::<f64>().unwrap();
-                let (cx, cy, r) = (a("cx"), a("cy"), a("r"));
-                assert!(cx.is_finite() && cy.is_finite() && r >= 0.0);
+                assert!(a("cx").is_finite() && a("cy").is_finite() && a("r") >= 0.0);
             }
             "text" => {
                 let s = n.text().unwrap_or_default().to_string();
                 assert!(!s.is_empty());
-                let a = |k| n.attribute(k).unwrap().parse::<f64>().unwrap();
-                let (tx, ty) = (a("x"), a("y"));
-                let tw = measure(&s, font);
-                let th = font * 1.25;
-                let (a0, a1) = match n.attribute("text-anchor").unwrap() {
-                    "start" => (0.0, tw),
-                    "end" => (-tw, 0.0),
-                    _ => (-tw / 2.0, tw / 2.0),
-                };
-                let (b0, b1) = match n.attribute("dominant-baseline").unwrap() {
-                    "hanging" => (0.0, th),
-                    "text-after-edge" => (-th, 0.0),
-                    "central" => (-th / 2.0, th / 2.0),
-                    other => panic!("baseline {other}"),
-                };
-                if n.attribute("transform").is_some() {
-                    inside(tx + b0, ty - a1, &format!("label {s:?}"));
-                    inside(tx + b1, ty - a0, &format!("label {s:?}"));
-                } else {
-                    inside(tx + a0, ty + b0, &format!("label {s:?}"));
-                    inside(tx + a1, ty + b1, &format!("label {s:?}"));
-                }
-                texts.push(s);
+                texts.push(Text { bounds: text_box(n, &s), s });
             }
             _ => {}
         }
     }
-    Checked { view_box: [x, y, w, h], texts, paths }
+    Checked { size: [w, h], texts, paths }
+}
+
+/// What is wrong with the labels of a checked document: outside the page, overlapping.
+fn faults(c: &Checked) -> Vec<String> {
+    let [w, h] = c.size;
+    let mut out = Vec::new();
+    for t in &c.texts {
+        let b = t.bounds;
+        if b[0] < -0.01 || b[1] < -0.01 || b[2] > w + 0.01 || b[3] > h + 0.01 {
+            out.push(format!("{:?} outside {w}×{h}: {b:?}", t.s));
+        }
+    }
+    for (i, a) in c.texts.iter().enumerate() {
+        for b in &c.texts[i + 1..] {
+            let (p, q) = (a.bounds, b.bounds);
+            if p[0] < q[2] - 0.5 && q[0] < p[2] - 0.5 && p[1] < q[3] - 0.5 && q[1] < p[3] - 0.5 {
+                out.push(format!("{:?} overlaps {:?}", a.s, b.s));
+            }
+        }
+    }
+    out
 }
 
 const PROGRAMS: &[(&str, &str, Dialect)] = &[
     ("o1006", include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc),
+    ("o0009", include_str!("../examples/o0009.nc"), Dialect::Gsk980tdc),
     ("g92-two-start", include_str!("../examples/g92-two-start.nc"), Dialect::Gsk980tdc),
+    ("g78-m30x2", include_str!("../examples/g78-m30x2.nc"), Dialect::Gsk980tdc),
     ("g78-flank-alternating", include_str!("../examples/g78-flank-alternating.nc"), Dialect::Gsk980tdc),
     ("g76-fanuc", include_str!("../examples/g76-fanuc.nc"), Dialect::Fanuc0i),
     ("renhe-tails", include_str!("../examples/renhe-tails.nc"), Dialect::Renhe),
     ("g76-m12-g7", include_str!("linuxcnc/g76-m12-g7.ngc"), Dialect::LinuxCnc),
 ];
 
-#[test]
-fn every_view_is_valid_svg_with_every_label_inside() {
-    for &(name, src, d) in PROGRAMS {
-        let plan = plan_with(src, d, &[]);
-        let s = check(&svg(&side(&plan), &Options::default()));
-        assert!(s.paths > 3, "{name}");
-        assert!(s.texts.iter().any(|t| t.starts_with("Ph ")), "{name}: {:?}", s.texts);
-        let t = check(&svg(&tooth(&plan, 0, 1).unwrap(), &Options::default()));
-        assert!(t.texts.iter().any(|t| t.starts_with("h ")), "{name}: {:?}", t.texts);
-        let st = check(&svg(&starts(&plan, 0).unwrap(), &Options::default()));
-        assert!(st.texts.iter().any(|t| t.starts_with("one-rev signal")), "{name}: {:?}", st.texts);
-    }
+/// The app's Chinese templates of the scene's labels (`www/src/i18n.js`).
+const ZH: &[(&str, &str)] = &[
+    ("dia_major", "大径 Ø{}"),
+    ("dia_minor", "小径 Ø{}"),
+    ("lead", "导程 {}"),
+    ("pitch", "螺距 {}"),
+    ("length", "长 {}"),
+    ("taper", "锥度 {}"),
+    ("height", "牙高 {}"),
+    ("tool_angle", "刀尖角 {}"),
+    ("start_of", "第 {} 头"),
+    ("pass_depth_finish", "{} 精车"),
+    ("pass_depth_spring", "{} 光刀"),
+    ("infeed_radial", "径向进刀(中线)"),
+    ("infeed_left", "左侧面进刀"),
+    ("infeed_right", "右侧面进刀"),
+    ("infeed_alternating", "左右交替进刀"),
+    ("infeed_programmed", "按程序进刀"),
+    ("one_rev", "一转信号 {}"),
+    ("axial_offsets", "轴向偏移 导程·θ/360"),
+    ("starts_capped", "{} 头：只画前 360 头"),
+    ("moves_capped", "螺纹以外的运动只画前 {} 段"),
+    ("square_tool", "0° 刀：假定刀宽 {}"),
+    ("detail_passes", "每隔 n 次走刀画一次(n/总数)：{}"),
+    ("detail_starts", "只画一头，其余各头路径相同(1/头数)：{}"),
+    ("detail_starts_passes", "只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}"),
+];
+
+/// The scenes of a program: side, tooth and starts of its first thread.
+fn scenes(src: &str, d: Dialect) -> Vec<(&'static str, Scene)> {
+    let plan = plan_with(src, d, &[]);
+    let mut out = vec![("side", side(&plan))];
+    out.extend(tooth(&plan, 0, 1).map(|s| ("tooth", s)));
+    out.extend(starts(&plan, 0).map(|s| ("starts", s)));
+    out
 }
 
 #[test]
-fn labels_widen_the_page_and_take_the_callers_words() {
+fn every_view_has_every_label_inside_and_none_overlapping() {
+    let zh: Vec<(String, String)> = ZH.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect();
+    let mut bad = Vec::new();
+    for &(name, src, d) in PROGRAMS {
+        for (view, scene) in scenes(src, d) {
+            for (lang, labels) in [("en", Vec::new()), ("zh", zh.clone())] {
+                for (w, h, stretch) in [(800.0, 500.0, false), (800.0, 500.0, true), (300.0, 200.0, false)] {
+                    let o = Options { width: w, height: h, stretch, labels: labels.clone(), ..Options::default() };
+                    let c = check(&svg(&scene, &o));
+                    assert_eq!(c.size, [w, h]);
+                    assert!(c.paths > 2, "{name} {view}");
+                    let at = format!("{name} {view} {lang} {w}×{h}{}", if stretch { " stretched" } else { "" });
+                    bad.extend(faults(&c).into_iter().map(|f| format!("{at}: {f}")));
+                    // The chosen thread's major, minor and lead are always there.
+                    let must: &[&str] = match (view, lang) {
+                        ("side", "en") => &["major Ø", "minor Ø", "Ph "],
+                        ("side", _) => &["大径 Ø", "小径 Ø", "导程 "],
+                        ("tooth", "en") => &["h ", "P "],
+                        ("tooth", _) => &["牙高 ", "螺距 "],
+                        _ => &[],
+                    };
+                    for m in must {
+                        assert!(c.texts.iter().any(|t| t.s.starts_with(m)), "{at}: no {m:?} in {:?}", c.texts);
+                    }
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
+}
+
+/// A scene of one cut, a long note at its end and the lead at its start.
+fn small_scene(note: &str) -> Scene {
     let mut scene = Scene::new(ViewKind::Side);
     let line = Shape::Polyline { points: vec![[0.0, 0.0], [10.0, 5.0]] };
     scene.push(Item::new(line, Style::Cut), true);
-    let long = "a label far longer than the drawing is wide, at its right end";
-    let text = Shape::Text { at: [10.0, 5.0], label: Label::new("", long), anchor: Anchor::Start, dx: 6.0, dy: 0.0 };
+    let text = Shape::Text { at: [10.0, 5.0], label: Label::new("", note), anchor: Anchor::Start, dx: 6.0, dy: 0.0 };
     scene.push(Item::new(text, Style::Note), true);
     let lead = Shape::Text { at: [0.0, 0.0], label: Label::new("lead", "2"), anchor: Anchor::End, dx: -4.0, dy: 0.0 };
     scene.push(Item::new(lead, Style::Dimension), true);
     scene.finish();
+    scene
+}
+
+#[test]
+fn labels_fit_in_the_page_wrapped_and_take_the_callers_words() {
+    let long = "a label far longer than the drawing is wide, at its right end, and longer still";
+    let scene = small_scene(long);
     let o = Options { width: 300.0, height: 200.0, ..Options::default() };
     let c = check(&svg(&scene, &o));
-    assert!(c.view_box[0] + c.view_box[2] > 300.0 + 100.0, "{:?}", c.view_box);
-    assert!(c.texts.contains(&"Ph 2".to_string()), "{:?}", c.texts);
+    assert_eq!(c.size, [300.0, 200.0]);
+    assert!(faults(&c).is_empty(), "{:?}", faults(&c));
+    assert!(c.texts.iter().any(|t| t.s == "Ph 2"), "{:?}", c.texts);
+    // The note is wrapped: its lines, in order, give it back.
+    let lines: Vec<&str> = c.texts.iter().filter(|t| t.s != "Ph 2").map(|t| t.s.as_str()).collect();
+    assert!(lines.len() >= 2, "{lines:?}");
+    assert_eq!(lines.join(" "), long);
     let zh = Options { labels: vec![("lead".into(), "导程 {}".into())], ..o };
     let doc = svg(&scene, &zh);
     check(&doc);
@@ -154,7 +244,8 @@ fn labels_widen_the_page_and_take_the_callers_words() {
     };
     s2.push(Item::new(t, Style::Note), true);
     s2.finish();
-    assert_eq!(check(&svg(&s2, &Options::default())).texts, ["a < b & \"c\""]);
+    let texts: Vec<String> = check(&svg(&s2, &Options::default())).texts.into_iter().map(|t| t.s).collect();
+    assert_eq!(texts, ["a < b & \"c\""]);
 }
 
 #[test]
@@ -165,16 +256,82 @@ fn an_empty_plan_still_draws() {
 }
 
 /// O1006 ends with `G00 X100 Z100` (a return far from the thread): the page
-/// is the app's Fit of the threads at the size asked for, the far rapid is
-/// clipped, not fitted (it would shrink the thread to a corner of the page).
+/// is the Fit of the threads, the far rapid is clipped, not fitted (it would
+/// shrink the thread to a corner of the page).
 #[test]
 fn a_far_return_is_clipped_not_fitted() {
     let plan = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
     let scene = side(&plan);
     assert!(scene.bounds.x1 > scene.focus.x1 + 20.0, "the far return lies outside the focus");
-    let c = check(&svg(&scene, &Options { width: 800.0, height: 500.0, ..Options::default() }));
-    let [x, y, w, h] = c.view_box;
-    assert!(x <= 0.0 && y <= 0.0 && x + w >= 800.0 && y + h >= 500.0, "{:?}", c.view_box);
-    // Only labels widen it, by less than a label's length.
-    assert!(w < 800.0 + 200.0 && h < 500.0 + 100.0, "{:?}", c.view_box);
+    let doc = svg(&scene, &Options::default());
+    let c = check(&doc);
+    assert_eq!(c.size, [800.0, 500.0]);
+    // The cuts (blue) span most of the page's width.
+    let xml = roxmltree::Document::parse(&doc).unwrap();
+    let cut = xml.descendants().find(|n| n.attribute("stroke") == Some("#2563eb")).expect("the cuts");
+    let xs: Vec<f64> = numbers(cut.attribute("d").unwrap()).chunks(2).map(|p| p[0]).collect();
+    let span = xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max) - xs.iter().cloned().fold(f64::INFINITY, f64::min);
+    assert!(span > 0.7 * 800.0, "the cuts span {span} px of 800");
+    // The far rapid leaves the page: it is there, clipped.
+    let far =
+        xml.descendants().filter_map(|n| n.attribute("d")).flat_map(numbers).any(|v| !(-50.0..=850.0).contains(&v));
+    assert!(far, "a shape beyond the page");
+}
+
+#[test]
+fn a_given_layout_draws_at_its_transform_with_its_labels() {
+    let plan = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
+    let scene = side(&plan);
+    let dim = scene.items.iter().position(|i| i.style == Style::Diameter).expect("a diameter");
+    let xf = Transform { sx: 10.0, sy: 10.0, tx: -50.0, ty: 400.0 };
+    let major = Placed {
+        item: dim,
+        lines: vec!["大径 Ø48".into()],
+        align: Anchor::Middle,
+        bounds: [100.0, 20.0, 115.0, 80.0],
+        angle: -90.0,
+        off: -30.0,
+        len: 40.0,
+        lead: None,
+    };
+    let layout = Layout { transform: xf, labels: Some(vec![major.clone()]) };
+    let o = Options { width: 640.0, height: 360.0, layout: Some(layout), ..Options::default() };
+    o.validate(&scene).expect("a layout of the scene");
+    let doc = svg(&scene, &o);
+    let c = check(&doc);
+    assert_eq!(c.size, [640.0, 360.0]);
+    assert_eq!(c.texts.len(), 1, "only the labels given: {:?}", c.texts);
+    assert!(doc.contains("<text x=\"107.5\" y=\"50\" text-anchor=\"middle\" dominant-baseline=\"central\" transform=\"rotate(-90 107.5 50)\""), "{doc}");
+    // The cuts at the transform: Z70 → x 650, Z13 → x 80; radius 23.55 → y 164.5.
+    assert!(doc.contains("M650 164.5L80 164.5"), "{doc}");
+    // Wrong layouts are refused, and the writer skips what it refuses.
+    let bad = |p: Placed| Options { layout: Some(Layout { transform: xf, labels: Some(vec![p]) }), ..o.clone() };
+    let cut = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
+    assert!(bad(Placed { item: cut, ..major.clone() }).validate(&scene).unwrap_err().contains("neither"));
+    assert!(bad(Placed { item: 1 << 30, ..major.clone() }).validate(&scene).unwrap_err().contains("not in the scene"));
+    assert!(bad(Placed { angle: f64::NAN, ..major.clone() }).validate(&scene).is_err());
+    assert!(bad(Placed { lines: vec![], ..major.clone() }).validate(&scene).is_err());
+    assert_eq!(check(&svg(&scene, &bad(Placed { item: cut, ..major.clone() }))).texts.len(), 0);
+    let twice =
+        Options { layout: Some(Layout { transform: xf, labels: Some(vec![major.clone(), major]) }), ..o.clone() };
+    assert!(twice.validate(&scene).unwrap_err().contains("twice"));
+    let flat = Options { layout: Some(Layout { transform: Transform { sy: 0.0, ..xf }, labels: None }), ..o.clone() };
+    assert!(flat.validate(&scene).is_err());
+    assert!(Options { width: f64::INFINITY, ..Options::default() }.validate(&scene).is_err());
+    // A transform without labels: the writer places them at it, inside the page.
+    let own = Options { layout: Some(Layout { transform: xf, labels: None }), ..o };
+    let c = check(&svg(&scene, &own));
+    assert!(faults(&c).is_empty() && !c.texts.is_empty(), "{:?}", c.texts);
+}
+
+#[test]
+fn a_layout_reads_from_the_apps_json() {
+    let json = r#"{"transform":{"sx":2,"sy":3,"tx":4,"ty":5},
+        "labels":[{"item":7,"key":"lead","text":"Ph 2","lines":["Ph 2"],"align":"middle","box":[1,2,3,4],"angle":0,"must":true,"off":14,"len":0,"lead":null},
+                  {"item":9,"lines":["a","b"],"align":"start","box":[1,2,30,40],"angle":0}]}"#;
+    let l: Layout = serde_json::from_str(json).expect("a layout");
+    assert_eq!(l.transform, Transform { sx: 2.0, sy: 3.0, tx: 4.0, ty: 5.0 });
+    let labels = l.labels.unwrap();
+    assert_eq!((labels[0].item, labels[0].off, labels[0].lead), (7, 14.0, None));
+    assert_eq!((labels[1].align, labels[1].off, labels[1].len), (Anchor::Start, 0.0, 0.0));
 }
