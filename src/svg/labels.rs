@@ -1,7 +1,7 @@
 //! The labels of a scene and where each may go (`www/src/labels.js`): a
 //! scene's dimensions and texts are anchored in world coordinates but sized
 //! in pixels; each becomes a [`Label`] with its width, its priority and its
-//! candidate places, best first. [`super::place`] chooses among them.
+//! candidate places, best first; placement chooses among them.
 
 use super::text::{measure, wrap};
 use super::{FONT_SIZE, MAX_ANNOTATED, Options, Transform};

@@ -17,6 +17,7 @@ import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
+import os from 'node:os';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 
@@ -185,21 +186,28 @@ try {
   const [svg] = await Promise.all([page.waitForEvent('download'), page.click('#side-panel [data-act="svg"]')]);
   const svgText = fs.readFileSync(await svg.path(), 'utf8');
   check('side view exports as SVG', svgText.startsWith('<?xml') && (svgText.match(/<path /g) || []).length > 20, svgText.slice(0, 80));
-  // One SVG writer: the app's export is the command line's `screwcut svg` at the view's size and stretch.
+  // One SVG writer: the app's export is the command line's `screwcut svg` given the same view
+  // (its size, transform and labels as placed: `--layout`), byte for byte.
   const cli = process.argv[3] || path.join(path.dirname(fileURLToPath(import.meta.url)), '../../target/debug/screwcut');
   const program = await page.evaluate(() => window.__screwcut.text());
-  const size = await page.evaluate(() => {
-    const r = document.getElementById('side').getBoundingClientRect();
-    return [r.width, r.height, document.querySelector('#side-panel [data-act="stretch"]').getAttribute('aria-pressed') === 'true'];
-  });
+  const sideLayout = await page.evaluate(() => window.__screwcut.inspect('svg_layout', 'side'));
+  const sideLabels = await page.evaluate(() => window.__screwcut.inspect('labels', 'side'));
+  const size = sideLabels.size;
+  const layoutFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-layout-')), 'side.json');
+  fs.writeFileSync(layoutFile, JSON.stringify(sideLayout));
   let cliSvg = '';
   try {
-    const args = ['svg', '-', '--view', 'side', '--width', String(size[0]), '--height', String(size[1]), ...(size[2] ? ['--stretch'] : [])];
+    const args = ['svg', '-', '--view', 'side', '--width', String(size[0]), '--height', String(size[1]), '--layout', layoutFile];
     cliSvg = execFileSync(cli, args, { input: program, encoding: 'utf8' });
   } catch (e) {
     cliSvg = `cannot run ${cli}: ${e.message}`;
   }
-  check(`the side SVG equals \`screwcut svg --width ${size[0]} --height ${size[1]}${size[2] ? ' --stretch' : ''}\``, cliSvg === svgText, firstDifference(svgText, cliSvg));
+  fs.rmSync(path.dirname(layoutFile), { recursive: true, force: true });
+  const texts = (svgText.match(/<text /g) || []).length;
+  const lines = sideLabels.placed.reduce((n, p) => n + p.lines.filter(Boolean).length, 0);
+  check(`the side SVG (${texts} texts) equals \`screwcut svg --width ${size[0]} --height ${size[1]} --layout\` with the view's transform and labels`, cliSvg === svgText && texts === lines && texts > 0, `${texts} texts, ${lines} label lines; ${firstDifference(svgText, cliSvg)}`);
+  const vb = (/viewBox="([^"]*)"/.exec(svgText)?.[1] || '').split(' ').map(Number);
+  check(`the side SVG is the view: viewBox ${vb.join(' ')}`, vb.length === 4 && vb[0] === 0 && vb[1] === 0 && Math.abs(vb[2] - size[0]) < 0.01 && Math.abs(vb[3] - size[1]) < 0.01, `view ${size}`);
   const [png] = await Promise.all([page.waitForEvent('download'), page.click('#tooth-panel [data-act="png"]')]);
   const pngBytes = fs.readFileSync(await png.path());
   check('tooth view exports as PNG', pngBytes.length > 1000 && pngBytes.subarray(1, 4).toString() === 'PNG', `${pngBytes.length} bytes`);

@@ -225,15 +225,15 @@ export class Engine {
 
   /**
    * A view as a file: SVG from the planner's SVG writer (the one `screwcut
-   * svg` uses, so the app's export and the command line's never differ),
-   * fitted at the view's size with its stretch, thread, start and language;
+   * svg` uses), drawn at the view's size with its transform and its labels
+   * where the canvas placed them, so the export is what the view shows;
    * PNG as the view draws it.
    */
   async on_export({ id, name, format, scale }) {
     const v = this.views[name];
     let data = null;
     if (v && format === 'svg') {
-      data = this.session.svg(name, this.thread, this.start, [v.cssW, v.cssH], !!v.stretch, labelTable(this.lang));
+      data = this.session.svg(name, this.thread, this.start, [v.cssW, v.cssH], !!v.stretch, labelTable(this.lang), v.svgLayout());
     } else if (v) data = await v.toPNG(scale || 2);
     this.post({ type: 'reply', id, data });
   }
@@ -265,7 +265,8 @@ export class Engine {
 
   /**
    * For tests and benchmarks: `view` (what view `name` shows), `pixels`
-   * (the inked pixels of its canvas), `labels` (its labels as placed), `layout`, `result` (keys and thread
+   * (the inked pixels of its canvas), `labels` (its labels as placed), `svg_layout` (what its SVG export
+   * is drawn with: `screwcut svg --layout`), `layout`, `result` (keys and thread
    * list of the last answer), `same_as_full` (whether the side section shown
    * equals a full build), `transfer` (the cost of a side scene as typed
    * arrays, objects and JSON).
@@ -291,6 +292,7 @@ export class Engine {
       },
       layout: () => this.core.scene_layout(),
       labels: () => v && v.labels(),
+      svg_layout: () => v && v.svgLayout(),
       result: () => {
         const r = this.result;
         return r && { threads: r.threads, thread: r.thread, sideKey: r.sideKey, toothKey: r.toothKey, resumedAt: r.resumedAt, toothLabels: r.tooth?.labels };

@@ -1,13 +1,19 @@
-// Scene rendering shared by the canvas views and the SVG/PNG export.
+// Scene rendering shared by the canvas views and the PNG export.
 //
 // A scene comes from the wasm core as typed arrays (see src/wasm/pack.rs):
 // `items` holds one record of `stride` u32s per item, `coords` the numbers of
 // each shape, `lines` the source lines, `labels` the label records. The
 // record layout is defined once in Rust and read here by name
 // (`setLayout(core.scene_layout())` before the first scene). Rendering walks
-// the arrays directly; a painter (canvas or SVG) draws screen-space primitives.
+// the arrays directly; a painter (canvas.js) draws screen-space primitives.
+// Label placement is labels.js's, the pens are pens.js's. The SVG export is
+// the core's writer (src/svg.rs), given the transform and the labels as
+// drawScene placed them.
 
 import { label as labelRecord, placeLabels, fitLabels, frameOf, lineIndex, wrap, LINE } from './labels.js';
+import { PENS, ROLE_STROKE, HIGHLIGHT, HIGHLIGHT_HALO, textWidth, areaColour, greyPen } from './pens.js';
+
+export { textWidth };
 
 /** The record layout: `stride`, field offsets by name, shape codes by name, anchor names. */
 let STRIDE = 10;
@@ -31,134 +37,6 @@ export function layout() {
 /** Above this many threads with dimensions, only the chosen thread's are drawn. */
 export const MAX_ANNOTATED = 6;
 
-/** Pens by style name; `role` colours (finish, spring) apply to pass items. */
-export const PENS = {
-  axis: { stroke: '#8a94a6', width: 1, dash: [14, 3, 2, 3] },
-  outline: { stroke: '#1f2937', width: 1.6 },
-  crest: { stroke: '#1f2937', width: 1.3, dash: [7, 3] },
-  root: { stroke: '#64748b', width: 1, dash: [2, 3] },
-  thread_zone: { fill: 'rgba(100,116,139,0.14)' },
-  rapid: { stroke: '#dc2626', width: 1, dash: [5, 4] },
-  cut: { stroke: '#2563eb', width: 2 },
-  runout: { stroke: '#ea580c', width: 2, dash: [2, 2] },
-  screw_in: { stroke: '#b45309', width: 2, dash: [2, 2] },
-  other_rapid: { stroke: '#a3a9b5', width: 1, dash: [3, 4] },
-  delta1: { fill: 'rgba(234,179,8,0.22)', text: '#854d0e' },
-  delta2: { fill: 'rgba(249,115,22,0.20)', text: '#9a3412' },
-  dimension: { stroke: '#374151', width: 1, text: '#111827' },
-  diameter: { stroke: '#374151', width: 1, text: '#111827' },
-  note: { stroke: '#4b5563', width: 1, text: '#374151' },
-  material: { fill: 'rgba(148,163,184,0.38)' },
-  profile: { stroke: '#111827', width: 1.8 },
-  tool: { stroke: '#1d4ed8', width: 1.1, alpha: 0.75 },
-  area: { fill: '#93c5fd', stroke: 'rgba(30,64,175,0.5)', width: 0.6 },
-  depth_tick: { stroke: '#374151', width: 1, text: '#1f2937' },
-  infeed: { stroke: '#dc2626', width: 1.6, text: '#991b1b' },
-  circle: { stroke: '#1f2937', width: 1.5 },
-  start: { stroke: '#2563eb', width: 1.6, text: '#1e3a8a' },
-  ruler: { stroke: '#374151', width: 1.2 },
-};
-const ROLE_STROKE = [null, null, '#059669', '#7c3aed']; // none, rough, finish, spring
-const HIGHLIGHT = '#f59e0b';
-/** The halo of a highlighted label's text (strong, light). */
-const HIGHLIGHT_HALO = ['#fcd34d', '#fde68a'];
-const FAMILY = 'system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif';
-const FONT = `12px ${FAMILY}`;
-
-/** Widths of label texts in FONT, measured once each. */
-const WIDTHS = new Map();
-let measurer;
-
-/**
- * The width of `s` in the label font, in CSS pixels: measured on a canvas
- * (an OffscreenCanvas in a worker), else estimated. Every painter places
- * labels with these widths, so a canvas, its PNG and its SVG agree.
- */
-export function textWidth(s) {
-  let w = WIDTHS.get(s);
-  if (w !== undefined) return w;
-  if (measurer === undefined) {
-    measurer = null;
-    try {
-      const c = typeof OffscreenCanvas === 'function' ? new OffscreenCanvas(1, 1) : typeof document !== 'undefined' ? document.createElement('canvas') : null;
-      measurer = (c && c.getContext('2d')) || null;
-    } catch {
-      measurer = null;
-    }
-  }
-  if (measurer) {
-    measurer.font = FONT;
-    w = measurer.measureText(s).width;
-  } else {
-    // No canvas: wide glyphs (CJK) at a full em, the rest at about 0.6 em.
-    w = 0;
-    for (const ch of s) w += ch.codePointAt(0) > 0x2e80 ? 12 : 7;
-  }
-  if (WIDTHS.size > 4096) WIDTHS.clear();
-  WIDTHS.set(s, w);
-  return w;
-}
-
-/** Area fill colour of pass `i` (distinct hues, finishing passes green). */
-export function areaColour(pass, role) {
-  if (role === 2) return 'rgba(16,185,129,0.65)';
-  if (role === 3) return 'rgba(139,92,246,0.5)';
-  const hue = (200 + pass * 47) % 360;
-  return `hsla(${hue},75%,62%,0.6)`;
-}
-
-const GREYS = new Map();
-const GREY_PENS = new WeakMap();
-
-/**
- * `colour` (#rgb, #rrggbb, rgb(a)() or hsl(a)()) through the grayscale(1)
- * filter: every channel becomes 0.2126 R + 0.7152 G + 0.0722 B, alpha kept.
- */
-export function grey(colour) {
-  let g = GREYS.get(colour);
-  if (g !== undefined) return g;
-  const rgba = parseColour(colour);
-  if (!rgba) return colour;
-  const [r, gr, b, a] = rgba;
-  const v = Math.round(0.2126 * r + 0.7152 * gr + 0.0722 * b);
-  g = a === 1 ? `rgb(${v},${v},${v})` : `rgba(${v},${v},${v},${a})`;
-  GREYS.set(colour, g);
-  return g;
-}
-
-/** `[r, g, b, a]` (0–255, alpha 0–1) of a CSS colour in one of the forms the pens use, else null. */
-function parseColour(c) {
-  let m = /^#([0-9a-f]{3}|[0-9a-f]{6})$/i.exec(c);
-  if (m) {
-    const h = m[1].length === 3 ? [...m[1]].map((x) => x + x).join('') : m[1];
-    return [0, 2, 4].map((k) => parseInt(h.slice(k, k + 2), 16)).concat(1);
-  }
-  m = /^(rgb|hsl)a?\(([^)]*)\)$/.exec(c);
-  if (!m) return null;
-  const v = m[2].split(',').map((x) => parseFloat(x));
-  const a = v.length > 3 ? v[3] : 1;
-  if (m[1] === 'rgb') return [v[0], v[1], v[2], a];
-  // hsl → rgb (CSS Color 4).
-  const h = (((v[0] % 360) + 360) % 360) / 30;
-  const sat = v[1] / 100;
-  const l = v[2] / 100;
-  const f = (n) => {
-    const k = (n + h) % 12;
-    return 255 * (l - sat * Math.min(l, 1 - l) * Math.max(-1, Math.min(k - 3, 9 - k, 1)));
-  };
-  return [f(0), f(8), f(4), a];
-}
-
-/** A pen with its colours greyed (kept per pen object). */
-function greyPen(pen) {
-  let g = GREY_PENS.get(pen);
-  if (!g) {
-    g = { ...pen };
-    for (const k of ['stroke', 'fill', 'text']) if (typeof pen[k] === 'string') g[k] = grey(pen[k]);
-    GREY_PENS.set(pen, g);
-  }
-  return g;
-}
 
 /** Decodes the label records once per scene. */
 export function prepare(scene, styleNames) {
@@ -347,7 +225,9 @@ function scratch(coords, count) {
  * opts: { tr(key, value), styleNames, highlight: Set<item index> | null, light
  *   (the cursor line's lighter mark), thread (the chosen one), stale, width,
  *   height, cull (skip paths outside width × height) }
- * Returns the labels as placed: {placed: [{item, key, text, lines (as drawn), align (of the lines in the box), box, angle, must}], dropped: [{item, key, text}]}.
+ * Returns the labels as placed: {placed: [{item, key, text, lines (as drawn), align (of the lines in the box), box, angle, must,
+ *   off (a dimension line's offset), len (a half dimension's line), lead (a text's leader)}], dropped: [{item, key, text}]}
+ *   (what the SVG writer takes as the labels of a layout, src/svg.rs `Placed`).
  */
 export function drawScene(painter, scene, xf, opts) {
   prepare(scene, opts.styleNames);
@@ -565,7 +445,7 @@ export function drawScene(painter, scene, xf, opts) {
   const placed = [];
   const dropped = [];
   for (const l of labels) {
-    if (l.at) placed.push({ item: l.i, key: l.key, text: l.text, lines: l.lines || [l.text], align: l.lines ? l.anchor : 'middle', box: l.at.box.map((v) => Math.round(v * 100) / 100), angle: l.at.angle, must: l.must });
+    if (l.at) placed.push({ item: l.i, key: l.key, text: l.text, lines: l.lines || [l.text], align: l.lines ? l.anchor : 'middle', box: l.at.box.map((v) => Math.round(v * 100) / 100), angle: l.at.angle, must: l.must, off: l.at.off ?? 0, len: l.at.len ?? 0, lead: l.at.lead ?? null });
     else dropped.push({ item: l.i, key: l.key, text: l.text });
   }
   return { placed, dropped };
@@ -644,155 +524,6 @@ function dimension(p, l, xf, pen) {
     head(x0, y0, 1);
     head(x1, y1, -1);
   }
-}
-
-/** A painter on a 2D canvas context (already scaled for devicePixelRatio). */
-export function canvasPainter(ctx) {
-  return {
-    begin(stale) {
-      ctx.save();
-      ctx.lineJoin = 'round';
-      ctx.lineCap = 'butt';
-      ctx.font = FONT;
-      // A stale drawing is faded here and drawn with grey pens (greyPen):
-      // the same pixels as a grayscale filter, without its cost per draw call.
-      if (stale) ctx.globalAlpha = 0.35;
-    },
-    end() {
-      ctx.restore();
-    },
-    paths(buf, spans, closed, pen) {
-      ctx.beginPath();
-      for (let j = 0; j < spans.length; j += 2) {
-        const s = spans[j];
-        const e = s + spans[j + 1];
-        if (e - s < 4) continue;
-        ctx.moveTo(buf[s], buf[s + 1]);
-        for (let k = s + 2; k < e; k += 2) ctx.lineTo(buf[k], buf[k + 1]);
-        if (closed) ctx.closePath();
-      }
-      this.finish(closed, pen);
-    },
-    finish(closed, pen) {
-      const a = ctx.globalAlpha;
-      if (pen.alpha) ctx.globalAlpha = a * pen.alpha;
-      if (closed && pen.fill) {
-        ctx.fillStyle = pen.fill;
-        ctx.fill();
-      }
-      if (pen.stroke) {
-        ctx.setLineDash(pen.dash || []);
-        ctx.strokeStyle = pen.stroke;
-        ctx.lineWidth = pen.width || 1;
-        ctx.stroke();
-      }
-      ctx.globalAlpha = a;
-    },
-    path(pts, closed, pen) {
-      if (pts.length < 4) return;
-      ctx.beginPath();
-      if (pen.segments) {
-        for (let k = 0; k + 3 < pts.length; k += 4) {
-          ctx.moveTo(pts[k], pts[k + 1]);
-          ctx.lineTo(pts[k + 2], pts[k + 3]);
-        }
-      } else {
-        ctx.moveTo(pts[0], pts[1]);
-        for (let k = 2; k < pts.length; k += 2) ctx.lineTo(pts[k], pts[k + 1]);
-        if (closed) ctx.closePath();
-      }
-      this.finish(closed, pen);
-    },
-    circle(x, y, r, pen) {
-      ctx.beginPath();
-      ctx.arc(x, y, Math.max(r, 0), 0, Math.PI * 2);
-      this.finish(true, pen);
-    },
-    text(x, y, s, pen, anchor, baseline, angle = 0) {
-      ctx.save();
-      ctx.translate(x, y);
-      if (angle) ctx.rotate((angle * Math.PI) / 180);
-      ctx.textAlign = anchor === 'middle' ? 'center' : anchor === 'end' ? 'right' : 'left';
-      ctx.textBaseline = baseline;
-      if (pen.halo) {
-        ctx.lineWidth = 3;
-        ctx.strokeStyle = typeof pen.halo === 'string' ? pen.halo : 'rgba(255,255,255,0.85)';
-        ctx.setLineDash([]);
-        ctx.strokeText(s, 0, 0);
-      }
-      ctx.fillStyle = pen.text || pen.stroke || '#111827';
-      ctx.fillText(s, 0, 0);
-      ctx.restore();
-    },
-    measure(s) {
-      return textWidth(s);
-    },
-  };
-}
-
-const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
-const f = (v) => (Math.round(v * 100) / 100).toString();
-
-/** A painter that writes SVG elements; `svg()` returns the document. */
-export function svgPainter(width, height) {
-  const out = [];
-  const style = (pen, closed) => {
-    const a = [];
-    a.push(`fill="${closed && pen.fill ? pen.fill : 'none'}"`);
-    if (pen.stroke) {
-      a.push(`stroke="${pen.stroke}" stroke-width="${pen.width || 1}"`);
-      if (pen.dash && pen.dash.length) a.push(`stroke-dasharray="${pen.dash.join(' ')}"`);
-    }
-    if (pen.alpha) a.push(`opacity="${pen.alpha}"`);
-    return a.join(' ');
-  };
-  return {
-    begin(stale) {
-      out.push(stale ? '<g opacity="0.35" filter="grayscale(1)">' : '<g>');
-    },
-    end() {
-      out.push('</g>');
-    },
-    paths(buf, spans, closed, pen) {
-      let d = '';
-      for (let j = 0; j < spans.length; j += 2) {
-        const s = spans[j];
-        const e = s + spans[j + 1];
-        if (e - s < 4) continue;
-        d += `M${f(buf[s])} ${f(buf[s + 1])}`;
-        for (let k = s + 2; k < e; k += 2) d += `L${f(buf[k])} ${f(buf[k + 1])}`;
-        if (closed) d += 'Z';
-      }
-      if (d) out.push(`<path d="${d}" ${style(pen, closed)} stroke-linejoin="round"/>`);
-    },
-    path(pts, closed, pen) {
-      if (pts.length < 4) return;
-      let d = '';
-      if (pen.segments) {
-        for (let k = 0; k + 3 < pts.length; k += 4) d += `M${f(pts[k])} ${f(pts[k + 1])}L${f(pts[k + 2])} ${f(pts[k + 3])}`;
-      } else {
-        d = `M${f(pts[0])} ${f(pts[1])}`;
-        for (let k = 2; k < pts.length; k += 2) d += `L${f(pts[k])} ${f(pts[k + 1])}`;
-        if (closed) d += 'Z';
-      }
-      out.push(`<path d="${d}" ${style(pen, closed)} stroke-linejoin="round"/>`);
-    },
-    circle(x, y, r, pen) {
-      out.push(`<circle cx="${f(x)}" cy="${f(y)}" r="${f(Math.max(r, 0))}" ${style(pen, true)}/>`);
-    },
-    text(x, y, s, pen, anchor, baseline, angle = 0) {
-      const dominant = baseline === 'middle' ? 'central' : baseline === 'top' ? 'hanging' : 'text-after-edge';
-      const halo = pen.halo ? ` stroke="${typeof pen.halo === 'string' ? pen.halo : 'white'}" stroke-width="3" paint-order="stroke"` : '';
-      const rot = angle ? ` transform="rotate(${angle} ${f(x)} ${f(y)})"` : '';
-      out.push(`<text x="${f(x)}" y="${f(y)}" text-anchor="${anchor}" dominant-baseline="${dominant}"${rot} fill="${pen.text || pen.stroke || '#111827'}"${halo}>${esc(s)}</text>`);
-    },
-    measure(s) {
-      return textWidth(s);
-    },
-    svg() {
-      return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="${esc(FAMILY)}" font-size="12">\n<rect width="100%" height="100%" fill="white"/>\n${out.join('\n')}\n</svg>\n`;
-    },
-  };
 }
 
 /** Distance from (px, py) to the nearest part of item `i`, in screen pixels (Infinity if far). */

@@ -2,10 +2,12 @@
 // worker, or a page canvas where there is none — without touching the DOM:
 // its size, pointer and keys come from whoever shows it (input.js binds a
 // page canvas; the worker gets them as messages). HiDPI-crisp drawing, pan,
-// zoom around a point, fit, an optional radial stretch, hit-testing and
-// SVG/PNG export of what it shows.
+// zoom around a point, fit, an optional radial stretch, hit-testing, PNG
+// export of what it shows, and what the core's SVG writer needs to draw it
+// the same: the transform and the labels of its last draw (`svgLayout`).
 
-import { drawScene, canvasPainter, fitScene, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
+import { drawScene, fitScene, prepare, itemsOfLine, itemsOfPass, itemDistance, itemInfo } from './render.js';
+import { canvasPainter } from './canvas.js';
 
 /** The next frame: the window's or the worker's animation frame, else a timer. */
 const nextFrame = (f) => (typeof globalThis.requestAnimationFrame === 'function' ? globalThis.requestAnimationFrame(f) : setTimeout(f, 16));
@@ -32,6 +34,7 @@ export class SceneView {
     this.lastDraw = 0;
     this.drawTime = 0; // milliseconds spent drawing since the owner last zeroed it
     this.placed = { placed: [], dropped: [] }; // the labels of the last draw
+    this.drawnWith = null; // the transform of the last draw
     this.fitFor = ''; // the language the fit made room for
   }
 
@@ -168,7 +171,9 @@ export class SceneView {
     if (this.scene) {
       const t0 = performance.now();
       ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-      this.placed = drawScene(canvasPainter(ctx), this.scene, this.transform(), this.drawOptions(this.highlight, this.stale, true));
+      const xf = this.transform();
+      this.placed = drawScene(canvasPainter(ctx), this.scene, xf, this.drawOptions(this.highlight, this.stale, true));
+      this.drawnWith = { sx: xf.sx, sy: xf.sy, tx: xf.tx, ty: xf.ty };
       this.lastDraw = performance.now() - t0;
       this.drawTime += this.lastDraw;
     }
@@ -187,6 +192,20 @@ export class SceneView {
       height: this.cssH,
       cull,
     };
+  }
+
+  /**
+   * What the SVG writer (src/svg.rs, through `Session::svg`) draws this view
+   * with, so that the export is what it shows: `{transform, labels}`, the
+   * transform and the labels as placed of the last draw (drawn now if a draw
+   * is pending). A greyed view shows an older scene than the plan the writer
+   * draws: its labels are left to the writer to place. Null without a scene.
+   */
+  svgLayout() {
+    if (!this.scene) return null;
+    if (this.queued || !this.drawnWith) this.drawNow();
+    if (!this.drawnWith) return null;
+    return { transform: { ...this.drawnWith }, labels: this.stale ? null : this.placed.placed };
   }
 
   /** The scene as a PNG blob at `scale` × the shown size. */
