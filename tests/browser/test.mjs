@@ -204,8 +204,8 @@ try {
   }
   fs.rmSync(path.dirname(layoutFile), { recursive: true, force: true });
   const texts = (svgText.match(/<text /g) || []).length;
-  const lines = sideLabels.placed.reduce((n, p) => n + p.lines.filter(Boolean).length, 0);
-  check(`the side SVG (${texts} texts) equals \`screwcut svg --width ${size[0]} --height ${size[1]} --layout\` with the view's transform and labels`, cliSvg === svgText && texts === lines && texts > 0, `${texts} texts, ${lines} label lines; ${firstDifference(svgText, cliSvg)}`);
+  const labelLines = sideLabels.placed.reduce((n, p) => n + p.lines.filter(Boolean).length, 0);
+  check(`the side SVG (${texts} texts) equals \`screwcut svg --width ${size[0]} --height ${size[1]} --layout\` with the view's transform and labels`, cliSvg === svgText && texts === labelLines && texts > 0, `${texts} texts, ${labelLines} label lines; ${firstDifference(svgText, cliSvg)}`);
   const vb = (/viewBox="([^"]*)"/.exec(svgText)?.[1] || '').split(' ').map(Number);
   check(`the side SVG is the view: viewBox ${vb.join(' ')}`, vb.length === 4 && vb[0] === 0 && vb[1] === 0 && Math.abs(vb[2] - size[0]) < 0.01 && Math.abs(vb[3] - size[1]) < 0.01, `view ${size}`);
   const [png] = await Promise.all([page.waitForEvent('download'), page.click('#tooth-panel [data-act="png"]')]);

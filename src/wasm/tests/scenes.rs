@@ -1,5 +1,7 @@
 //! The scenes as the renderer gets them, checked by their numbers.
 
+use js_sys::JSON;
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 use super::helpers::*;
@@ -207,4 +209,55 @@ fn scene_layout_names_every_field() {
     assert_eq!(styles[crate::diagram::Style::Cut.code() as usize].as_string().as_deref(), Some("cut"));
     let shapes = array(&get(&l, "shapes"));
     assert_eq!(shapes[4].as_string().as_deref(), Some("dim"));
+}
+
+/// The layout the app's SVG export passes (`SceneView.svgLayout()`), as JSON.
+fn layout_json(item: usize) -> String {
+    format!(
+        r#"{{"transform":{{"sx":9.5,"sy":14.25,"tx":-60,"ty":420}},
+            "labels":[{{"item":{item},"key":"dia_major","text":"大径 Ø48","lines":["大径 Ø48"],"align":"middle",
+                        "box":[20.5,100,35.5,160.25],"angle":-90,"must":true,"off":-24,"len":40,"lead":null}}]}}"#
+    )
+}
+
+#[wasm_bindgen_test]
+fn the_svg_export_is_the_core_writer_at_the_views_transform_and_labels() {
+    use crate::diagram::scene::Style;
+    use crate::svg::{Layout, Options, svg};
+    let s = wasm::Session::new();
+    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    let scene = crate::diagram::side(&crate::plan(O1006, &crate::Settings::new(crate::Dialect::Gsk980tdc)));
+    let major = scene.items.iter().position(|i| i.style == Style::Diameter).expect("a diameter");
+    // Without a layout: fitted to the page as the command line does.
+    let fitted = s.svg("side", 0, 1, vec![640.0, 360.0], true, Vec::new(), JsValue::UNDEFINED).unwrap();
+    assert_eq!(fitted, svg(&scene, &Options { width: 640.0, height: 360.0, stretch: true, ..Options::default() }));
+    assert!(fitted.contains("viewBox=\"0 0 640 360\""));
+    // With the view's layout: its transform, its labels where given, in its words.
+    let json = layout_json(major);
+    let given = JSON::parse(&json).unwrap();
+    let drawn = s.svg("side", 0, 1, vec![640.0, 360.0], true, Vec::new(), given).unwrap();
+    let layout: Layout = serde_json::from_str(&json).unwrap();
+    let o = Options { width: 640.0, height: 360.0, stretch: true, layout: Some(layout), ..Options::default() };
+    assert_eq!(drawn, svg(&scene, &o));
+    assert!(drawn.contains("transform=\"rotate(-90 28 130.13)\" fill=\"#111827\""), "{drawn}");
+    assert!(drawn.contains(">大径 Ø48</text>") && drawn.matches("<text ").count() == 1);
+    // A layout that does not fit the scene is an error, never a trap.
+    let cut = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
+    let bad = [
+        (layout_json(cut), "neither a dimension nor a text"),
+        (layout_json(1 << 20), "not in the scene"),
+        (json.replace("\"sx\":9.5", "\"sx\":0"), "positive scales"),
+        (json.replace("\"middle\"", "\"sideways\""), "the SVG layout"),
+        (json.replace("[\"大径 Ø48\"]", "[]"), "lines"),
+        (r#"{"labels":[]}"#.to_string(), "the SVG layout"),
+        ("\"side\"".to_string(), "the SVG layout"),
+    ];
+    for (text, want) in bad {
+        let e = s.svg("side", 0, 1, vec![640.0, 360.0], false, Vec::new(), JSON::parse(&text).unwrap()).unwrap_err();
+        assert!(message(e).contains(want), "{text}: {want}");
+    }
+    for size in [vec![640.0], vec![f64::NAN, 360.0], vec![-1.0, 360.0], vec![1e9, 360.0]] {
+        let e = s.svg("side", 0, 1, size.clone(), false, Vec::new(), JsValue::NULL).unwrap_err();
+        assert!(!message(e).is_empty(), "{size:?}");
+    }
 }
