@@ -163,6 +163,80 @@ pub fn english(key: &str) -> Option<&'static str> {
     })
 }
 
+/// The Chinese template of a label key, as the app shows it.
+pub fn chinese(key: &str) -> Option<&'static str> {
+    Some(match key {
+        "dia_major" => "大径 Ø{}",
+        "dia_minor" => "小径 Ø{}",
+        "lead" => "导程 {}",
+        "pitch" => "螺距 {}",
+        "length" => "长 {}",
+        "taper" => "锥度 {}",
+        "height" => "牙高 {}",
+        "tool_angle" => "刀尖角 {}",
+        "start_of" => "第 {} 头",
+        "pass_depth_finish" => "{} 精车",
+        "pass_depth_spring" => "{} 光刀",
+        "infeed_radial" => "径向进刀(中线)",
+        "infeed_left" => "左侧面进刀",
+        "infeed_right" => "右侧面进刀",
+        "infeed_alternating" => "左右交替进刀",
+        "infeed_programmed" => "按程序进刀",
+        "one_rev" => "一转信号 {}",
+        "axial_offsets" => "轴向偏移 导程·θ/360",
+        "starts_capped" => "{} 头：只画前 360 头",
+        "moves_capped" => "螺纹以外的运动只画前 {} 段",
+        "square_tool" => "0° 刀：假定刀宽 {}",
+        "detail_passes" => "每隔 n 次走刀画一次(n/总数)：{}",
+        "detail_starts" => "只画一头，其余各头路径相同(1/头数)：{}",
+        "detail_starts_passes" => "只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}",
+        // δ1, δ2 and the bare values read the same in both languages.
+        key => return english(key),
+    })
+}
+
+/// The label keys a scene uses.
+pub const LABEL_KEYS: [&str; 28] = [
+    "dia_major",
+    "dia_minor",
+    "lead",
+    "pitch",
+    "length",
+    "taper",
+    "delta1",
+    "delta2",
+    "height",
+    "tool_angle",
+    "start_of",
+    "pass_depth",
+    "pass_depth_finish",
+    "pass_depth_spring",
+    "infeed_radial",
+    "infeed_left",
+    "infeed_right",
+    "infeed_alternating",
+    "infeed_programmed",
+    "one_rev",
+    "axial_offsets",
+    "start_angle",
+    "starts_capped",
+    "moves_capped",
+    "square_tool",
+    "detail_passes",
+    "detail_starts",
+    "detail_starts_passes",
+];
+
+/// The label templates of language `lang` (`en`, `zh`) for [`Options::labels`]; `None` for another language.
+pub fn templates(lang: &str) -> Option<Vec<(String, String)>> {
+    let table: fn(&str) -> Option<&'static str> = match lang {
+        "en" => english,
+        "zh" => chinese,
+        _ => return None,
+    };
+    Some(LABEL_KEYS.iter().filter_map(|k| table(k).map(|t| (k.to_string(), t.to_string()))).collect())
+}
+
 impl Options {
     /// The text of a label: its key's template (the options', else English)
     /// with the value in place of `{}`; a key without a template as the app

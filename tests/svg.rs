@@ -12,7 +12,7 @@ use common::plan_with;
 use screwcut::Dialect;
 use screwcut::diagram::scene::{Anchor, Item, Label, Scene, Shape, Style, ViewKind};
 use screwcut::diagram::{side, starts, tooth};
-use screwcut::svg::{Layout, Options, Placed, Transform, measure, svg};
+use screwcut::svg::{LABEL_KEYS, Layout, Options, Placed, Transform, english, measure, svg, templates};
 
 /// Height of a label's box (the app's `LINE`).
 const LINE: f64 = 15.0;
@@ -134,34 +134,6 @@ const PROGRAMS: &[(&str, &str, Dialect)] = &[
     ("g76-m12-g7", include_str!("linuxcnc/g76-m12-g7.ngc"), Dialect::LinuxCnc),
 ];
 
-/// The app's Chinese templates of the scene's labels (`www/src/i18n.js`).
-const ZH: &[(&str, &str)] = &[
-    ("dia_major", "大径 Ø{}"),
-    ("dia_minor", "小径 Ø{}"),
-    ("lead", "导程 {}"),
-    ("pitch", "螺距 {}"),
-    ("length", "长 {}"),
-    ("taper", "锥度 {}"),
-    ("height", "牙高 {}"),
-    ("tool_angle", "刀尖角 {}"),
-    ("start_of", "第 {} 头"),
-    ("pass_depth_finish", "{} 精车"),
-    ("pass_depth_spring", "{} 光刀"),
-    ("infeed_radial", "径向进刀(中线)"),
-    ("infeed_left", "左侧面进刀"),
-    ("infeed_right", "右侧面进刀"),
-    ("infeed_alternating", "左右交替进刀"),
-    ("infeed_programmed", "按程序进刀"),
-    ("one_rev", "一转信号 {}"),
-    ("axial_offsets", "轴向偏移 导程·θ/360"),
-    ("starts_capped", "{} 头：只画前 360 头"),
-    ("moves_capped", "螺纹以外的运动只画前 {} 段"),
-    ("square_tool", "0° 刀：假定刀宽 {}"),
-    ("detail_passes", "每隔 n 次走刀画一次(n/总数)：{}"),
-    ("detail_starts", "只画一头，其余各头路径相同(1/头数)：{}"),
-    ("detail_starts_passes", "只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}"),
-];
-
 /// The scenes of a program: side, tooth and starts of its first thread.
 fn scenes(src: &str, d: Dialect) -> Vec<(&'static str, Scene)> {
     let plan = plan_with(src, d, &[]);
@@ -173,10 +145,19 @@ fn scenes(src: &str, d: Dialect) -> Vec<(&'static str, Scene)> {
 
 #[test]
 fn every_view_has_every_label_inside_and_none_overlapping() {
-    let zh: Vec<(String, String)> = ZH.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect();
+    let zh = templates("zh").unwrap();
     let mut bad = Vec::new();
     for &(name, src, d) in PROGRAMS {
         for (view, scene) in scenes(src, d) {
+            for item in &scene.items {
+                if let Shape::Dim { label, .. } | Shape::Text { label, .. } = &item.shape {
+                    assert!(
+                        label.key.is_empty() || LABEL_KEYS.contains(&label.key),
+                        "{name} {view}: key {}",
+                        label.key
+                    );
+                }
+            }
             for (lang, labels) in [("en", Vec::new()), ("zh", zh.clone())] {
                 for (w, h, stretch) in [(800.0, 500.0, false), (800.0, 500.0, true), (300.0, 200.0, false)] {
                     let o = Options { width: w, height: h, stretch, labels: labels.clone(), ..Options::default() };
@@ -334,4 +315,33 @@ fn a_layout_reads_from_the_apps_json() {
     let labels = l.labels.unwrap();
     assert_eq!((labels[0].item, labels[0].off, labels[0].lead), (7, 14.0, None));
     assert_eq!((labels[1].align, labels[1].off, labels[1].len), (Anchor::Start, 0.0, 0.0));
+}
+
+/// The templates of `const NAME = {…}` in `www/src/i18n.js` (`  key: 'template',` lines).
+fn app_table(name: &str) -> Vec<(String, String)> {
+    let src = include_str!("../www/src/i18n.js");
+    let start = src.find(&format!("const {name} = {{")).unwrap_or_else(|| panic!("{name} in i18n.js"));
+    let body = &src[start..];
+    let body = &body[..body.find("\n};").expect("the table's end")];
+    body.lines()
+        .filter_map(|l| {
+            let (k, v) = l.trim().split_once(": '")?;
+            Some((k.to_string(), v.strip_suffix("',")?.replace("\\'", "'")))
+        })
+        .collect()
+}
+
+#[test]
+fn the_label_templates_are_the_apps() {
+    for (lang, name) in [("en", "EN"), ("zh", "ZH")] {
+        let app = app_table(name);
+        let ours = templates(lang).unwrap();
+        assert_eq!(ours.len(), LABEL_KEYS.len(), "{lang}");
+        for (k, t) in ours {
+            let theirs = app.iter().find(|(a, _)| *a == k).map(|(_, v)| v.as_str());
+            assert_eq!(theirs, Some(t.as_str()), "{lang} {k}");
+        }
+    }
+    assert!(templates("fr").is_none());
+    assert_eq!(english("lead"), Some("Ph {}"));
 }

@@ -88,6 +88,9 @@ enum Command {
         /// Stretch the radial scale to fill the height (the app's "Stretch radially").
         #[arg(long)]
         stretch: bool,
+        /// Language of the labels: en or zh.
+        #[arg(long, default_value = "en", value_parser = ["en", "zh"])]
+        lang: String,
         /// A JSON file of the view to draw: `{"transform": {"sx", "sy", "tx",
         /// "ty"}, "labels": [...]}` (what the app's SVG export passes: its
         /// view's transform and labels as placed); without it, the drawing
@@ -203,7 +206,7 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
         Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
         Command::Generate(a) => generate(a),
-        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, layout } => {
+        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, layout } => {
             let (settings, text) = match input(&file, dialect, &set) {
                 Ok(v) => v,
                 Err(code) => return code,
@@ -229,7 +232,8 @@ fn main() -> ExitCode {
                     return ExitCode::from(2);
                 }
             };
-            let opts = screwcut::svg::Options { width, height, stretch, thread: ti, layout, ..Default::default() };
+            let labels = screwcut::svg::templates(&lang).unwrap_or_default();
+            let opts = screwcut::svg::Options { width, height, stretch, thread: ti, labels, layout };
             if let Err(e) = opts.validate(&scene) {
                 eprintln!("screwcut: cannot draw the {view} view: {e}");
                 return ExitCode::from(2);
