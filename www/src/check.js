@@ -80,3 +80,12 @@ export function renderCheck({ input, verdict, figures }, th, units, t, designati
     figures.dataset.html = f;
   }
 }
+
+/** Calls `change(value)` (trimmed) a quarter second after the designation field stops changing. */
+export function bindDesignation(input, change) {
+  let timer = 0;
+  input.addEventListener('input', () => {
+    clearTimeout(timer);
+    timer = setTimeout(() => change(input.value.trim()), 250);
+  });
+}

@@ -13,7 +13,7 @@ import { download, toast } from './pageutil.js';
 import { startEngine } from './client.js';
 import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText } from './lists.js';
 import { bindListKeys, labelViews } from './a11y.js';
-import { DESIGNATION, renderCheck } from './check.js';
+import { DESIGNATION, renderCheck, bindDesignation } from './check.js';
 import { SettingsPanel } from './settingspanel.js';
 import { openWizard, openExpand } from './wizard.js';
 
@@ -518,17 +518,12 @@ function finishSetup() {
   $('expand').addEventListener('click', () =>
     openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: result ? result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)),
   );
-  let designationTimer = 0;
-  $('designation').addEventListener('input', (e) => {
-    clearTimeout(designationTimer);
-    designationTimer = setTimeout(() => {
-      const mine = (state.settings[state.dialect] ||= {});
-      const v = e.target.value.trim();
-      if (v) mine[DESIGNATION] = v;
-      else delete mine[DESIGNATION];
-      persist();
-      replan();
-    }, 250);
+  bindDesignation($('designation'), (v) => {
+    const mine = (state.settings[state.dialect] ||= {});
+    if (v) mine[DESIGNATION] = v;
+    else delete mine[DESIGNATION];
+    persist();
+    replan();
   });
   $('settings-form').addEventListener('submit', (e) => e.preventDefault());
   $('settings-reset').addEventListener('click', async () => {
