@@ -3,6 +3,7 @@
 
 use serde::Serialize;
 
+use crate::message::{Args, Lang, Message, Template};
 use crate::span::{LineCol, LineIndex, Span};
 
 /// How serious a diagnostic is. `Error` is an alarm: the controller would
@@ -226,9 +227,13 @@ impl std::fmt::Display for Code {
     }
 }
 
-/// A finding before it is placed at a span: its code and message. Pure
-/// planning steps return these; the caller knows where they belong.
-pub type Finding = (Code, String);
+/// A finding before it is placed at a span: its template (with the code)
+/// and arguments. Pure planning steps return these; the caller knows where
+/// they belong.
+pub type Finding = Message;
+
+/// A kept diagnostic before its position is resolved.
+pub type Item = (Message, Span);
 
 /// One finding about the program, positioned at a span of the source.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -237,7 +242,7 @@ pub struct Diagnostic {
     pub severity: Severity,
     /// Stable code.
     pub code: Code,
-    /// Human-readable message.
+    /// Human-readable message, in English.
     pub message: String,
     /// 1-based line of the span start.
     pub line: u32,
@@ -249,12 +254,27 @@ pub struct Diagnostic {
     pub end_column: u32,
     /// Byte span in the source.
     pub span: Span,
+    /// The message's template in the catalogue.
+    #[serde(skip)]
+    pub template: &'static Template,
+    /// The values the message names (numbers, texts kept verbatim).
+    pub args: Args,
+}
+
+impl Diagnostic {
+    /// The message in `lang`.
+    pub fn render(&self, lang: Lang) -> std::borrow::Cow<'_, str> {
+        match lang {
+            Lang::En => std::borrow::Cow::Borrowed(&self.message),
+            _ => std::borrow::Cow::Owned(crate::message::render(self.template, &self.args, lang)),
+        }
+    }
 }
 
 /// Collects diagnostics while a program is read.
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
-    items: Vec<(Code, String, Span)>,
+    items: Vec<Item>,
     limit: usize,
     dropped: usize,
     first_dropped: Option<Span>,
@@ -266,10 +286,15 @@ impl Diagnostics {
         Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None }
     }
 
-    /// Records a diagnostic.
-    pub fn push(&mut self, code: Code, span: Span, message: impl Into<String>) {
+    /// Records a diagnostic: `template` with `args` at `span`.
+    pub fn push(&mut self, template: &'static Template, span: Span, args: Args) {
+        self.push_message(Message::new(template, args), span);
+    }
+
+    /// Records a finding at `span`.
+    pub fn push_message(&mut self, message: Message, span: Span) {
         if self.items.len() < self.limit {
-            self.items.push((code, message.into(), span));
+            self.items.push((message, span));
         } else {
             self.drop_one(span);
         }
@@ -282,10 +307,10 @@ impl Diagnostics {
         }
     }
 
-    /// Records a diagnostic whose message is only formatted when it will be kept.
-    pub fn push_with(&mut self, code: Code, span: Span, message: impl FnOnce() -> String) {
+    /// Records a diagnostic whose arguments are only worked out when it will be kept.
+    pub fn push_with(&mut self, template: &'static Template, span: Span, args: impl FnOnce() -> Args) {
         if self.items.len() < self.limit {
-            self.items.push((code, message(), span));
+            self.items.push((Message::new(template, args()), span));
         } else {
             self.drop_one(span);
         }
@@ -293,7 +318,7 @@ impl Diagnostics {
 
     /// Whether an error-level diagnostic was recorded.
     pub fn has_error(&self) -> bool {
-        self.items.iter().any(|(c, _, _)| c.severity() == Severity::Error)
+        self.items.iter().any(|(m, _)| m.code().severity() == Severity::Error)
     }
 
     /// Number recorded so far.
@@ -324,15 +349,15 @@ impl Diagnostics {
     }
 
     /// Takes the diagnostics from the `len`-th on out of the collector (none were dropped).
-    pub fn split_off(&mut self, len: usize) -> Vec<(Code, String, Span)> {
+    pub fn split_off(&mut self, len: usize) -> Vec<Item> {
         self.items.split_off(len.min(self.items.len()))
     }
 
     /// Appends `items` (kept from another reading of the same text, `bytes`
     /// further along here), keeping this collector's limit.
-    pub fn extend_shifted(&mut self, items: Vec<(Code, String, Span)>, bytes: isize) {
-        for (code, message, span) in items {
-            self.push(code, span.shifted(bytes), message);
+    pub fn extend_shifted(&mut self, items: Vec<Item>, bytes: isize) {
+        for (message, span) in items {
+            self.push_message(message, span.shifted(bytes));
         }
     }
 
@@ -344,13 +369,13 @@ impl Diagnostics {
                 self.first_dropped = Some(f);
             }
         }
-        for (code, message, span) in other.items {
-            self.push(code, span, message);
+        for (message, span) in other.items {
+            self.push_message(message, span);
         }
     }
 
     /// The diagnostics kept, in the order they came.
-    pub fn into_items(self) -> Vec<(Code, String, Span)> {
+    pub fn into_items(self) -> Vec<Item> {
         self.items
     }
 
@@ -365,21 +390,20 @@ impl Diagnostics {
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
         let mut items = self.items;
         if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
-            items.push((
-                Code::MoreDiagnostics,
-                format!("{} more diagnostics from here on are not shown (setting limits.diagnostics)", self.dropped),
-                span,
-            ));
+            items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span));
         }
         let mut out: Vec<Diagnostic> = items
             .into_iter()
-            .map(|(code, message, span)| {
+            .map(|(m, span)| {
                 let LineCol { line, column } = index.locate(text, span.start as usize);
                 let end = index.locate(text, span.end as usize);
+                let code = m.code();
                 Diagnostic {
                     severity: code.severity(),
                     code,
-                    message,
+                    message: m.render(Lang::En),
+                    template: m.template,
+                    args: m.args,
                     line,
                     column,
                     end_line: end.line,

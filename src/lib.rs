@@ -37,6 +37,7 @@ pub mod group;
 pub mod hash;
 pub mod interp;
 pub mod lexer;
+pub mod message;
 pub mod motion;
 pub mod num;
 pub mod plan;
