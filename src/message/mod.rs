@@ -15,7 +15,8 @@
 //! [`read`] (the interpreter and the controllers' commands), [`renhe`],
 //! [`linuxcnc`], [`cycle`] (planning cycles and grouping passes), [`shop`]
 //! (shop-floor checks and textbook advice), [`gauge`] (the thread check's
-//! notes) and [`standard`] (designations).
+//! notes), [`standard`] (designations) and [`words`] (the command line's
+//! summary). `words` is not re-exported: its names are read as `words::NAME`.
 
 use std::borrow::Cow;
 
@@ -33,6 +34,7 @@ pub mod read;
 pub mod renhe;
 pub mod shop;
 pub mod standard;
+pub mod words;
 
 pub use cycle::*;
 pub use gauge::*;
@@ -113,6 +115,13 @@ impl Phrase {
             Lang::En => self.en,
             Lang::Zh => self.zh,
         }
+    }
+
+    /// The phrase in `lang` with `args` filled in.
+    pub fn render(&self, args: &Args, lang: Lang) -> String {
+        let mut out = String::new();
+        write_template(&mut out, self.text(lang), args, lang, 0);
+        out
     }
 }
 
@@ -397,7 +406,7 @@ pub fn all() -> impl Iterator<Item = &'static Template> {
 
 /// Every phrase of the catalogue.
 pub fn all_phrases() -> impl Iterator<Item = &'static Phrase> {
-    [read::PHRASES, linuxcnc::PHRASES, cycle::PHRASES, shop::PHRASES, gauge::PHRASES, standard::PHRASES]
+    [read::PHRASES, linuxcnc::PHRASES, cycle::PHRASES, shop::PHRASES, gauge::PHRASES, standard::PHRASES, words::PHRASES]
         .into_iter()
         .flatten()
         .copied()
