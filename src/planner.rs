@@ -115,6 +115,11 @@ impl Planner {
         self.stopped_at
     }
 
+    /// The text of the last plan.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
     /// The last plan, if any.
     pub fn last(&self) -> Option<&Plan> {
         self.plan.as_ref()

@@ -4,8 +4,8 @@ use std::io::Read;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use screwcut::message::Lang;
 use screwcut::diagnostic::Severity;
+use screwcut::message::Lang;
 use screwcut::num::fmt;
 use screwcut::settings::{Kind, Settings};
 use screwcut::{Code, Dialect};

@@ -72,8 +72,8 @@ phrases! {
     RANGE: " ({min} … {max})", "（{min} … {max}）";
     RANGE_CLASS: " ({min} … {max}, {class})", "（{min} … {max}，{class}）";
     FIX: "; ΔX {dx} (final pass X{x}) centres it", "；精车刀改为 X{x}（ΔX {dx}）可使中径位于公差带中间";
-    TOO_LARGE: " is too large", "偏大";
-    TOO_SMALL: " is too small", "偏小";
+    TOO_LARGE: " is too large", " 偏大";
+    TOO_SMALL: " is too small", " 偏小";
     FITS: ", which gauges: set tool.nose_radius to the insert's radius", "，能通过检验：请把 tool.nose_radius 设为刀片的刀尖圆弧半径";
     BORE: "bore (minor diameter)", "内孔（小径）";
     MAJOR: "major diameter", "大径";

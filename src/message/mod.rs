@@ -385,7 +385,7 @@ macro_rules! templates {
 macro_rules! phrases {
     ($( $name:ident: $en:literal, $zh:literal; )*) => {
         $(
-            #[doc = $en]
+            #[doc = concat!("“", $en, "”")]
             pub static $name: $crate::message::Phrase = $crate::message::Phrase { en: $en, zh: $zh };
         )*
         /// Every phrase of this part of the catalogue.
