@@ -22,6 +22,7 @@ pub mod advice;
 pub mod assemble;
 pub mod block;
 pub mod chip;
+pub mod code;
 pub mod controller;
 pub mod cycle;
 pub mod diagnostic;

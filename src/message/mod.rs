@@ -24,7 +24,7 @@ use serde::Serialize;
 use serde::ser::SerializeMap;
 
 use crate::block::Word;
-use crate::diagnostic::Code;
+use crate::code::Code;
 
 pub mod cycle;
 pub mod gauge;
@@ -370,7 +370,7 @@ macro_rules! templates {
         $(
             #[doc = $en]
             pub static $name: $crate::message::Template = $crate::message::Template {
-                code: $crate::diagnostic::Code::$code,
+                code: $crate::code::Code::$code,
                 name: stringify!($name),
                 en: $en,
                 zh: $zh,

@@ -22,10 +22,10 @@ templates! {
         "不模拟刀尖半径补偿（G41/G42）：图中画的是刀尖点";
     SETUP_NOT_SIMULATED = NotSimulated:
         "{word}: {what} is not simulated",
-        "{word}：不模拟{what}";
+        "{word}：{what}不模拟";
     NOT_DRAWN = NotSimulated:
         "{word}: {what} is not drawn",
-        "{word}：不绘制{what}";
+        "{word}：{what}不绘制";
     SUBPROGRAM_NOT_FOLLOWED = NotSimulated:
         "{word}: subprogram calls are not followed",
         "{word}：不跟踪子程序调用";

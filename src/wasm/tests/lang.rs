@@ -12,11 +12,14 @@ use crate::wasm;
 fn notes(r: &JsValue) -> Vec<Vec<String>> {
     let list: Vec<serde_json::Value> = field(r, "threads");
     list.iter()
-        .map(|t| t["notes"].as_array().map_or(Vec::new(), |a| a.iter().map(|n| n.as_str().unwrap().to_string()).collect()))
+        .map(|t| {
+            t["notes"].as_array().map_or(Vec::new(), |a| a.iter().map(|n| n.as_str().unwrap().to_string()).collect())
+        })
         .collect()
 }
 
-const CHECKED: &str = "(M48x2-6g)\nG00 X58 Z70\nS300 M03\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX45.4\nG32 Z13\nG00 X58\nZ70\nM30\n";
+const CHECKED: &str =
+    "(M48x2-6g)\nG00 X58 Z70\nS300 M03\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX45.4\nG32 Z13\nG00 X58\nZ70\nM30\n";
 
 #[wasm_bindgen_test]
 fn diagnostics_and_notes_in_chinese() {
