@@ -80,7 +80,7 @@ impl Lang {
 pub struct Template {
     /// The code of the diagnostic this message is (notes carry the code of the check they belong to).
     pub code: Code,
-    /// The template's name in the catalogue (for tests and reports).
+    /// The template's name in the catalogue (for tests and reports; empty in the wasm build).
     pub name: &'static str,
     /// English.
     pub en: &'static str,
@@ -371,7 +371,8 @@ macro_rules! templates {
             #[doc = $en]
             pub static $name: $crate::message::Template = $crate::message::Template {
                 code: $crate::code::Code::$code,
-                name: stringify!($name),
+                // The browser never shows a template's name: not shipped in the wasm.
+                name: if cfg!(target_arch = "wasm32") { "" } else { stringify!($name) },
                 en: $en,
                 zh: $zh,
             };

@@ -85,7 +85,8 @@ try {
     await page.click('#program-new');
     await page.waitForTimeout(500);
     await page.locator('.cm-content').click();
-    await page.keyboard.type('G00 X40 Z5\nG32 Z-20 F1.2.3\n');
+    // In one piece: typed key by key, a half-typed F1.2 plans without an alarm and is rightly kept greyed.
+    await page.keyboard.insertText('G00 X40 Z5\nG32 Z-20 F1.2.3\n');
     await page.waitForSelector('#diagnostics li.error', { timeout: 10_000 }).catch(() => {});
     await page.waitForTimeout(300);
     const stale = await page.evaluate(() => ({ banner: !document.getElementById('stale').hidden, table: document.getElementById('passes').classList.contains('stale') }));
