@@ -9,8 +9,10 @@
 //! depth against 1.3·P, infeeds against table 4-3, and the δ1/δ2
 //! acceleration clearances.
 
-use crate::diagnostic::{Code, Diagnostics};
+use crate::args;
+use crate::diagnostic::Diagnostics;
 use crate::geom::Frame;
+use crate::message::{self as msg, Arg};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::{EPS, fmt};
 use crate::settings::{P, Settings};
@@ -139,38 +141,23 @@ fn finish_one(
     let pitch_mm = t.pitch * mm;
     let std_depth = s.get(P::DepthFactor) * pitch_mm; // diameter, mm
     match &outline {
-        None => diags.push_with(
-            Code::CrestAssumed,
-            span,
-            || {
-                // A face thread's crest is a face (a Z), not a diameter.
-                let (what, axis) = match (t.long_axis, t.internal) {
-                    (crate::thread::Axis::X, _) => ("face the crest of this face thread", "Z"),
-                    (_, true) => ("turn this thread's minor diameter", "X"),
-                    (_, false) => ("turn this thread's major diameter", "X"),
-                };
-                format!(
-                    "the program does not {what}: crest assumed at {axis}{} from the deepest pass and d = D − {}·P, so the pass depths are relative to it; the textbook's δ1/δ2 are not checked",
-                    fmt(t.crest),
-                    fmt(s.get(P::DepthFactor))
-                )
-            },
-        ),
+        None => diags.push_with(&msg::CREST_ASSUMED, span, || {
+            // A face thread's crest is a face (a Z), not a diameter.
+            let (what, axis) = match (t.long_axis, t.internal) {
+                (crate::thread::Axis::X, _) => (&msg::FACE_CREST, "Z"),
+                (_, true) => (&msg::TURN_MINOR, "X"),
+                (_, false) => (&msg::TURN_MAJOR, "X"),
+            };
+            args![what, axis = Arg::lit(axis), crest = t.crest, factor = s.get(P::DepthFactor)]
+        }),
         Some(_) => {
             let programmed = 2.0 * max_depth * mm;
             if (programmed - std_depth).abs() > 0.02 * std_depth.max(0.05) {
-                diags.push_with(
-                    Code::DepthVsStandard,
-                    span,
-                    || format!(
-                        "total depth {} (diameter) against {}·P = {} for pitch {}: the thread is {}",
-                        fmt(programmed / mm),
-                        fmt(s.get(P::DepthFactor)),
-                        fmt(std_depth / mm),
-                        fmt(t.pitch),
-                        if programmed < std_depth { "not cut to full depth" } else { "cut deeper than standard" }
-                    ),
-                );
+                diags.push_with(&msg::DEPTH_VS_STANDARD, span, || {
+                    let verdict = if programmed < std_depth { &msg::NOT_FULL_DEPTH } else { &msg::TOO_DEEP };
+                    let factor = s.get(P::DepthFactor);
+                    args![total = programmed / mm, factor, standard = std_depth / mm, pitch = t.pitch, verdict]
+                });
             }
         }
     }
@@ -179,16 +166,16 @@ fn finish_one(
             let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
             let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
             let matches = infeeds.len() == table.len() && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
-            diags.push_with(Code::InfeedGuidance, span, || {
-                format!(
-                    "table 4-3 for pitch {}: {} passes, diameter infeeds {}; programmed: {} passes, {}{}",
-                    fmt(pitch_mm),
-                    table.len(),
-                    list(table),
-                    infeeds.len(),
-                    list(&infeeds),
-                    if matches { " (as the table)" } else { "" }
-                )
+            diags.push_with(&msg::INFEED_GUIDANCE, span, || {
+                let same = if matches { &msg::AS_THE_TABLE } else { &msg::NOTHING };
+                args![
+                    pitch = pitch_mm,
+                    n = table.len(),
+                    table = list(table),
+                    count = infeeds.len(),
+                    infeeds = list(&infeeds),
+                    same
+                ]
             });
             let largest = table[0];
             // The first infeed is only known when the crest is (from the outline).
@@ -197,17 +184,9 @@ fn finish_one(
                 let inf = 2.0 * p.infeed * mm;
                 if inf > largest + 1e-3 {
                     diags.push_with(
-                        Code::InfeedTooLarge,
+                        &msg::INFEED_TOO_LARGE,
                         spans(p.lines.iter().copied().find(|l| *l >= t.line).unwrap_or(t.line)),
-                        || {
-                            format!(
-                                "pass {} takes {} of diameter at once; table 4-3 starts pitch {} with {}",
-                                p.index,
-                                fmt(inf),
-                                fmt(pitch_mm),
-                                fmt(largest)
-                            )
-                        },
+                        || args![n = p.index, infeed = inf, pitch = pitch_mm, largest],
                     );
                 }
             }
@@ -291,20 +270,14 @@ fn clearance(
 ) {
     let (d1, d2) = work_clearances(t, crest, moves, deepest);
     if d1 * mm < 2.0 - 1e-9 {
-        diags.push_with(
-            Code::Clearance,
-            span,
-            || if d1 < 0.0 {
-                format!("the pass starts {} inside the work: the lead-in δ1 must keep the acceleration off the thread (textbook: 2–10 mm)", fmt(-d1))
-            } else {
-                format!("lead-in δ1 = {} is shorter than the textbook's 2–10 mm (larger for larger leads): the first turns are cut while the axis accelerates", fmt(d1))
-            },
-        );
+        if d1 < 0.0 {
+            diags.push_with(&msg::CLEARANCE_INSIDE, span, || args![d = -d1]);
+        } else {
+            diags.push_with(&msg::CLEARANCE_LEAD_IN, span, || args![d = d1]);
+        }
     }
     if d2 > 0.0 && d1 > 0.0 && d2 < d1 / 4.0 - 1e-9 {
-        diags.push_with(Code::Clearance, span, || {
-            format!("run-out δ2 = {} is shorter than δ1/4 = {} (textbook: δ2 = δ1/4 to δ1/2)", fmt(d2), fmt(d1 / 4.0))
-        });
+        diags.push_with(&msg::CLEARANCE_RUN_OUT, span, || args![d2, quarter = d1 / 4.0]);
     }
 }
 

@@ -8,7 +8,7 @@
 use std::ops::Range;
 
 use crate::cycle::{self, PassPath};
-use crate::diagnostic::{Code, Diagnostics};
+use crate::diagnostic::Diagnostics;
 use crate::event::{Event, G92Pass, Seg};
 use crate::group::{Chain, Grouper};
 use crate::motion::{Move, MoveKind};
@@ -118,14 +118,7 @@ impl Assembler {
         if self.moves.len() >= self.limit {
             if !self.stopped {
                 self.stopped = true;
-                diags.push(
-                    Code::MoveLimit,
-                    m.span,
-                    format!(
-                        "more than {} motions (setting limits.moves): the rest of the program is not drawn",
-                        self.limit
-                    ),
-                );
+                diags.push(&crate::message::MOVE_LIMIT, m.span, crate::args![limit = self.limit]);
             }
             return None;
         }
@@ -182,10 +175,10 @@ impl Assembler {
         let warn = s.int(P::LinuxPassWarning).max(1) as usize;
         let planned = match cycle::linuxcnc::plan(g, limit, warn) {
             Ok(p) => p,
-            Err((code, msg)) => return diags.push(code, g.span, msg),
+            Err(f) => return diags.push_message(f, g.span),
         };
-        for (code, msg) in planned.notes {
-            diags.push(code, g.span, msg);
+        for f in planned.notes {
+            diags.push_message(f, g.span);
         }
         let first_move = self.moves.len();
         let mut moves = Vec::with_capacity(planned.paths.len());
@@ -218,10 +211,10 @@ impl Assembler {
     fn multi(&mut self, m: &cycle::Multi, s: &Settings, diags: &mut Diagnostics) {
         let (plan, warnings) = match cycle::multi::plan(m, s) {
             Ok(p) => p,
-            Err((code, msg)) => return diags.push(code, m.span, msg),
+            Err(f) => return diags.push_message(f, m.span),
         };
-        for (code, msg) in warnings {
-            diags.push(code, m.span, msg);
+        for f in warnings {
+            diags.push_message(f, m.span);
         }
         let first_move = self.moves.len();
         let mut passes = Vec::with_capacity((plan.per_start() * m.starts as usize).min(self.limit / 3 + 1));

@@ -3,232 +3,18 @@
 
 use serde::Serialize;
 
+use crate::message::{Args, Lang, Message, Template};
 use crate::span::{LineCol, LineIndex, Span};
 
-/// How serious a diagnostic is. `Error` is an alarm: the controller would
-/// stop, and the CLI exits with status 1.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Severity {
-    /// Advice or a note on how something was read.
-    Info,
-    /// Probably not what was meant; the plan is still drawn.
-    Warning,
-    /// An alarm: the controller would refuse this block.
-    Error,
-}
+pub use crate::code::{Code, Severity};
 
-macro_rules! codes {
-    ($( $(#[$doc:meta])* $name:ident = $text:literal, $sev:ident; )*) => {
-        /// Every diagnostic screwcut emits. The string form is stable and is
-        /// what the JSON, the CLI and the web app show; codes of the
-        /// controllers themselves (such as Renhe `E18-03`) are kept verbatim.
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-        pub enum Code {
-            $( $(#[$doc])* $name, )*
-        }
+/// A finding before it is placed at a span: its template (with the code)
+/// and arguments. Pure planning steps return these; the caller knows where
+/// they belong.
+pub type Finding = Message;
 
-        impl Code {
-            /// All codes, for documentation and coverage tests.
-            pub const ALL: &'static [Code] = &[ $( Code::$name, )* ];
-
-            /// The stable string form.
-            pub fn as_str(self) -> &'static str {
-                match self { $( Code::$name => $text, )* }
-            }
-
-            /// The severity this code always carries.
-            pub fn severity(self) -> Severity {
-                match self { $( Code::$name => Severity::$sev, )* }
-            }
-        }
-    };
-}
-
-codes! {
-    // ---- lexical ----
-    /// Full-width or look-alike characters were read as their ASCII twins.
-    FullWidth = "full-width", Info;
-    /// A number with misplaced signs or points (`X1.2.3`, `Z--4`).
-    MalformedNumber = "malformed-number", Error;
-    /// A word letter with no number after it.
-    MissingValue = "missing-value", Error;
-    /// A letter this dialect does not use as an address.
-    UnknownAddress = "unknown-address", Error;
-    /// A character that cannot start a word.
-    UnexpectedCharacter = "unexpected-character", Error;
-    /// The same address twice in one block.
-    RepeatedWord = "repeated-word", Error;
-    /// A block longer than the `limits.block_chars` setting.
-    BlockTooLong = "block-too-long", Error;
-    /// More digits than the controller accepts (`limits.digits`).
-    TooManyDigits = "too-many-digits", Error;
-    /// `(` without a closing `)` on the same line.
-    UnclosedComment = "unclosed-comment", Error;
-    /// `)` without an opening `(`.
-    UnmatchedParen = "unmatched-paren", Error;
-    /// `(` inside a comment: comments do not nest.
-    NestedComment = "nested-comment", Warning;
-    /// G-code after `;`, which ends the block: it is not executed.
-    CodeAfterSemicolon = "code-after-semicolon", Warning;
-    /// Macro variables and expressions (`#`, `[`) are not interpreted.
-    UnsupportedMacro = "unsupported-macro", Error;
-    /// `O` not followed by a program number.
-    MalformedProgramNumber = "malformed-program-number", Error;
-    /// The program is larger than `limits.program_bytes`.
-    ProgramTooLarge = "program-too-large", Error;
-    // ---- interpreter ----
-    /// A G code the dialect does not have.
-    UnsupportedGCode = "unsupported-g-code", Error;
-    /// A G code the controller has but the previewer does not draw.
-    NotSimulated = "not-simulated", Warning;
-    /// Two G codes of the same modal group in one block.
-    ConflictingGCodes = "conflicting-g-codes", Error;
-    /// An absolute and an incremental word for the same axis (`X` with `U`).
-    AxisConflict = "axis-conflict", Error;
-    /// A Fanuc length without a decimal point read in least input increments.
-    NoDecimalPoint = "no-decimal-point", Warning;
-    /// A feed move before any feed rate was given.
-    MissingFeed = "missing-feed", Warning;
-    /// An arc whose radius is shorter than half its chord.
-    ArcRadiusTooSmall = "arc-radius-too-small", Error;
-    /// An arc whose I/K centre is not equidistant from its ends.
-    ArcRadiusMismatch = "arc-radius-mismatch", Error;
-    /// An arc without R or I/K.
-    ArcMissingCenter = "arc-missing-center", Error;
-    /// A word that this block's command does not take.
-    UnexpectedWord = "unexpected-word", Error;
-    /// A value outside the range the manual gives for the word.
-    ValueOutOfRange = "value-out-of-range", Error;
-    /// Blocks after M30/M02 are never executed.
-    AfterEnd = "after-end", Info;
-    /// G20/G21 changed after motion: coordinates mix units.
-    UnitsChanged = "units-changed", Warning;
-    /// A command that needs a word it did not get (G04 without time, G50 without axes...).
-    MissingWord = "missing-word", Error;
-    /// A word that must not carry a decimal point (Fanuc G32 Q, G76 P/Q).
-    DecimalPointNotAllowed = "decimal-point-not-allowed", Error;
-    /// An incremental move before any absolute position: the start was assumed.
-    StartAssumed = "start-assumed", Info;
-    /// The plan would hold more motions than `limits.moves`.
-    MoveLimit = "move-limit", Error;
-    // ---- thread cutting (G32 and shared) ----
-    /// A thread block with no lead: no F/I in it or before it.
-    MissingLead = "missing-lead", Error;
-    /// Fanuc: a thread block without F takes the lead from a feed rate's F (one shared register).
-    LeadFromFeed = "lead-from-feed", Warning;
-    /// A thread block that does not move.
-    ZeroLengthThread = "zero-length-thread", Error;
-    /// The run-out length K is longer than the thread itself.
-    RunoutTooLong = "runout-too-long", Error;
-    /// Q on a later block of a continuous thread is ignored.
-    QIgnored = "q-ignored", Warning;
-    /// Run-out drawn by parameter No.107's speed rule.
-    RunoutSpeed = "runout-speed", Info;
-    /// More starts than the controller allows.
-    TooManyStarts = "too-many-starts", Error;
-    // ---- cycles ----
-    /// G76/G78 without the thread height P(k).
-    MissingThreadHeight = "missing-thread-height", Error;
-    /// G76/G78 without the first depth Q(Δd).
-    MissingFirstDepth = "missing-first-depth", Error;
-    /// A threading cycle asked for a face thread (or a cut mostly along X).
-    FaceThreadNotAllowed = "face-thread-not-allowed", Error;
-    /// A cycle whose depth schedule needs more passes than `limits.passes_per_start`.
-    PassLimit = "pass-limit", Error;
-    /// A decimal point that does not change the unit (NO182.7 = 0 increments).
-    DecimalPointIgnored = "decimal-point-ignored", Warning;
-    /// The cycle's start point is not outside the thread.
-    StartInsideThread = "start-inside-thread", Warning;
-    /// A taper R(i) of the opposite sign to U that is larger than |U/2|: the cut would start beyond the start point.
-    TaperBeyondStart = "taper-beyond-start", Error;
-    // ---- Renhe ----
-    /// Renhe: absolute X or Z in a G32/G33 thread block.
-    E18_03 = "E18-03", Error;
-    /// Renhe: |W| must exceed |U| and 4 mm.
-    E18_04 = "E18-04", Error;
-    /// Renhe: no X feed (G00/G01) before the thread to set the run-out direction.
-    E18_05 = "E18-05", Error;
-    /// Spindle speed above the controller's advice for the pitch (Renhe n ≤ 2300/t − 60).
-    SpindleSpeed = "spindle-speed", Warning;
-    // ---- LinuxCNC ----
-    /// LinuxCNC: G33 or G76 while the spindle is not turning (no M3/M4, or after M5).
-    SpindleNotTurning = "spindle-not-turning", Error;
-    /// LinuxCNC: G76 with cutter radius compensation (G41/G42, G41.1/G42.1) on.
-    CutterCompActive = "cutter-comp-active", Error;
-    /// LinuxCNC: the program ends without M2/M30 or a closing `%`.
-    NoProgramEnd = "no-program-end", Error;
-    /// LinuxCNC reads a value as another one: Q−1 as no Q, R below 1 as 1, E below 0 as 0, L as a bit mask, E without L.
-    ValueReadAs = "value-read-as", Warning;
-    /// LinuxCNC: a G33 K or G76 P that is zero or negative, passed on as the spindle sync ratio.
-    OddPitch = "odd-pitch", Warning;
-    /// LinuxCNC: G76 with a negative H drops the full-depth pass: the thread is never cut to K.
-    FullDepthSkipped = "full-depth-skipped", Warning;
-    /// LinuxCNC: G76 tapers E longer than half the drive line: the cut between them runs backwards.
-    BackwardCut = "backward-cut", Warning;
-    /// LinuxCNC: G33 or G76 outside the XZ plane G18 (accepted by the interpreter, not by the manual).
-    PlaneNotXz = "plane-not-xz", Warning;
-    /// LinuxCNC: G76 with an X or Y word: the passes still use the drive line; the word only moves the tool at the end.
-    DriveLineKept = "drive-line-kept", Warning;
-    /// LinuxCNC: a G76 whose degression and depths need many passes.
-    ManyPasses = "many-passes", Warning;
-    /// LinuxCNC: |I| + n·J rounds below |I| + K in floating point, so the full depth is cut twice.
-    FloatExtraPass = "float-extra-pass", Info;
-    /// LinuxCNC: G33 K is the advance along the move; on a taper the axial lead is less.
-    LeadAlongPath = "lead-along-path", Info;
-    // ---- shop floor ----
-    /// Thread feed lead × n above the machine's limit (`machine.max_thread_feed`).
-    ThreadFeedLimit = "thread-feed-limit", Warning;
-    /// Spindle speed above the machine's (`machine.max_rpm`).
-    SpindleLimit = "spindle-limit", Warning;
-    /// A thread cut under G96: the speed changes with X.
-    ThreadCss = "thread-css", Warning;
-    /// Lead-in δ1 shorter than n·L/500 (`machine.delta1_divisor`).
-    Delta1Speed = "delta1-speed", Warning;
-    /// Run-out δ2 shorter than n·L/1800 (`machine.delta2_divisor`).
-    Delta2Speed = "delta2-speed", Warning;
-    /// A first pass heavier than a constant-area share allows, or a pass over `tool.max_chip_area`.
-    ChipHeavyFirst = "chip-heavy-first", Warning;
-    /// A pass that deepens the thread by less than `chip.min_infeed`.
-    ChipThin = "chip-thin", Info;
-    /// A pass (not a spring pass) that removes nothing.
-    ChipNone = "chip-none", Warning;
-    /// The thread check: the pitch diameter cut is within the designation's limits.
-    GaugeOk = "gauge-ok", Info;
-    /// The thread check: the thread will not gauge (with the fix).
-    GaugeFail = "gauge-fail", Warning;
-    /// `thread.designation` (or the designation found) cannot be read or has no limits.
-    BadDesignation = "bad-designation", Warning;
-    // ---- textbook advice ----
-    /// The crest diameter was not turned in the program and was assumed.
-    CrestAssumed = "crest-assumed", Info;
-    /// Total programmed depth differs from the 1.3·P rule.
-    DepthVsStandard = "depth-vs-standard", Warning;
-    /// More diagnostics than `limits.diagnostics`: the rest are counted, not listed.
-    MoreDiagnostics = "more-diagnostics", Info;
-    /// Programmed infeeds compared with table 4-3.
-    InfeedGuidance = "infeed-guidance", Info;
-    /// A pass infeed larger than table 4-3's largest for the pitch.
-    InfeedTooLarge = "infeed-too-large", Warning;
-    /// Lead-in δ1 or run-out δ2 shorter than the textbook advises.
-    Clearance = "clearance", Warning;
-}
-
-impl Serialize for Code {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.as_str())
-    }
-}
-
-impl std::fmt::Display for Code {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
-
-/// A finding before it is placed at a span: its code and message. Pure
-/// planning steps return these; the caller knows where they belong.
-pub type Finding = (Code, String);
+/// A kept diagnostic before its position is resolved.
+pub type Item = (Message, Span);
 
 /// One finding about the program, positioned at a span of the source.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -237,7 +23,7 @@ pub struct Diagnostic {
     pub severity: Severity,
     /// Stable code.
     pub code: Code,
-    /// Human-readable message.
+    /// Human-readable message, in English.
     pub message: String,
     /// 1-based line of the span start.
     pub line: u32,
@@ -249,12 +35,27 @@ pub struct Diagnostic {
     pub end_column: u32,
     /// Byte span in the source.
     pub span: Span,
+    /// The message's template in the catalogue.
+    #[serde(skip)]
+    pub template: &'static Template,
+    /// The values the message names (numbers, texts kept verbatim).
+    pub args: Args,
+}
+
+impl Diagnostic {
+    /// The message in `lang`.
+    pub fn render(&self, lang: Lang) -> std::borrow::Cow<'_, str> {
+        match lang {
+            Lang::En => std::borrow::Cow::Borrowed(&self.message),
+            _ => std::borrow::Cow::Owned(crate::message::render(self.template, &self.args, lang)),
+        }
+    }
 }
 
 /// Collects diagnostics while a program is read.
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
-    items: Vec<(Code, String, Span)>,
+    items: Vec<Item>,
     limit: usize,
     dropped: usize,
     first_dropped: Option<Span>,
@@ -266,10 +67,15 @@ impl Diagnostics {
         Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None }
     }
 
-    /// Records a diagnostic.
-    pub fn push(&mut self, code: Code, span: Span, message: impl Into<String>) {
+    /// Records a diagnostic: `template` with `args` at `span`.
+    pub fn push(&mut self, template: &'static Template, span: Span, args: Args) {
+        self.push_message(Message::new(template, args), span);
+    }
+
+    /// Records a finding at `span`.
+    pub fn push_message(&mut self, message: Message, span: Span) {
         if self.items.len() < self.limit {
-            self.items.push((code, message.into(), span));
+            self.items.push((message, span));
         } else {
             self.drop_one(span);
         }
@@ -282,10 +88,10 @@ impl Diagnostics {
         }
     }
 
-    /// Records a diagnostic whose message is only formatted when it will be kept.
-    pub fn push_with(&mut self, code: Code, span: Span, message: impl FnOnce() -> String) {
+    /// Records a diagnostic whose arguments are only worked out when it will be kept.
+    pub fn push_with(&mut self, template: &'static Template, span: Span, args: impl FnOnce() -> Args) {
         if self.items.len() < self.limit {
-            self.items.push((code, message(), span));
+            self.items.push((Message::new(template, args()), span));
         } else {
             self.drop_one(span);
         }
@@ -293,7 +99,7 @@ impl Diagnostics {
 
     /// Whether an error-level diagnostic was recorded.
     pub fn has_error(&self) -> bool {
-        self.items.iter().any(|(c, _, _)| c.severity() == Severity::Error)
+        self.items.iter().any(|(m, _)| m.code().severity() == Severity::Error)
     }
 
     /// Number recorded so far.
@@ -324,15 +130,15 @@ impl Diagnostics {
     }
 
     /// Takes the diagnostics from the `len`-th on out of the collector (none were dropped).
-    pub fn split_off(&mut self, len: usize) -> Vec<(Code, String, Span)> {
+    pub fn split_off(&mut self, len: usize) -> Vec<Item> {
         self.items.split_off(len.min(self.items.len()))
     }
 
     /// Appends `items` (kept from another reading of the same text, `bytes`
     /// further along here), keeping this collector's limit.
-    pub fn extend_shifted(&mut self, items: Vec<(Code, String, Span)>, bytes: isize) {
-        for (code, message, span) in items {
-            self.push(code, span.shifted(bytes), message);
+    pub fn extend_shifted(&mut self, items: Vec<Item>, bytes: isize) {
+        for (message, span) in items {
+            self.push_message(message, span.shifted(bytes));
         }
     }
 
@@ -344,13 +150,13 @@ impl Diagnostics {
                 self.first_dropped = Some(f);
             }
         }
-        for (code, message, span) in other.items {
-            self.push(code, span, message);
+        for (message, span) in other.items {
+            self.push_message(message, span);
         }
     }
 
     /// The diagnostics kept, in the order they came.
-    pub fn into_items(self) -> Vec<(Code, String, Span)> {
+    pub fn into_items(self) -> Vec<Item> {
         self.items
     }
 
@@ -365,21 +171,20 @@ impl Diagnostics {
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
         let mut items = self.items;
         if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
-            items.push((
-                Code::MoreDiagnostics,
-                format!("{} more diagnostics from here on are not shown (setting limits.diagnostics)", self.dropped),
-                span,
-            ));
+            items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span));
         }
         let mut out: Vec<Diagnostic> = items
             .into_iter()
-            .map(|(code, message, span)| {
+            .map(|(m, span)| {
                 let LineCol { line, column } = index.locate(text, span.start as usize);
                 let end = index.locate(text, span.end as usize);
+                let code = m.code();
                 Diagnostic {
                     severity: code.severity(),
                     code,
-                    message,
+                    message: m.render(Lang::En),
+                    template: m.template,
+                    args: m.args,
                     line,
                     column,
                     end_line: end.line,

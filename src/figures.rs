@@ -165,5 +165,5 @@ pub struct Gauge {
     #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
     pub gauge_plane_z: Option<f64>,
     /// What was found wrong, and what was not checked.
-    pub notes: Vec<String>,
+    pub notes: Vec<crate::message::Message>,
 }

@@ -100,7 +100,7 @@ pub enum G {
     /// Known to the controller but not drawn; `returns` says whether the tool ends where it started.
     NotSimulated {
         /// What it is.
-        what: &'static str,
+        what: &'static crate::message::Phrase,
         /// The tool ends at the block's start point.
         returns: bool,
     },

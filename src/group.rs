@@ -10,7 +10,7 @@
 
 use std::ops::Range;
 
-use crate::diagnostic::{Code, Diagnostics};
+use crate::diagnostic::Diagnostics;
 use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
@@ -220,11 +220,7 @@ fn too_many_starts(cuts: &[Chain], starts: u32, limit: usize, diags: &mut Diagno
         if !seen.iter().any(|a| (a - c.angle).abs() < 1e-6) {
             seen.push(c.angle);
             if seen.len() > limit {
-                diags.push(
-                    Code::TooManyStarts,
-                    c.span,
-                    format!("{starts} starts (distinct start angles Q): at most {limit} (setting limits.starts)"),
-                );
+                diags.push(&crate::message::TOO_MANY_STARTS, c.span, crate::args![n = starts, limit]);
                 return;
             }
         }

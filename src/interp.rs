@@ -8,14 +8,16 @@
 //! built: grouping passes and planning cycles happen downstream, from the
 //! events ([`crate::assemble`]).
 
+use crate::args;
 use crate::block::{Block, BlockKind, Word};
 use crate::controller::{self, Command, Controller, Reader};
-use crate::diagnostic::{Code, Diagnostics};
+use crate::diagnostic::Diagnostics;
 use crate::event::Event;
 use crate::gcode::{G, Group};
 use crate::geom::arc_centre;
+use crate::message::{self as msg, Arg};
 use crate::motion::{ArcData, Move, MoveKind, Point};
-use crate::num::{EPS, fmt};
+use crate::num::EPS;
 use crate::settings::{P, Settings};
 use crate::state::{Modal, Motion, once};
 
@@ -89,7 +91,7 @@ fn block(r: &mut Reader, ctl: &Controller, b: &Block) {
     r.m.last_span = b.span;
     if r.m.ended {
         if r.m.first(once::AFTER_END) {
-            r.diag(Code::AfterEnd, b.span, "blocks after M30/M02 are never executed");
+            r.diag(&msg::AFTER_END, b.span, args![]);
         }
         return;
     }
@@ -136,20 +138,12 @@ fn g_codes<'b>(r: &mut Reader, ctl: &Controller, b: &'b Block, seen: &mut [Optio
         let v10 = w.value() * 10.0;
         let code = if v10 >= 0.0 && (v10 - v10.round()).abs() < 1e-9 { (ctl.g_code)(code10(w)) } else { None };
         let Some((group, g)) = code else {
-            r.diag(
-                Code::UnsupportedGCode,
-                w.span,
-                format!("{} is not a G code of the {} controller", w.display(), r.rules.title()),
-            );
+            r.diag(&msg::UNSUPPORTED_G_CODE, w.span, args![word = w, controller = Arg::lit(r.rules.title())]);
             return None;
         };
         if let Some((_, _, other)) = seen[..n].iter().flatten().find(|(gr, _, _)| *gr == group && group != Group::Setup)
         {
-            r.diag(
-                Code::ConflictingGCodes,
-                w.span,
-                format!("{} and {} are in the same modal group", other.display(), w.display()),
-            );
+            r.diag(&msg::CONFLICTING_G_CODES, w.span, args![first = other, second = w]);
             return None;
         }
         if n < seen.len() {
@@ -181,11 +175,7 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
             G::Inch | G::Metric => {
                 let inch = g == G::Inch;
                 if inch != r.m.inch && r.m.motion_seen {
-                    r.diag(
-                        Code::UnitsChanged,
-                        w.span,
-                        "units changed after motion: earlier coordinates stay in the old unit and the drawing mixes them",
-                    );
+                    r.diag(&msg::UNITS_CHANGED, w.span, args![]);
                 }
                 r.m.inch = inch;
             }
@@ -196,11 +186,7 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
                 let d = if g == G::CompOnDynamic { b.get(b'D').map_or(0.0, |d| d.value().abs()) } else { 0.0 };
                 r.m.comp = Some(d / 2.0);
                 if r.m.first(once::COMP) {
-                    r.diag(
-                        Code::NotSimulated,
-                        w.span,
-                        "tool-nose radius compensation (G41/G42) is not simulated: the tool tip point is drawn",
-                    );
+                    r.diag(&msg::NOSE_COMP_NOT_SIMULATED, w.span, args![]);
                 }
             }
             G::RenheRunout => one_shot = Some((g, w)),
@@ -212,7 +198,7 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
                 Group::OneShot => one_shot = Some((g, w)),
                 Group::Setup => {
                     if let G::NotSimulated { what, .. } = g {
-                        r.diag(Code::NotSimulated, w.span, format!("{}: {what} is not simulated", w.display()));
+                        r.diag(&msg::SETUP_NOT_SIMULATED, w.span, args![word = w, what]);
                     }
                 }
                 _ => {}
@@ -230,16 +216,14 @@ fn command(r: &mut Reader, ctl: &Controller, b: &Block, motion_g: Code1, one_sho
             r.m.cycle.g92 = None;
         }
         if let Motion::NotSimulated(what, _) = r.m.motion {
-            r.diag(Code::NotSimulated, w.span, format!("{}: {what} is not drawn", w.display()));
+            r.diag(&msg::NOT_DRAWN, w.span, args![word = w, what]);
         }
     }
     let has_axes = r.has_axes(b);
     let m_end = b.all(b'M').any(|m| matches!(m.num.integer(), Some(2 | 30)));
     for m in b.all(b'M') {
         match m.num.integer() {
-            Some(98 | 99) => {
-                r.diag(Code::NotSimulated, m.span, format!("{}: subprogram calls are not followed", m.display()))
-            }
+            Some(98 | 99) => r.diag(&msg::SUBPROGRAM_NOT_FOLLOWED, m.span, args![word = m]),
             Some(3 | 4) => r.m.spindle_on = true,
             Some(5) => r.m.spindle_on = false,
             _ => {}
@@ -292,7 +276,7 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
         G::Dwell => {
             r.check_words(b, b"PXU", "G04");
             if !(b.has(b'P') || b.has(b'X') || b.has(b'U')) {
-                r.diag(Code::MissingWord, w.span, "G04 needs the dwell time: P (ms), X or U (s)");
+                r.diag(&msg::G04_NEEDS_TIME, w.span, args![]);
             }
         }
         G::SetCoord => set_coordinates(r, b, w),
@@ -303,16 +287,12 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
             r.m.jk = (None, None);
             let t = r.target(b);
             r.go(MoveKind::Rapid, &t, b.line, b.span);
-            r.diag(
-                Code::NotSimulated,
-                w.span,
-                "G28: the move to the intermediate point is drawn; the reference point is machine-specific, so the position after it is unknown until the next absolute move",
-            );
+            r.diag(&msg::G28_INTERMEDIATE, w.span, args![]);
             r.m.pos.kx &= !t.has_x;
             r.m.pos.kz &= !t.has_z;
         }
         G::NotSimulated { what, returns } => {
-            r.diag(Code::NotSimulated, w.span, format!("{}: {what} is not drawn", w.display()));
+            r.diag(&msg::NOT_DRAWN, w.span, args![word = w, what]);
             if !returns {
                 // Where the tool ends is unknown.
                 r.m.pos.kx = false;
@@ -329,7 +309,7 @@ fn set_coordinates(r: &mut Reader, b: &Block, w: &Word) {
         return;
     }
     if !(b.has(b'X') || b.has(b'Z') || b.has(b'U') || b.has(b'W') || b.has(b'S')) {
-        r.diag(Code::MissingWord, w.span, "G50 needs X/Z (coordinate system) or S (spindle clamp)");
+        r.diag(&msg::G50_NEEDS_WORDS, w.span, args![]);
         return;
     }
     if let Some(x) = b.get(b'X') {
@@ -421,7 +401,7 @@ fn feed_word(r: &mut Reader, b: &Block) {
         r.set_feed(v, b.line);
     } else if r.m.feed.is_none() {
         let span = b.all(b'G').next().map_or(b.span, |w| w.span);
-        r.diag(Code::MissingFeed, span, "feed move without a feed rate: no F has been given yet");
+        r.diag(&msg::MISSING_FEED, span, args![]);
         r.m.feed = Some(0.0);
         r.m.feed_line = b.line;
     }
@@ -443,12 +423,11 @@ fn arc(r: &mut Reader, b: &Block, cw: bool) {
             Some(c) => c,
             None => {
                 let chord = s.distance(e);
-                let msg = if chord < EPS {
-                    "an R arc cannot be a full circle: its start and end are the same point".to_string()
+                if chord < EPS {
+                    r.diag(&msg::ARC_FULL_CIRCLE, rw.span, args![]);
                 } else {
-                    format!("radius {} is shorter than half the chord {}", fmt(rad.abs()), fmt(chord / 2.0))
-                };
-                r.diag(Code::ArcRadiusTooSmall, rw.span, msg);
+                    r.diag(&msg::ARC_RADIUS_TOO_SMALL, rw.span, args![radius = rad.abs(), half = chord / 2.0]);
+                }
                 return;
             }
         }
@@ -462,22 +441,13 @@ fn arc(r: &mut Reader, b: &Block, cw: bool) {
         let tol = r.s.get(P::ArcTolerance);
         if (r0 - r1).abs() > tol {
             let span = i.or(k).map_or(b.span, |w| w.span);
-            r.diag(
-                Code::ArcRadiusMismatch,
-                span,
-                format!(
-                    "the centre is {} from the start but {} from the end (tolerance {}, setting arc.tolerance)",
-                    fmt(r0),
-                    fmt(r1),
-                    fmt(tol)
-                ),
-            );
+            r.diag(&msg::ARC_RADIUS_MISMATCH, span, args![r0, r1, tol]);
             return;
         }
         c
     } else {
         let span = b.all(b'G').next().map_or(b.span, |w| w.span);
-        r.diag(Code::ArcMissingCenter, span, format!("{name} needs R or I/K for its centre"));
+        r.diag(&msg::ARC_MISSING_CENTER, span, args![word = name]);
         return;
     };
     let arc = ArcData { center: Point::from_zr(center), cw };

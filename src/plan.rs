@@ -222,14 +222,7 @@ pub(crate) struct Outputs {
 pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diagnostics) -> Option<Lexer<'t>> {
     let limit = settings.get(P::LimitProgramBytes) as usize;
     if text.len() > limit {
-        diags.push(
-            Code::ProgramTooLarge,
-            Span::new(0, 0),
-            format!(
-                "the program is {} bytes, larger than the limit of {limit} (setting limits.program_bytes)",
-                text.len()
-            ),
-        );
+        diags.push(&crate::message::PROGRAM_TOO_LARGE, Span::new(0, 0), crate::args![bytes = text.len(), limit]);
         return None;
     }
     let limits = LexLimits {

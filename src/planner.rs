@@ -18,11 +18,10 @@
 //! thread). The result is the plan a full re-plan would give; the tests
 //! check that for random edits.
 
-use crate::diagnostic::{Code, Diagnostics};
+use crate::diagnostic::{Diagnostics, Item};
 use crate::motion::Move;
 use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
-use crate::span::Span;
 use crate::thread::Thread;
 
 /// Blocks between two snapshots.
@@ -46,7 +45,7 @@ pub struct Planner {
     raw_diags: Diagnostics,
     /// Advice of each thread of the last plan, all formatted (kept for the
     /// threads an edit leaves before its resume point).
-    advice: Vec<Vec<(Code, String, Span)>>,
+    advice: Vec<Vec<Item>>,
     inch: bool,
     line_starts: Vec<u32>,
     plan: Option<Plan>,
@@ -62,7 +61,7 @@ struct Tail {
     /// Motions, threads and diagnostics from the resume point on.
     moves: Vec<Move>,
     threads: Vec<Thread>,
-    diags: Vec<(Code, String, Span)>,
+    diags: Vec<Item>,
     /// Their counts at the resume point.
     at: (usize, usize, usize),
     /// Every line start of the last text.
@@ -114,6 +113,11 @@ impl Planner {
     /// the last reading's (none when it read to the end).
     pub fn stopped_at(&self) -> Option<u32> {
         self.stopped_at
+    }
+
+    /// The text of the last plan.
+    pub fn text(&self) -> &str {
+        &self.text
     }
 
     /// The last plan, if any.
@@ -212,8 +216,8 @@ impl Planner {
                 advice.push(d.into_items());
             }
             let mut all = Diagnostics::with_limit(usize::MAX);
-            for (code, message, span) in advice.iter().flatten() {
-                all.push(*code, *span, message.clone());
+            for (message, span) in advice.iter().flatten() {
+                all.push_message(message.clone(), *span);
             }
             all
         });

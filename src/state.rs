@@ -36,7 +36,7 @@ pub enum Motion {
     /// G94 facing cycle.
     G94,
     /// A motion-group code that is not drawn.
-    NotSimulated(&'static str, bool),
+    NotSimulated(&'static crate::message::Phrase, bool),
 }
 
 impl Motion {

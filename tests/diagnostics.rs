@@ -295,6 +295,23 @@ fn every_code_at_its_line_and_column() {
     }
 }
 
+/// Every case in both languages: the English is the message the case asks
+/// for, every argument named is given and used, and the Chinese has no English words.
+#[test]
+fn every_case_in_both_languages() {
+    let mut bad = Vec::new();
+    for &(code, dialect, sets, src, line, col, _) in CASES {
+        let plan = plan_with(src, dialect, sets);
+        let d = at(&plan, code, line, col);
+        let zh = check_languages(&d);
+        let english = english_words(&zh);
+        if !english.is_empty() {
+            bad.push(format!("{code} ({}): English {english:?} in {zh:?}", d.template.name));
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
 #[test]
 fn every_code_has_a_case() {
     for code in Code::ALL {

@@ -378,7 +378,7 @@ fn npt_taper_and_gauge_plane() {
     // A 1:12 taper is not NPT.
     let steep = src.replace("X0.76375", "X0.7783").replace("X0.73407", "X0.74865");
     let g = gsk(&steep).threads[0].shop.gauge.clone().unwrap();
-    assert!(!g.ok && g.notes.iter().any(|n| n.contains("not 1/16")), "{:?}", g.notes);
+    assert!(!g.ok && g.notes.iter().any(|n| n.to_string().contains("not 1/16")), "{:?}", g.notes);
 }
 
 // ---- chip load ----

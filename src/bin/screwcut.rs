@@ -5,10 +5,13 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use screwcut::diagnostic::Severity;
+use screwcut::message::Lang;
 use screwcut::num::fmt;
 use screwcut::settings::{Kind, Settings};
-use screwcut::thread::Source;
-use screwcut::{Code, Dialect, Plan};
+use screwcut::{Code, Dialect};
+
+#[path = "screwcut/summary.rs"]
+mod summary;
 
 #[derive(Parser)]
 #[command(name = "screwcut", version, about = "Preview CNC lathe thread-cutting G-code: threads, passes and alarms")]
@@ -32,6 +35,9 @@ enum Command {
         /// Print the plan as JSON.
         #[arg(long)]
         json: bool,
+        /// Language of the summary and its diagnostics: en or zh (the JSON's messages stay English).
+        #[arg(long, default_value = "en", value_parser = parse_lang)]
+        lang: Lang,
     },
     /// List the settings and controller parameters of a dialect with their values.
     Settings {
@@ -190,6 +196,10 @@ fn generate(a: GenerateArgs) -> ExitCode {
     }
 }
 
+fn parse_lang(s: &str) -> Result<Lang, String> {
+    Lang::parse(s).ok_or_else(|| format!("unknown language '{s}' (en, zh)"))
+}
+
 fn parse_dialect(s: &str) -> Result<Dialect, String> {
     Dialect::parse(s).ok_or_else(|| format!("unknown dialect '{s}' ({})", Dialect::names()))
 }
@@ -203,7 +213,7 @@ fn read_layout(path: &str) -> Result<screwcut::svg::Layout, String> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Plan { file, dialect, set, json } => plan(&file, dialect, &set, json),
+        Command::Plan { file, dialect, set, json, lang } => plan(&file, dialect, &set, json, lang),
         Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
         Command::Generate(a) => generate(a),
         Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, layout } => {
@@ -314,193 +324,17 @@ fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String]) -> ExitCode
     ExitCode::SUCCESS
 }
 
-fn plan(file: &str, dialect: Dialect, set: &[String], json: bool) -> ExitCode {
+fn plan(file: &str, dialect: Dialect, set: &[String], json: bool, lang: Lang) -> ExitCode {
     let (settings, text) = match input(file, dialect, set) {
         Ok(v) => v,
         Err(code) => return code,
     };
     let plan = screwcut::plan(&text, &settings);
-    emit(&if json { plan.to_json() + "\n" } else { summary(&plan, file) });
+    emit(&if json { plan.to_json() + "\n" } else { summary::summary(&plan, file, lang) });
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
 
 /// Writes to standard output; a closed pipe (`| head`) is not worth a panic.
 fn emit(text: &str) {
     let _ = std::io::Write::write_all(&mut std::io::stdout().lock(), text.as_bytes());
-}
-
-/// The shop-floor lines of one thread: time, speed, clearances, helix angle, the thread check.
-fn shop_section(out: &mut String, t: &screwcut::thread::Thread, inch: bool) {
-    use std::fmt::Write;
-    let s = &t.shop;
-    let u = if inch { "in" } else { "mm" };
-    let opt = |v: Option<f64>| v.map_or_else(|| "?".to_string(), fmt);
-    match (s.cut_time_s, s.time_s, s.rpm) {
-        (Some(cut), Some(total), Some(n)) => {
-            let _ = writeln!(
-                out,
-                "  time: {} s cutting, {} s with rapids; {} rev/min, thread feed {} {u}/min (machine.max_thread_feed allows up to S{})",
-                fmt(cut),
-                fmt(total),
-                fmt(n),
-                opt(s.thread_feed),
-                opt(s.rpm_limit)
-            );
-        }
-        _ => {
-            let _ = writeln!(out, "  time: not known (no spindle speed S before the thread)");
-        }
-    }
-    if let (Some(n1), Some(n2)) = (s.lead_in_needed, s.run_out_needed) {
-        let src = match s.clearance_source {
-            Some(screwcut::shop::ClearanceSource::Outline) => "measured",
-            Some(screwcut::shop::ClearanceSource::Assumed) => "assumed",
-            None => "not known",
-        };
-        let _ = writeln!(
-            out,
-            "  speed: lead-in δ1 {} ({src}), {} needed at this speed; run-out δ2 {}, {} needed",
-            opt(s.lead_in),
-            fmt(n1),
-            opt(s.run_out),
-            fmt(n2)
-        );
-    }
-    if let (Some(h), Some(d2)) = (s.helix_angle_deg, s.pitch_diameter) {
-        let _ = writeln!(out, "  helix angle {}° at pitch diameter {}", fmt(h), fmt(d2));
-    }
-    if let Some(g) = &s.gauge {
-        gauge_lines(out, g);
-    }
-}
-
-/// The thread check of one thread: verdict, numbers, the fix and the notes.
-fn gauge_lines(out: &mut String, g: &screwcut::shop::Gauge) {
-    use std::fmt::Write;
-    let opt = |v: Option<f64>| v.map_or_else(|| "?".to_string(), fmt);
-    let from = match g.line {
-        Some(l) => format!("comment on line {l}"),
-        None => "setting thread.designation".to_string(),
-    };
-    let _ =
-        writeln!(out, "  thread check {} ({from}): {}", g.designation, if g.ok { "gauges" } else { "WILL NOT GAUGE" });
-    if let Some(taper) = g.taper {
-        let _ = writeln!(
-            out,
-            "    pitch diameter {} at the small end; taper {} on diameter (1/16 = 0.0625); gauge plane at Z{}",
-            fmt(g.pitch_diameter),
-            fmt(taper),
-            opt(g.gauge_plane_z)
-        );
-    } else {
-        let _ = writeln!(
-            out,
-            "    pitch diameter {} in {} … {}; major {} in {} … {}; minor {} in {} … {}",
-            fmt(g.pitch_diameter),
-            opt(g.pitch_diameter_min),
-            opt(g.pitch_diameter_max),
-            opt(g.major_diameter),
-            opt(g.major_diameter_min),
-            opt(g.major_diameter_max),
-            opt(g.minor_diameter),
-            opt(g.minor_diameter_min),
-            opt(g.minor_diameter_max)
-        );
-    }
-    if let Some(dx) = g.delta_x {
-        let _ = writeln!(out, "    fix: ΔX {} on the final pass centres the pitch diameter", fmt(dx));
-    }
-    for n in &g.notes {
-        let _ = writeln!(out, "    note: {n}");
-    }
-}
-
-fn summary(plan: &Plan, file: &str) -> String {
-    use std::fmt::Write;
-    let mut out = String::new();
-    let count = |s: Severity| plan.diagnostics.iter().filter(|d| d.severity == s).count();
-    let _ = writeln!(
-        out,
-        "{file}: {}, {}; {} thread(s), {} move(s); {} alarm(s), {} warning(s), {} note(s){}",
-        plan.dialect.name(),
-        match plan.units {
-            screwcut::plan::Units::Mm => "mm",
-            screwcut::plan::Units::Inch => "inch",
-        },
-        plan.threads.len(),
-        plan.moves.len(),
-        count(Severity::Error),
-        count(Severity::Warning),
-        count(Severity::Info),
-        plan.time_s.map(|t| format!("; threading time {} s", fmt(t))).unwrap_or_default()
-    );
-    for (i, t) in plan.threads.iter().enumerate() {
-        let lower = |v: String| v.to_lowercase();
-        let plural = |n: u32, one: &str| if n == 1 { format!("1 {one}") } else { format!("{n} {one}s") };
-        let _ = writeln!(
-            out,
-            "\nthread {} (lines {}-{}): {} {}, lead {}, pitch {}, {}, {}; crest {}{} ({}), height {}",
-            i + 1,
-            t.line,
-            t.end_line,
-            lower(format!("{:?}", t.kind)),
-            match t.source {
-                Source::G32 => "G32",
-                Source::Renhe => "Renhe G32/G33",
-                Source::G78 => "G78",
-                Source::G92 => "G92",
-                Source::G76 => "G76",
-                Source::LinuxG33 => "LinuxCNC G33",
-                Source::LinuxG76 => "LinuxCNC G76",
-            },
-            fmt(t.lead),
-            fmt(t.pitch),
-            plural(t.starts, "start"),
-            if t.internal { "internal" } else { "external" },
-            if t.long_axis == screwcut::thread::Axis::Z { "X" } else { "Z" },
-            fmt(t.crest),
-            lower(format!("{:?}", t.crest_source)),
-            fmt(t.height)
-        );
-        let _ = writeln!(
-            out,
-            "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>8} {:>8} {:>7}  lines",
-            "start", "pass", "X from", "Z from", "X to", "Z to", "depth", "infeed", "role", "area", "even", "time s"
-        );
-        for (k, p) in t.passes.iter().enumerate() {
-            let lines = p.lines.iter().map(|l| l.to_string()).collect::<Vec<_>>().join(",");
-            let chip = t.shop.chip.get(k);
-            let opt = |v: Option<f64>| v.map_or_else(|| "-".to_string(), fmt);
-            let _ = writeln!(
-                out,
-                "  {:>5} {:>4} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>8} {:>8} {:>7}  {}",
-                p.start,
-                p.index,
-                fmt(p.from.x),
-                fmt(p.from.z),
-                fmt(p.to.x),
-                fmt(p.to.z),
-                fmt(p.depth),
-                fmt(p.infeed),
-                format!("{:?}", p.role).to_lowercase(),
-                opt(chip.and_then(|c| c.area)),
-                opt(chip.and_then(|c| c.even_area)),
-                opt(t.shop.pass_time_s.get(k).copied()),
-                lines
-            );
-        }
-        shop_section(&mut out, t, plan.units == screwcut::plan::Units::Inch);
-    }
-    if !plan.diagnostics.is_empty() {
-        let _ = writeln!(out, "\ndiagnostics:");
-        for d in &plan.diagnostics {
-            let sev = match d.severity {
-                Severity::Error => "alarm",
-                Severity::Warning => "warning",
-                Severity::Info => "note",
-            };
-            let _ = writeln!(out, "  {}:{}: {sev} [{}] {}", d.line, d.column, d.code, d.message);
-        }
-    }
-    out
 }

@@ -68,8 +68,8 @@ static THREADS: ThreadRules = ThreadRules {
 fn g_code(code10: i64) -> Option<(Group, G)> {
     let ns = |what| G::NotSimulated { what, returns: true };
     match code10 {
-        540..=590 => Some((Group::Setup, ns("work coordinate system"))),
-        180 => Some((Group::Setup, ns("plane selection"))),
+        540..=590 => Some((Group::Setup, ns(&crate::message::NS_WORK_OFFSET))),
+        180 => Some((Group::Setup, ns(&crate::message::NS_PLANE))),
         _ => lathe_g_code(code10),
     }
 }

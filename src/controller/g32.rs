@@ -8,12 +8,13 @@
 
 use super::reader::axis_span;
 use super::{Reader, ThreadRules, words};
+use crate::args;
 use crate::block::Block;
 use crate::cycle::{classify, split_runout};
-use crate::diagnostic::Code;
 use crate::event::{Event, Piece, Seg};
 use crate::geom::Frame;
-use crate::num::{EPS, fmt};
+use crate::message::{self as msg};
+use crate::num::EPS;
 use crate::settings::P;
 use crate::thread::Source;
 
@@ -48,14 +49,7 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
             return;
         };
         if r.m.chain {
-            r.diag(
-                Code::QIgnored,
-                q.span,
-                format!(
-                    "{}: in a continuous thread only the first block's start angle counts; this Q is ignored",
-                    q.display()
-                ),
-            );
+            r.diag(&msg::Q_IGNORED, q.span, args![word = q]);
         } else {
             angle = a;
         }
@@ -63,7 +57,7 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
     let start = r.current(b.span);
     let end = r.target(b).p;
     let Some((kind, long)) = classify(start, end) else {
-        r.diag(Code::ZeroLengthThread, axis_span(b), "G32 does not move: the end point is the start point");
+        r.diag(&msg::G32_NO_MOVE, axis_span(b), args![]);
         r.end_chain();
         return;
     };
@@ -97,11 +91,7 @@ fn runout(r: &mut Reader, b: &Block, lead: f64, travel: f64) -> Option<(f64, f64
     let k = runout_speed_rule(r, b, lead, j, k);
     if k > travel + EPS {
         let span = kw.or(jw).map_or(axis_span(b), |w| w.span);
-        r.diag(
-            Code::RunoutTooLong,
-            span,
-            format!("run-out length K = {} is longer than the thread's {} of long-axis travel", fmt(k), fmt(travel)),
-        );
+        r.diag(&msg::RUNOUT_K_TOO_LONG, span, args![k, travel]);
         return None;
     }
     Some((j, k))
@@ -143,32 +133,12 @@ fn runout_speed_rule(r: &mut Reader, b: &Block, lead: f64, j: f64, k: f64) -> f6
             let feed = lead * unit * s; // mm/min along the long axis
             let len = j.abs() * feed / v;
             let angle = (j.abs()).atan2(len).to_degrees();
-            r.diag(
-                Code::RunoutSpeed,
-                span,
-                format!(
-                    "run-out by parameter No.107: short axis at {} mm/min against the thread feed {} mm/min (lead {} × S{}): it retracts {} over {} of long-axis travel, {}° from the axis (K = {} is not used)",
-                    fmt(v),
-                    fmt(feed),
-                    fmt(lead),
-                    fmt(s),
-                    fmt(j.abs()),
-                    fmt(len / unit),
-                    fmt(angle),
-                    fmt(k)
-                ),
-            );
+            let a = args![speed = v, feed, lead, s, j = j.abs(), len = len / unit, angle, k];
+            r.diag(&msg::RUNOUT_BY_NO107, span, a);
             len / unit
         }
         _ => {
-            r.diag(
-                Code::RunoutSpeed,
-                span,
-                format!(
-                    "parameter No.107 = {} sets the run-out speed, but the spindle speed (S under G97) is unknown: the run-out is drawn from J and K",
-                    fmt(v)
-                ),
-            );
+            r.diag(&msg::NO107_WITHOUT_SPINDLE, span, args![v]);
             k
         }
     }

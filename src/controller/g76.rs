@@ -6,11 +6,11 @@
 //! flank infeed along the flank that leads into the cut.
 
 use super::{Reader, ThreadRules, words};
+use crate::args;
 use crate::block::{Block, Word};
 use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
-use crate::diagnostic::Code;
 use crate::event::Event;
-use crate::num::fmt;
+use crate::message::{self as msg, Arg};
 use crate::settings::P;
 use crate::state::G76First;
 use crate::thread::{Infeed, Source};
@@ -73,7 +73,7 @@ fn first(r: &mut Reader, t: &ThreadRules, b: &Block) {
     let mut f = G76First { line: b.line, ..defaults(r, form) };
     if let Some(w) = b.get(b'P').copied() {
         if w.num.has_point || w.value() < 0.0 || w.num.int_digits > 6 {
-            r.diag(Code::ValueOutOfRange, w.span, format!("{}: P(m)(r)(a) is six digits, mmrraa", w.display()));
+            r.diag(&msg::G76_P_DIGITS, w.span, args![word = w]);
             return;
         }
         let v = w.value() as u32;
@@ -81,27 +81,15 @@ fn first(r: &mut Reader, t: &ThreadRules, b: &Block) {
         f.r = (v / 100) % 100;
         f.a = v % 100;
         if f.m < form.m_min {
-            r.diag(
-                Code::ValueOutOfRange,
-                w.span,
-                format!("{}: the finishing count m must be {:02}..99", w.display(), form.m_min),
-            );
+            r.diag(&msg::G76_FINISH_COUNT, w.span, args![word = w, min = format!("{:02}", form.m_min)]);
             return;
         }
         if let Some(angles) = form.angles.filter(|a| !a.contains(&f.a)) {
             let mut list = angles.iter().map(u32::to_string).collect::<Vec<_>>();
             let last = list.pop().unwrap_or_default();
-            r.diag(
-                Code::ValueOutOfRange,
-                w.span,
-                format!(
-                    "{}: tool angle {}°; {} G76 takes {} or {last}",
-                    w.display(),
-                    f.a,
-                    words::short_title(r),
-                    list.join(", ")
-                ),
-            );
+            let a =
+                args![word = w, a = f.a, controller = Arg::lit(words::short_title(r)), list = list.join(", "), last];
+            r.diag(&msg::G76_TOOL_ANGLE, w.span, a);
             return;
         }
     }
@@ -141,7 +129,7 @@ fn second(r: &mut Reader, t: &ThreadRules, b: &Block, g: &Word) {
     let target = r.target(b);
     let mut geom = match Geometry::new(start, target.p, i, "G76") {
         Ok(geom) => geom,
-        Err((code, msg)) => return r.diag(code, g.span, msg),
+        Err(f) => return r.finding(f, g.span),
     };
     let chamfer_angle = form.chamfer_angle.map_or(45.0, |p| r.param(p));
     geom.runout = runout::fanuc(f.r as f64, chamfer_angle, lead);
@@ -156,11 +144,7 @@ fn second(r: &mut Reader, t: &ThreadRules, b: &Block, g: &Word) {
     lines.push(b.line);
     let d = f.d.unwrap_or(0.0);
     if d > k {
-        r.diag(
-            Code::ValueOutOfRange,
-            g.span,
-            format!("finishing allowance d = {} is more than the thread height k = {}", fmt(d), fmt(k)),
-        );
+        r.diag(&msg::ALLOWANCE_OVER_HEIGHT, g.span, args![d, k]);
         return;
     }
     let multi = Multi {

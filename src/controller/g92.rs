@@ -8,10 +8,11 @@
 
 use super::reader::g_span;
 use super::{Reader, ThreadRules, words};
+use crate::args;
 use crate::block::Block;
 use crate::cycle::{Geometry, runout};
-use crate::diagnostic::Code;
 use crate::event::{Event, G92Pass};
+use crate::message::{self as msg};
 use crate::motion::Point;
 use crate::settings::P;
 use crate::state::G92Modal;
@@ -62,7 +63,7 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
         (true, _) => target.p.z,
         (false, Some(m)) => m.z,
         (false, None) => {
-            r.diag(Code::MissingWord, g_span, "G92 needs the thread end Z (or W)");
+            r.diag(&msg::G92_NEEDS_Z, g_span, args![]);
             return;
         }
     };
@@ -74,7 +75,7 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
     let end = Point::new(target.p.x, z);
     let mut geom = match Geometry::new(a, end, taper, "G92") {
         Ok(g) => g,
-        Err((code, msg)) => return r.diag(code, g_span, msg),
+        Err(f) => return r.finding(f, g_span),
     };
     // J, K and L are modal: every later pass block keeps them, with or
     // without Z, until they are given again (GSK980TDc §3.21.6; GSK988TA G92).
@@ -86,7 +87,7 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
         Form::RunoutAndStarts { runout: p, .. } => {
             geom.runout = runout::gsk(j, k, r.param(p), lead);
             if let Some(w) = b.get(b'L').copied() {
-                if !r.in_range(&w, w.value(), 1.0, 99.0, "starts L") || w.num.integer().is_none() {
+                if !r.in_range(&w, w.value(), 1.0, 99.0, &msg::STARTS_L) || w.num.integer().is_none() {
                     return;
                 }
                 starts = w.value() as u32;
@@ -101,8 +102,8 @@ pub fn block(r: &mut Reader, t: &ThreadRules, b: &Block, tool_angle: f64) {
         }
     }
     r.m.cycle.g92 = Some(G92Modal { z, r: taper, j, k, starts });
-    if let Err((code, msg)) = geom.check_ends(0.0) {
-        return r.diag(code, g_span, msg);
+    if let Err(f) = geom.check_ends(0.0) {
+        return r.finding(f, g_span);
     }
     let pts = geom.pass(0.0, 0.0, 0.0);
     let spindle = r.spindle();

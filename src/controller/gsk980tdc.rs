@@ -8,13 +8,14 @@
 
 use super::words::{self, Unit};
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
+use crate::args;
 use crate::block::{Block, Word};
 use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
-use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
 use crate::event::Event;
 use crate::form::Form;
 use crate::gcode::{G, Group};
+use crate::message::{self as msg};
 use crate::settings::P;
 use crate::state::{G78First, Motion};
 use crate::thread::{Infeed, Source};
@@ -73,7 +74,7 @@ static THREADS: ThreadRules = ThreadRules {
 
 fn g_code(code10: i64) -> Option<(Group, G)> {
     match code10 {
-        330 => Some((Group::Motion, G::NotSimulated { what: "G33 tapping cycle", returns: true })),
+        330 => Some((Group::Motion, G::NotSimulated { what: &msg::NS_G33_TAPPING, returns: true })),
         780 => Some((Group::OneShot, G::G78)),
         _ => lathe_g_code(code10),
     }
@@ -106,16 +107,12 @@ fn g78(r: &mut Reader, b: &Block, g: &Word) {
 /// setting `g78.missing_p_digits = zero`.
 fn pmra(r: &mut Reader, w: &Word, f: &mut G78First) -> bool {
     if w.num.has_point || w.value() < 0.0 {
-        r.diag(
-            Code::DecimalPointNotAllowed,
-            w.span,
-            format!("{}: P(m)(r)(a) is a plain four-digit number", w.display()),
-        );
+        r.diag(&msg::G78_P_POINT, w.span, args![word = w]);
         return false;
     }
     let digits = w.num.int_digits as u32;
     if digits > 4 {
-        r.diag(Code::ValueOutOfRange, w.span, format!("{}: P(m)(r)(a) has at most four digits", w.display()));
+        r.diag(&msg::G78_P_DIGITS, w.span, args![word = w]);
         return false;
     }
     let v = w.value() as u32;
@@ -125,19 +122,11 @@ fn pmra(r: &mut Reader, w: &Word, f: &mut G78First) -> bool {
     f.r = digit(digits >= 3, (v / 100) % 10);
     f.m = digit(digits >= 4, (v / 1000) % 10);
     if let Some(m) = f.m.filter(|m| *m > 1) {
-        r.diag(
-            Code::ValueOutOfRange,
-            w.span,
-            format!("{}: depth mode m = {m}; 0 (equal) or 1 (degressive)", w.display()),
-        );
+        r.diag(&msg::G78_DEPTH_MODE, w.span, args![word = w, m]);
         return false;
     }
     if let Some(rr) = f.r.filter(|r| *r > 3) {
-        r.diag(
-            Code::ValueOutOfRange,
-            w.span,
-            format!("{}: infeed mode r = {rr}; 0 middle, 1 left, 2 right or 3 alternating", w.display()),
-        );
+        r.diag(&msg::G78_INFEED_MODE, w.span, args![word = w, r = rr]);
         return false;
     }
     true
@@ -160,19 +149,19 @@ fn g78_first(r: &mut Reader, b: &Block) {
     f.j = b.get(b'J').map(|w| w.value().abs());
     f.k = b.get(b'K').map(|w| w.value().abs());
     if let Some(w) = b.get(b'D').copied() {
-        if !r.in_range(&w, w.value(), 0.0, 99.0, "finishing count D") || w.num.integer().is_none() {
+        if !r.in_range(&w, w.value(), 0.0, 99.0, &msg::FINISH_COUNT_D) || w.num.integer().is_none() {
             return;
         }
         f.count = Some(w.value() as u32);
     }
     if let Some(w) = b.get(b'L').copied() {
-        if !r.in_range(&w, w.value(), 1.0, 99.0, "starts L") || w.num.integer().is_none() {
+        if !r.in_range(&w, w.value(), 1.0, 99.0, &msg::STARTS_L) || w.num.integer().is_none() {
             return;
         }
         f.starts = Some(w.value() as u32);
     }
     if let Some(w) = b.get(b'E').copied() {
-        if !r.in_range(&w, w.value(), -9999.9999, 9999.9999, "screw-in E") {
+        if !r.in_range(&w, w.value(), -9999.9999, 9999.9999, &msg::SCREW_IN_E) {
             return;
         }
         f.e = Some(w.value().abs());
@@ -189,7 +178,7 @@ fn g78_second(r: &mut Reader, b: &Block, g: &Word) {
     let i = match b.get(b'R').copied() {
         Some(w) => {
             let v = r.length(&w);
-            if !r.in_range(&w, v, -99999.999, 99999.999, "taper R(i)") {
+            if !r.in_range(&w, v, -99999.999, 99999.999, &msg::TAPER_R) {
                 return;
             }
             v
@@ -213,7 +202,7 @@ fn g78_second(r: &mut Reader, b: &Block, g: &Word) {
     let target = r.target(b);
     let mut geom = match Geometry::new(start, target.p, i, "G78") {
         Ok(geom) => geom,
-        Err((code, msg)) => return r.diag(code, g.span, msg),
+        Err(f) => return r.finding(f, g.span),
     };
     geom.runout = runout::gsk(f.j, f.k, r.param(P::No019), lead);
     geom.screw_in = f.e.filter(|e| *e > 0.0).map(|e| (e, r.s.get(P::ScrewInLeads) * lead));

@@ -15,11 +15,12 @@ mod g33;
 mod g76;
 
 use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code};
+use crate::args;
 use crate::block::Block;
-use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
 use crate::form::Form;
 use crate::gcode::{G, Group};
+use crate::message::{self as msg, Arg};
 use crate::settings::{P, Settings};
 use crate::span::Span;
 use crate::state::{Modal, Motion, once};
@@ -65,35 +66,35 @@ fn g_code(code10: i64) -> Option<(Group, G)> {
     use Group::*;
     let ns = |what, returns| NotSimulated { what, returns };
     Some(match code10 {
-        50..=52 => (Motion, ns("G5 spline", false)),
+        50..=52 => (Motion, ns(&crate::message::NS_G5, false)),
         70 => (LatheMode, DiameterMode),
         80 => (LatheMode, RadiusMode),
-        100 => (OneShot, ns("G10 table and offset setting", true)),
+        100 => (OneShot, ns(&crate::message::NS_G10, true)),
         170 | 180 | 190 => (Group::Plane, G::Plane((code10 / 10) as u8)),
         200 => (Units, Inch),
         210 => (Units, Metric),
         280 | 300 => (OneShot, RefReturn),
         281 | 301 => (Setup, Accepted),
         330 => (Motion, SyncThread),
-        331 => (Motion, ns("G33.1 rigid tapping", true)),
-        382..=385 => (Motion, ns("G38 probing", false)),
+        331 => (Motion, ns(&crate::message::NS_G33_1, true)),
+        382..=385 => (Motion, ns(&crate::message::NS_G38, false)),
         400 => (NoseComp, CompOff),
         410 | 420 => (NoseComp, CompOn),
         411 | 421 => (NoseComp, CompOnDynamic),
         430 | 431 | 432 | 490 => (Setup, Accepted),
-        520 => (OneShot, ns("G52 local offset", false)),
-        530 => (OneShot, ns("G53 move in machine coordinates", false)),
+        520 => (OneShot, ns(&crate::message::NS_G52, false)),
+        530 => (OneShot, ns(&crate::message::NS_G53, false)),
         540 | 550 | 560 | 570 | 580 | 590 | 591 | 592 | 593 | 610 | 611 | 640 | 800 | 911 | 980 | 990 => {
             (Setup, Accepted)
         }
-        700 | 710..=712 | 720..=722 => (OneShot, ns("G70/G71/G72 lathe cycle", true)),
-        730 | 740 | 810..=890 => (Motion, ns("canned drilling cycle", true)),
+        700 | 710..=712 | 720..=722 => (OneShot, ns(&crate::message::NS_LATHE_CYCLE, true)),
+        730 | 740 | 810..=890 => (Motion, ns(&crate::message::NS_DRILLING, true)),
         760 => (Motion, ThreadCycle),
         900 => (Distance, Absolute),
-        901 => (Setup, ns("G90.1 absolute arc centres", true)),
+        901 => (Setup, ns(&crate::message::NS_G90_1, true)),
         910 => (Distance, Incremental),
         920 => (OneShot, SetCoord),
-        921..=923 => (OneShot, ns("G92.1-G92.3 coordinate offset reset", false)),
+        921..=923 => (OneShot, ns(&crate::message::NS_G92_1, false)),
         930 => (FeedMode, Accepted),
         940 => (FeedMode, PerMinute),
         950 => (FeedMode, PerRev),
@@ -115,11 +116,7 @@ fn command(r: &mut Reader, b: &Block, c: Command) {
 fn finish(r: &mut Reader) {
     if r.s.flag(P::LinuxRequireEnd) && !r.m.ended && !r.m.percent && r.m.last_span != Span::default() {
         let span = r.m.last_span;
-        r.diag(
-            Code::NoProgramEnd,
-            span,
-            "File ended with no percent sign or program end: LinuxCNC needs M2 or M30 at the end (or the program between % lines); setting linuxcnc.require_end",
-        );
+        r.diag(&msg::LCNC_NO_PROGRAM_END, span, args![]);
     }
 }
 
@@ -129,22 +126,14 @@ fn g_word_span(b: &Block, code10: i64) -> Span {
 }
 
 /// The `$` spindle number is one of the configured spindles; else `message` (an alarm).
-fn spindle_number(r: &mut Reader, b: &Block, message: &str) -> bool {
+fn spindle_number(r: &mut Reader, b: &Block, message: &'static str) -> bool {
     let Some(w) = b.spindle else { return true };
     let n = r.s.int(P::LinuxSpindles);
     let v = w.value();
     if v.fract() == 0.0 && v >= 0.0 && v < n as f64 {
         return true;
     }
-    r.diag(
-        Code::ValueOutOfRange,
-        w.span,
-        format!(
-            "{message}: {} selects a spindle, and {n} configured (setting linuxcnc.spindles) are $0..${}",
-            w.display(),
-            n - 1
-        ),
-    );
+    r.diag(&msg::LCNC_SPINDLE_NUMBER, w.span, args![message = Arg::lit(message), word = w, n, last = n - 1]);
     false
 }
 
@@ -152,12 +141,6 @@ fn spindle_number(r: &mut Reader, b: &Block, message: &str) -> bool {
 fn plane_warning(r: &mut Reader, span: Span, what: &str) {
     if r.m.plane != 18 && r.m.first(once::PLANE) {
         let plane = r.m.plane;
-        r.diag(
-            Code::PlaneNotXz,
-            span,
-            format!(
-                "{what} in G{plane}: the interpreter runs it as in G18, but the manual requires the XZ plane; put G18 in the program (or setting linuxcnc.startup_plane)"
-            ),
-        );
+        r.diag(&msg::LCNC_PLANE, span, args![what, plane]);
     }
 }

@@ -3,10 +3,12 @@
 //! modules and the interpreter read words through a [`Reader`]; none of
 //! them sees the plan being built.
 
+use crate::args;
 use crate::block::{Block, Word};
-use crate::diagnostic::{Code, Diagnostics};
+use crate::diagnostic::Diagnostics;
 use crate::dialect::{Dialect, letters};
 use crate::event::Event;
+use crate::message::{self as msg, Args, Phrase, Template};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::{EPS, fmt};
 use crate::settings::{P, Settings};
@@ -74,9 +76,14 @@ impl Rules {
 }
 
 impl Reader<'_> {
-    /// Records a diagnostic.
-    pub fn diag(&mut self, code: Code, span: Span, msg: impl Into<String>) {
-        self.diags.push(code, span, msg);
+    /// Records a diagnostic: `template` with `args` at `span`.
+    pub fn diag(&mut self, template: &'static Template, span: Span, args: Args) {
+        self.diags.push(template, span, args);
+    }
+
+    /// Records a finding of a pure step at `span`.
+    pub fn finding(&mut self, f: crate::diagnostic::Finding, span: Span) {
+        self.diags.push_message(f, span);
     }
 
     /// A parameter's value in force (as the program rewrote it, else the setting).
@@ -130,14 +137,7 @@ impl Reader<'_> {
                 which.push(format!("Z{}", fmt(pos.p.z)));
             }
             if self.m.first(once::START) {
-                self.diag(
-                    Code::StartAssumed,
-                    span,
-                    format!(
-                        "tool position unknown (no absolute X/Z or G50 before this block): start taken as {} (settings start.x, start.z)",
-                        which.join(" ")
-                    ),
-                );
+                self.diag(&msg::START_ASSUMED, span, args![start = which.join(" ")]);
             }
         }
         self.m.pos.p
@@ -151,17 +151,8 @@ impl Reader<'_> {
         }
         let inch = self.m.inch;
         let v = w.value() * self.s.length_increment(inch);
-        let unit = if inch { "in" } else { "mm" };
-        self.diags.push_with(Code::NoDecimalPoint, w.span, || {
-            format!(
-                "{} has no decimal point: with parameter 3401#0 (DPI) = 0 it means {} {unit}, not {} {unit}; write {}{}. if you meant {}",
-                w.display(),
-                fmt(v),
-                fmt(w.value()),
-                w.letter(),
-                fmt(w.value()),
-                fmt(w.value())
-            )
+        self.diags.push_with(&msg::NO_DECIMAL_POINT, w.span, || {
+            args![word = w, value = v, unit = msg::unit(inch), written = w.value(), letter = w.letter()]
         });
         v
     }
@@ -182,15 +173,7 @@ impl Reader<'_> {
         let mut bad = false;
         for (abs, inc) in [(b'X', b'U'), (b'Z', b'W')] {
             if let (Some(a), Some(i)) = (b.get(abs), b.get(inc)) {
-                self.diag(
-                    Code::AxisConflict,
-                    a.span.cover(i.span),
-                    format!(
-                        "{} and {} in one block: give the axis once, absolute or incremental",
-                        a.display(),
-                        i.display()
-                    ),
-                );
+                self.diag(&msg::AXIS_CONFLICT, a.span.cover(i.span), args![abs = a, inc = i]);
                 bad = true;
             }
         }
@@ -298,7 +281,10 @@ impl Reader<'_> {
         let mut ok = true;
         for w in &b.words {
             if mask & (1 << (w.letter - b'A')) == 0 {
-                self.diag(Code::UnexpectedWord, w.span, format!("{what} does not take {}", w.display()));
+                match what.strip_suffix(" (first block)") {
+                    Some(g) => self.diag(&msg::UNEXPECTED_WORD_FIRST_BLOCK, w.span, args![what = g, word = w]),
+                    None => self.diag(&msg::UNEXPECTED_WORD, w.span, args![what, word = w]),
+                }
                 ok = false;
             }
         }
@@ -317,15 +303,11 @@ impl Reader<'_> {
     }
 
     /// Checks `lo ≤ v ≤ hi`, reporting at `w` otherwise.
-    pub fn in_range(&mut self, w: &Word, v: f64, lo: f64, hi: f64, what: &str) -> bool {
+    pub fn in_range(&mut self, w: &Word, v: f64, lo: f64, hi: f64, what: &'static Phrase) -> bool {
         if v >= lo - EPS && v <= hi + EPS {
             return true;
         }
-        self.diag(
-            Code::ValueOutOfRange,
-            w.span,
-            format!("{}: {what} {} is outside {}..{}", w.display(), fmt(v), fmt(lo), fmt(hi)),
-        );
+        self.diag(&msg::VALUE_OUT_OF_RANGE, w.span, args![word = w, what, value = v, lo, hi]);
         false
     }
 }

@@ -11,14 +11,14 @@
 
 use super::reader::g_span;
 use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code, g32};
+use crate::args;
 use crate::block::{Block, Word};
 use crate::cycle::{classify, split_runout};
-use crate::diagnostic::Code;
 use crate::dialect::{Dialect, letters};
 use crate::event::Seg;
 use crate::form::Form;
 use crate::gcode::{G, Group};
-use crate::num::fmt;
+use crate::message as msg;
 use crate::settings::P;
 use crate::span::Span;
 use crate::state::{Motion, Tail};
@@ -83,11 +83,7 @@ fn g30(r: &mut Reader, b: &Block, w: &Word) {
         (Some(u), Some(wv)) if u == 0.0 && wv == 0.0 => Tail::None,
         (Some(u), Some(wv)) => Tail::Spiral { u: u.abs(), w: wv.abs() },
         _ => {
-            r.diag(
-                Code::MissingWord,
-                w.span,
-                "G30 takes both U and W (a spiral tail), U0 W0 (no tail) or neither (standard)",
-            );
+            r.diag(&msg::G30_WORDS, w.span, args![]);
             return;
         }
     };
@@ -101,32 +97,21 @@ fn lead(r: &mut Reader, b: &Block, inch: bool) -> Option<f64> {
     let name = if inch { "G32" } else { "G33" };
     let Some(f) = b.get(b'F').copied() else {
         if r.m.lead.is_none() {
-            r.diag(
-                Code::MissingLead,
-                g_span(b),
-                format!("{name} without F: give the {}", if inch { "threads per inch" } else { "pitch" }),
-            );
+            r.diag(if inch { &msg::RENHE_NO_TPI } else { &msg::RENHE_NO_PITCH }, g_span(b), args![name]);
         }
         return r.m.lead;
     };
     let lead = if inch {
         let tpi = if r.s.int(P::RenheInchF) == 0 { fraction_tpi(&f) } else { Some(f.value()) };
         let Some(tpi) = tpi.filter(|t| (3.0..=33.0).contains(t)) else {
-            r.diag(
-                Code::ValueOutOfRange,
-                f.span,
-                format!(
-                    "{}: G32 takes 3..33 threads per inch (F11.2 = 11½; the digit after the point is a denominator)",
-                    f.display()
-                ),
-            );
+            r.diag(&msg::RENHE_TPI_RANGE, f.span, args![word = f]);
             return None;
         };
         25.4 / tpi
     } else {
         let p = f.value();
         if !(0.25..=12.0).contains(&p) {
-            r.diag(Code::ValueOutOfRange, f.span, format!("{}: G33 takes a pitch of 0.25..12 mm", f.display()));
+            r.diag(&msg::RENHE_PITCH_RANGE, f.span, args![word = f]);
             return None;
         }
         p
@@ -156,15 +141,7 @@ fn incremental_only(r: &mut Reader, b: &Block, name: &str) -> bool {
     let mut abs = false;
     for l in [b'X', b'Z'] {
         if let Some(w) = b.get(l) {
-            r.diag(
-                Code::E18_03,
-                w.span,
-                format!(
-                    "E18-03: {name} takes incremental dimensions only; write {} instead of {}",
-                    if l == b'X' { 'U' } else { 'W' },
-                    w.display()
-                ),
-            );
+            r.diag(&msg::E18_03, w.span, args![name, inc = if l == b'X' { 'U' } else { 'W' }, abs = w]);
             abs = true;
         }
     }
@@ -187,20 +164,12 @@ fn thread_block(r: &mut Reader, b: &Block, inch: bool) {
     let w = b.get(b'W').map_or(0.0, |w| w.value());
     if !(w.abs() > u.abs() && w.abs() > 4.0) {
         let span = b.get(b'W').or(b.get(b'U')).map_or(g_span, |w| w.span);
-        r.diag(
-            Code::E18_04,
-            span,
-            format!("E18-04: the thread length |W| = {} must exceed |U| = {} and 4 mm", fmt(w.abs()), fmt(u.abs())),
-        );
+        r.diag(&msg::E18_04, span, args![w = w.abs(), u = u.abs()]);
         r.end_chain();
         return;
     }
     let Some((dir, _)) = r.m.last_x_feed else {
-        r.diag(
-            Code::E18_05,
-            g_span,
-            format!("E18-05: {name} needs an X feed (G00 or G01 with U/X) before it to set the run-out direction"),
-        );
+        r.diag(&msg::E18_05, g_span, args![name]);
         r.end_chain();
         return;
     };
@@ -235,11 +204,7 @@ fn tail(r: &mut Reader, w: f64, span: Span) -> Option<(f64, f64)> {
         return None;
     }
     if k > w.abs() + 1e-9 {
-        r.diag(
-            Code::RunoutTooLong,
-            span,
-            format!("the tail is {} long, more than the thread's |W| = {}", fmt(k), fmt(w.abs())),
-        );
+        r.diag(&msg::TAIL_TOO_LONG, span, args![k, w = w.abs()]);
         return None;
     }
     Some((j, k))
@@ -255,16 +220,7 @@ fn spindle_advice(r: &mut Reader, pitch: f64, span: Span) {
             return;
         }
         r.m.spindle_warned = Some(key);
-        r.diag(
-            Code::SpindleSpeed,
-            span,
-            format!(
-                "S{} is above the advised n ≤ 2300/t − 60 = {} rev/min for a pitch of {} mm: the thread may be damaged",
-                fmt(s),
-                fmt(max.floor()),
-                fmt(pitch)
-            ),
-        );
+        r.diag(&msg::SPINDLE_SPEED, span, args![s, max = max.floor(), pitch]);
     }
 }
 

@@ -3,10 +3,11 @@
 //! unit rule of the controller ([`Unit`], [`super::ThreadRules`]).
 
 use super::{Reader, ThreadRules};
+use crate::args;
 use crate::block::{Block, Word};
 use crate::cycle::schedule::{DminRule, FinishRule};
-use crate::diagnostic::Code;
-use crate::num::{EPS, fmt};
+use crate::message::{self as msg, Arg};
+use crate::num::EPS;
 use crate::settings::P;
 
 use super::reader::g_span;
@@ -34,27 +35,14 @@ pub fn lead(r: &mut Reader, t: &ThreadRules, b: &Block, what: &str) -> Option<f6
     let f = b.get(b'F').copied();
     let i = if t.tpi_word { b.get(b'I').copied() } else { None };
     if let (Some(_), Some(i)) = (f, i) {
-        r.diag(
-            Code::UnexpectedWord,
-            i.span,
-            format!("{what}: give the lead once, F (lead) or I (threads per inch), not both"),
-        );
+        r.diag(&msg::LEAD_TWICE, i.span, args![what]);
         return None;
     }
     let inch = r.m.inch;
     if let Some(f) = f {
         let v = r.length(&f);
         if !(v > 0.0 && v <= max_lead(inch)) {
-            r.diag(
-                Code::ValueOutOfRange,
-                f.span,
-                format!(
-                    "lead {} is outside 0.001..{} {}",
-                    f.display(),
-                    fmt(max_lead(inch)),
-                    if inch { "in" } else { "mm" }
-                ),
-            );
+            r.diag(&msg::LEAD_OUT_OF_RANGE, f.span, args![word = f, max = max_lead(inch), unit = msg::unit(inch)]);
             return None;
         }
         r.m.lead = Some(v);
@@ -62,7 +50,7 @@ pub fn lead(r: &mut Reader, t: &ThreadRules, b: &Block, what: &str) -> Option<f6
     } else if let Some(i) = i {
         let tpi = i.value();
         if !(0.06..=25400.0).contains(&tpi) {
-            r.diag(Code::ValueOutOfRange, i.span, format!("{} threads per inch is outside 0.06..25400", fmt(tpi)));
+            r.diag(&msg::TPI_OUT_OF_RANGE, i.span, args![tpi]);
             return None;
         }
         r.m.lead = Some(if inch { 1.0 / tpi } else { 25.4 / tpi });
@@ -83,42 +71,24 @@ pub fn lead(r: &mut Reader, t: &ThreadRules, b: &Block, what: &str) -> Option<f6
 fn lead_from_feed(r: &mut Reader, b: &Block, what: &str, line: u32, lead: f64) -> Option<()> {
     let span = g_span(b);
     if !(lead > 0.0 && lead <= max_lead(r.m.inch)) {
-        r.diag(
-            Code::MissingLead,
-            span,
-            format!(
-                "{what} has no F, and the F register holds F{} from line {line}, which cannot be a lead; give the lead in this block",
-                fmt(lead)
-            ),
-        );
+        r.diag(&msg::FEED_REGISTER_NOT_A_LEAD, span, args![what, lead, line]);
         return None;
     }
-    r.diag(
-        Code::LeadFromFeed,
-        span,
-        format!(
-            "{what} has no F: the single F register holds F{} from line {line}, a feed rate, so this thread is cut with a lead of {}; give the lead in this block",
-            fmt(lead),
-            fmt(lead)
-        ),
-    );
+    r.diag(&msg::LEAD_FROM_FEED, span, args![what, lead, line]);
     Some(())
 }
 
 #[cold]
 fn missing_lead(r: &mut Reader, t: &ThreadRules, b: &Block, what: &str) {
     let span = g_span(b);
-    let or_tpi = if t.tpi_word { " or I (threads per inch)" } else { "" };
-    let msg = match r.m.feed {
-        Some(feed) if feed > 0.0 && !r.rules.shared_f_register => format!(
-            "{what} without a lead: the feed F{} of line {} is not a lead ({} keeps the thread lead apart); give F (lead){or_tpi}",
-            fmt(feed),
-            r.m.feed_line,
-            short_title(r)
-        ),
-        _ => format!("{what} without a lead: give F (lead){or_tpi}"),
-    };
-    r.diag(Code::MissingLead, span, msg);
+    let or_tpi = if t.tpi_word { &msg::OR_TPI } else { &msg::NOTHING };
+    match r.m.feed {
+        Some(feed) if feed > 0.0 && !r.rules.shared_f_register => {
+            let a = args![what, feed, line = r.m.feed_line, controller = Arg::lit(short_title(r)), or_tpi];
+            r.diag(&msg::MISSING_LEAD_FEED_APART, span, a)
+        }
+        _ => r.diag(&msg::MISSING_LEAD, span, args![what, or_tpi]),
+    }
 }
 
 /// The controller's title up to its model number ("GSK" of "GSK980TDc").
@@ -132,14 +102,7 @@ pub fn start_angle(r: &mut Reader, t: &ThreadRules, q: &Word) -> Option<f64> {
     let deg = match t.angle {
         Unit::IncrementsNoPoint => {
             if q.num.has_point {
-                r.diag(
-                    Code::DecimalPointNotAllowed,
-                    q.span,
-                    format!(
-                        "{}: the start angle is in 0.001° and takes no decimal point (Q180000 = 180°)",
-                        q.display()
-                    ),
-                );
+                r.diag(&msg::START_ANGLE_NO_POINT, q.span, args![word = q]);
                 return None;
             }
             q.value() * 0.001
@@ -153,7 +116,7 @@ pub fn start_angle(r: &mut Reader, t: &ThreadRules, q: &Word) -> Option<f64> {
         }
     };
     if !(0.0..=360.0 + EPS).contains(&deg) {
-        r.diag(Code::ValueOutOfRange, q.span, format!("start angle {} is {}°, outside 0..360°", q.display(), fmt(deg)));
+        r.diag(&msg::START_ANGLE_OUT_OF_RANGE, q.span, args![word = q, deg]);
         return None;
     }
     Some(deg)
@@ -165,15 +128,7 @@ pub fn depth(r: &mut Reader, t: &ThreadRules, w: &Word, what: &str) -> Option<f6
     match t.depth {
         Unit::IncrementsNoPoint => {
             if w.num.has_point {
-                r.diag(
-                    Code::DecimalPointNotAllowed,
-                    w.span,
-                    format!(
-                        "{}: {what} is an integer in least input increments ({} per unit)",
-                        w.display(),
-                        fmt(1.0 / inc)
-                    ),
-                );
+                r.diag(&msg::DEPTH_NO_POINT, w.span, args![word = w, what, per = 1.0 / inc]);
                 return None;
             }
             Some(w.value() * inc)
@@ -183,16 +138,8 @@ pub fn depth(r: &mut Reader, t: &ThreadRules, w: &Word, what: &str) -> Option<f6
                 return Some(w.value());
             }
             if w.num.has_point {
-                r.diag(
-                    Code::DecimalPointIgnored,
-                    w.span,
-                    format!(
-                        "{}: with NO182.7 = 0 {what} is in least input increments whatever the decimal point, so this is {} {}",
-                        w.display(),
-                        fmt(w.value() * inc),
-                        if r.m.inch { "in" } else { "mm" }
-                    ),
-                );
+                let a = args![word = w, what, value = w.value() * inc, unit = msg::unit(r.m.inch)];
+                r.diag(&msg::DEPTH_POINT_IGNORED, w.span, a);
             }
             Some(w.value() * inc)
         }
@@ -211,18 +158,18 @@ pub fn height_and_first_depth(
 ) -> Option<(f64, f64, f64)> {
     let lead = lead(r, t, b, what)?;
     let Some(pk) = b.get(b'P').copied() else {
-        r.diag(Code::MissingThreadHeight, g.span, format!("{what} needs the thread height P(k)"));
+        r.diag(&msg::MISSING_THREAD_HEIGHT, g.span, args![what]);
         return None;
     };
     let Some(qd) = b.get(b'Q').copied() else {
-        r.diag(Code::MissingFirstDepth, g.span, format!("{what} needs the first cut depth Q(Δd)"));
+        r.diag(&msg::MISSING_FIRST_DEPTH, g.span, args![what]);
         return None;
     };
     let k = depth(r, t, &pk, "P(k)")?;
     let dd = depth(r, t, &qd, "Q(Δd)")?;
     let inc = r.s.length_increment(r.m.inch);
-    let ok =
-        r.in_range(&pk, k, inc, 99999.999, "thread height k") && r.in_range(&qd, dd, inc, 99999.999, "first depth Δd");
+    let ok = r.in_range(&pk, k, inc, 99999.999, &msg::THREAD_HEIGHT_K)
+        && r.in_range(&qd, dd, inc, 99999.999, &msg::FIRST_DEPTH);
     ok.then_some((lead, k, dd))
 }
 
@@ -237,14 +184,14 @@ pub fn min_cut_and_allowance(
 ) -> bool {
     if let Some(w) = b.get(b'Q').copied() {
         let Some(v) = depth(r, t, &w, "Q(Δdmin)") else { return false };
-        if !r.in_range(&w, v, 0.0, 99.9999, "Δdmin") {
+        if !r.in_range(&w, v, 0.0, 99.9999, &msg::MIN_DEPTH) {
             return false;
         }
         *dmin = Some(v);
     }
     if let Some(w) = b.get(b'R').copied() {
         let v = r.length(&w);
-        if !r.in_range(&w, v, 0.0, 99.9999, "finishing allowance d") {
+        if !r.in_range(&w, v, 0.0, 99.9999, &msg::FINISH_ALLOWANCE) {
             return false;
         }
         *d = Some(v);

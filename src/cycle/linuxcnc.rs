@@ -20,9 +20,10 @@
 //! to `(Xr, Ze)`. After the last pass the tool goes to the block's end point.
 
 use super::PassPath;
-use crate::diagnostic::{Code, Finding};
+use crate::args;
+use crate::diagnostic::Finding;
+use crate::message::{self as msg, Message};
 use crate::motion::{Move, MoveKind, Point};
-use crate::num::fmt;
 use crate::span::Span;
 use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread, ThreadKind};
 
@@ -196,18 +197,9 @@ fn pt((r, z): (f64, f64)) -> Point {
 /// Plans the cycle: an alarm when it needs more than `limit` passes;
 /// `warn_passes` is the count above which a note says the cycle is long.
 pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Finding> {
-    let depths = g.depths(limit).map_err(|n| {
-        (
-            Code::PassLimit,
-            format!(
-                "G76 needs at least {n} passes (J {}, K {}, R {}, H {}): more than {limit} (setting limits.passes_per_start)",
-                fmt(g.j),
-                fmt(g.k),
-                fmt(g.r),
-                g.h
-            ),
-        )
-    })?;
+    let depths = g
+        .depths(limit)
+        .map_err(|n| Message::new(&msg::LCNC_PASS_LIMIT, args![n, j = g.j, k = g.k, r = g.r, h = g.h, limit]))?;
     let mv = |(kind, a, b): Step| Move { kind, from: pt(a), to: pt(b), line: g.line, span: g.span, arc: None };
     let mut at = (g.x0, g.z0);
     let mut passes = Vec::with_capacity(depths.len());
@@ -289,43 +281,17 @@ fn notes(g: &G76, depths: &[(f64, Role)], warn_passes: usize) -> Vec<Finding> {
     let mut out = Vec::new();
     let (i, k) = (g.i.abs(), g.k.abs());
     if let Some(n) = depths.iter().position(|&(d, role)| role == Role::Rough && (k + i) - (i + d) <= 1e-9 * (k + i)) {
-        out.push((
-            Code::FloatExtraPass,
-            format!(
-                "pass {}: |I| + {}·J = {} is below |I| + K = {} only by floating-point rounding, so LinuxCNC cuts it as a roughing pass at the full depth {} and then cuts the full depth again",
-                n + 1,
-                n + 1,
-                fmt(i + depths[n].0),
-                fmt(k + i),
-                fmt(k)
-            ),
-        ));
+        let a = args![n = n + 1, sum = i + depths[n].0, full = k + i, k];
+        out.push(Message::new(&msg::LCNC_FLOAT_EXTRA_PASS, a));
     }
     let full = g.pass_moves(k, (g.x0, g.z0));
     if (full.to.1 - full.from.1) * g.sense() < -1e-9 {
-        out.push((
-            Code::BackwardCut,
-            format!(
-                "taper length E{} is more than half of the {} between the thread's start and end: the synchronised cut between the tapers runs backwards, from Z{} to Z{}",
-                fmt(g.e),
-                fmt((g.z1 - g.z0).abs()),
-                fmt(full.from.1),
-                fmt(full.to.1)
-            ),
-        ));
+        let a = args![e = g.e, len = (g.z1 - g.z0).abs(), from = full.from.1, to = full.to.1];
+        out.push(Message::new(&msg::LCNC_BACKWARD_CUT, a));
     }
     if depths.len() > warn_passes {
-        out.push((
-            Code::ManyPasses,
-            format!(
-                "G76 cuts {} passes (J {}, K {}, degression R {}, H {}); more than {warn_passes} (setting linuxcnc.pass_warning): a larger J or a smaller R cuts fewer",
-                depths.len(),
-                fmt(g.j),
-                fmt(g.k),
-                fmt(g.r),
-                g.h
-            ),
-        ));
+        let a = args![n = depths.len(), j = g.j, k = g.k, r = g.r, h = g.h, limit = warn_passes];
+        out.push(Message::new(&msg::LCNC_MANY_PASSES, a));
     }
     out
 }
@@ -378,7 +344,7 @@ mod tests {
         assert_eq!(d.len(), 4);
         assert!((d[2].0 - 0.9).abs() < 1e-12 && d[2].1 == Role::Rough);
         let p = plan(&g, 999, 50).unwrap();
-        assert_eq!(p.notes[0].0, Code::FloatExtraPass);
+        assert_eq!(p.notes[0].code(), crate::Code::FloatExtraPass);
     }
 
     /// E2 L3: in-move, entry taper, cut, exit taper (g76-taper-l3).
@@ -395,9 +361,9 @@ mod tests {
     #[test]
     fn pass_limit_and_negative_h() {
         let g = G76 { j: 1e-6, ..straight() };
-        assert_eq!(plan(&g, 999, 50).unwrap_err().0, Code::PassLimit);
+        assert_eq!(plan(&g, 999, 50).unwrap_err().code(), crate::Code::PassLimit);
         let g = G76 { h: i64::MAX, ..straight() };
-        assert_eq!(plan(&g, 999, 50).unwrap_err().0, Code::PassLimit);
+        assert_eq!(plan(&g, 999, 50).unwrap_err().code(), crate::Code::PassLimit);
         let g = G76 { h: -1, ..straight() };
         assert_eq!(g.depths(999).unwrap().len(), 4);
     }

@@ -17,9 +17,11 @@ pub use multi::{Anchor, Multi, MultiPlan};
 
 use glam::DVec2;
 
-use crate::diagnostic::{Code, Finding};
+use crate::args;
+use crate::diagnostic::Finding;
+use crate::message::{self as msg, Message};
 use crate::motion::{Move, MoveKind, Point};
-use crate::num::{EPS, fmt};
+use crate::num::EPS;
 use crate::span::Span;
 use crate::thread::{Axis, ThreadKind};
 
@@ -124,35 +126,17 @@ impl Geometry {
     pub fn new(a: Point, end: Point, i: f64, what: &str) -> Result<Geometry, Finding> {
         let root_start = Point::new(end.x + 2.0 * i, a.z);
         if (end.z - a.z).abs() < EPS {
-            return Err((
-                Code::FaceThreadNotAllowed,
-                format!(
-                    "{what} cuts straight and taper threads along Z only: the end Z is the start Z, which would be a face thread (use G32)"
-                ),
-            ));
+            return Err(Message::new(&msg::FACE_THREAD_CYCLE, args![what]));
         }
         // GSK980TDc manual §3.21.6: when R and U have opposite signs, |R| ≤ |U/2|.
         let half_u = end.r() - a.r();
         if i * half_u < 0.0 && i.abs() > half_u.abs() + EPS {
-            return Err((
-                Code::TaperBeyondStart,
-                format!(
-                    "{what}: taper R{} and U/2 = {} have opposite signs and |R| > |U/2|: the cut would start at X{}, beyond the start point X{}; the manual allows |R| ≤ |U/2|",
-                    fmt(i),
-                    fmt(half_u),
-                    fmt(root_start.x),
-                    fmt(a.x)
-                ),
-            ));
+            let a = args![what, i, half_u, x = root_start.x, ax = a.x];
+            return Err(Message::new(&msg::TAPER_BEYOND_START, a));
         }
         match classify(root_start, end) {
-            None => Err((Code::ZeroLengthThread, format!("{what}: the thread has no length (end Z is the start Z)"))),
-            Some((ThreadKind::Face, _)) | Some((_, Axis::X)) => Err((
-                Code::FaceThreadNotAllowed,
-                format!(
-                    "{what} cuts straight and taper threads along Z only: this thread runs along X (a face or steep thread needs G32)"
-                ),
-            )),
+            None => Err(Message::new(&msg::CYCLE_NO_LENGTH, args![what])),
+            Some((ThreadKind::Face, _)) | Some((_, Axis::X)) => Err(Message::new(&msg::CYCLE_ALONG_X, args![what])),
             Some((kind, Axis::Z)) => {
                 let out = if a.r() >= root_start.r() { 1.0 } else { -1.0 };
                 Ok(Geometry { a, root_start, root_end: end, out, kind, runout: None, screw_in: None })
@@ -206,20 +190,12 @@ impl Geometry {
         let ro = self.runout.map_or(0.0, |r| r.1);
         let shift = shift.max(0.0);
         if si + ro + shift > self.length() + EPS {
-            let flank = if shift > 0.0 {
-                format!(", with passes starting up to {} along the cut,", fmt(shift))
+            let len = self.length();
+            return Err(if shift > 0.0 {
+                Message::new(&msg::ENDS_TOO_LONG_SHIFTED, args![ro, si, shift, len])
             } else {
-                String::new()
-            };
-            return Err((
-                Code::RunoutTooLong,
-                format!(
-                    "run-out {} and screw-in {} together{flank} are longer than the thread's {} of Z",
-                    fmt(ro),
-                    fmt(si),
-                    fmt(self.length())
-                ),
-            ));
+                Message::new(&msg::ENDS_TOO_LONG, args![ro, si, len])
+            });
         }
         Ok(())
     }

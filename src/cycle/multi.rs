@@ -1,8 +1,10 @@
 //! The plan of a multi-pass cycle (G76, G78): every pass of every start.
 
 use super::{Geometry, PassPath, infeed, schedule};
-use crate::diagnostic::{Code, Finding};
-use crate::num::{EPS, fmt};
+use crate::args;
+use crate::diagnostic::Finding;
+use crate::message::{self as msg, Arg, Message};
+use crate::num::EPS;
 use crate::settings::{P, Settings};
 use crate::span::Span;
 use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Source, Spindle, Thread};
@@ -68,24 +70,13 @@ pub fn plan<'a>(m: &'a Multi, s: &Settings) -> Result<(MultiPlan<'a>, Vec<Findin
     let limit = s.int(P::LimitPasses).max(1) as usize;
     let sched = schedule::plan(&m.schedule, limit).map_err(|needed| {
         let sp = &m.schedule;
-        (
-            Code::PassLimit,
-            format!(
-                "the depth schedule needs {} passes per start (k {}, Δd {}, Δdmin {}, d {}): more than {limit} (setting limits.passes_per_start)",
-                if needed == u64::MAX { "too many".to_string() } else { needed.to_string() },
-                fmt(sp.k),
-                fmt(sp.first),
-                fmt(sp.min),
-                fmt(sp.allowance)
-            ),
-        )
+        let needed = if needed == u64::MAX { Arg::Phrase(&msg::TOO_MANY) } else { Arg::from(needed) };
+        let a = args![needed, k = sp.k, dd = sp.first, dmin = sp.min, d = sp.allowance, limit];
+        Message::new(&msg::PASS_LIMIT, a)
     })?;
     let max_starts = s.int(P::LimitStarts).max(1) as u32;
     if m.starts > max_starts {
-        return Err((
-            Code::TooManyStarts,
-            format!("{} starts: at most {max_starts} (setting limits.starts)", m.starts),
-        ));
+        return Err(Message::new(&msg::CYCLE_TOO_MANY_STARTS, args![n = m.starts, limit = max_starts]));
     }
     let k = m.schedule.k;
     let shifts: Vec<(f64, f64)> = sched
@@ -108,14 +99,7 @@ pub fn plan<'a>(m: &'a Multi, s: &Settings) -> Result<(MultiPlan<'a>, Vec<Findin
     let mut warnings = Vec::new();
     let crest_r = m.geom.root_start.r() + m.geom.out * m.schedule.k;
     if (m.geom.a.r() - crest_r) * m.geom.out < -EPS {
-        warnings.push((
-            Code::StartInsideThread,
-            format!(
-                "the start point X{} is inside the thread's crest X{}: the approach rapids through the work",
-                fmt(m.geom.a.x),
-                fmt(2.0 * crest_r)
-            ),
-        ));
+        warnings.push(Message::new(&msg::START_INSIDE_THREAD, args![x = m.geom.a.x, crest = 2.0 * crest_r]));
     }
     let areas = crate::chip::pass_areas(m.angle, &shifts);
     Ok((MultiPlan { m, sched, shifts, lines, areas }, warnings))

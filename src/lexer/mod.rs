@@ -10,9 +10,11 @@ mod source;
 use number::{NumAcc, NumError};
 use source::{Ascii, Ch, OTHER, Src, fold};
 
+use crate::args;
 use crate::block::{Block, BlockKind, Word};
 use crate::controller::Rules;
-use crate::diagnostic::{Code, Diagnostics};
+use crate::diagnostic::Diagnostics;
+use crate::message as msg;
 use crate::span::Span;
 
 /// Limits the lexer enforces (from the settings).
@@ -96,11 +98,7 @@ impl<'a> Lexer<'a> {
 
     fn lex_line(&mut self, line: &str, base: usize, block: &mut Block, diags: &mut Diagnostics) {
         let too_long = |n: usize, diags: &mut Diagnostics, block: &mut Block, limit: usize| {
-            diags.push(
-                Code::BlockTooLong,
-                Span::new(base, base + line.len()),
-                format!("block of {n} characters is longer than the limit of {limit} (setting limits.block_chars); it is skipped"),
-            );
+            diags.push(&msg::BLOCK_TOO_LONG, Span::new(base, base + line.len()), args![n, limit]);
             block.has_error = true;
         };
         if line.is_ascii() {
@@ -200,7 +198,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
                 b')' => {
                     let i = self.i;
                     self.bump();
-                    diags.push(Code::UnmatchedParen, self.span(i, i + 1), "')' without an opening '('");
+                    diags.push(&msg::UNMATCHED_PAREN, self.span(i, i + 1), args![]);
                     block.has_error = true;
                 }
                 b';' => {
@@ -223,14 +221,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
                 }
                 b'#' | b'[' | b']' | b'=' => {
                     let i = self.i;
-                    diags.push(
-                        Code::UnsupportedMacro,
-                        self.span(i, i + 1),
-                        format!(
-                            "'{}': macro variables and expressions are not interpreted; the block is skipped",
-                            c as char
-                        ),
-                    );
+                    diags.push(&msg::UNSUPPORTED_MACRO, self.span(i, i + 1), args![c = c as char]);
                     block.has_error = true;
                     // Skip to the end of the code part of the line.
                     while !matches!(self.peek(), 0 | b';') {
@@ -265,25 +256,15 @@ impl<'c, S: Src> LineLexer<'c, S> {
                     while matches!(self.peek(), b'0'..=b'9' | b'.' | b'+' | b'-') {
                         self.bump();
                     }
-                    diags.push(
-                        Code::UnexpectedCharacter,
-                        self.span(i, self.i),
-                        format!("number '{}' without an address letter", self.slice(i, self.i)),
-                    );
+                    diags.push(&msg::NUMBER_WITHOUT_ADDRESS, self.span(i, self.i), args![text = self.slice(i, self.i)]);
                     block.has_error = true;
                 }
                 _ => {
                     let i = self.i;
                     self.bump();
                     let what = self.slice(i, i + 1);
-                    diags.push(
-                        Code::UnexpectedCharacter,
-                        self.span(i, i + 1),
-                        format!(
-                            "unexpected character '{what}' (U+{:04X})",
-                            what.chars().next().map_or(0, |c| c as u32)
-                        ),
-                    );
+                    let hex = format!("{:04X}", what.chars().next().map_or(0, |c| c as u32));
+                    diags.push(&msg::UNEXPECTED_CHARACTER, self.span(i, i + 1), args![c = what, hex]);
                     block.has_error = true;
                 }
             }
@@ -291,11 +272,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
         if let (Some(a), Some(b)) = (self.first_fold, self.last_fold) {
             let original = &self.text[self.at(a)..self.after(b)];
             let folded: String = original.chars().map(|c| fold(c).map_or(c, |b| b as char)).collect();
-            diags.push(
-                Code::FullWidth,
-                Span::new(self.at(a), self.after(b)),
-                format!("full-width characters read as ASCII: '{original}' as '{folded}'"),
-            );
+            diags.push(&msg::FULL_WIDTH, Span::new(self.at(a), self.after(b)), args![original, folded]);
         }
     }
 
@@ -309,11 +286,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
         loop {
             match self.peek() {
                 0 => {
-                    diags.push(
-                        Code::UnclosedComment,
-                        self.span(open, open + 1),
-                        "comment '(' is not closed on this line",
-                    );
+                    diags.push(&msg::UNCLOSED_COMMENT, self.span(open, open + 1), args![]);
                     return;
                 }
                 b')' => {
@@ -321,11 +294,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
                     return;
                 }
                 b'(' => {
-                    diags.push(
-                        Code::NestedComment,
-                        self.span(self.i, self.i + 1),
-                        "'(' inside a comment: comments do not nest, the comment ends at the first ')'",
-                    );
+                    diags.push(&msg::NESTED_COMMENT, self.span(self.i, self.i + 1), args![]);
                     self.i += 1;
                 }
                 _ => self.i += 1, // comment text is not folded or reported
@@ -345,14 +314,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
             && (c1.is_ascii_digit() || c1 == b'-' || c1 == b'.');
         if looks_like_code {
             let end = self.src.end();
-            diags.push(
-                Code::CodeAfterSemicolon,
-                self.span(j, end),
-                format!(
-                    "'{}' follows ';' (end of block) and is read as a comment, not executed",
-                    self.slice(j, end).trim_end()
-                ),
-            );
+            diags.push(&msg::CODE_AFTER_SEMICOLON, self.span(j, end), args![text = self.slice(j, end).trim_end()]);
         }
     }
 
@@ -372,11 +334,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
             while matches!(self.peek(), b'0'..=b'9' | b'.') {
                 self.bump();
             }
-            diags.push(
-                Code::MalformedProgramNumber,
-                self.span(at, self.i),
-                format!("'{}' is not a program number (O followed by up to four digits)", self.slice(at, self.i)),
-            );
+            diags.push(&msg::MALFORMED_PROGRAM_NUMBER, self.span(at, self.i), args![text = self.slice(at, self.i)]);
             block.has_error = true;
             return;
         }
@@ -409,43 +367,25 @@ impl<'c, S: Src> LineLexer<'c, S> {
         let ne = self.i;
         let span = self.span(start, ne);
         if !known {
-            diags.push(
-                Code::UnknownAddress,
-                self.span(start, start + 1),
-                format!("'{}' is not an address of the {} controller", letter as char, self.rules.title()),
-            );
+            let controller = crate::message::Arg::lit(self.rules.title());
+            diags.push(&msg::UNKNOWN_ADDRESS, self.span(start, start + 1), args![letter = letter as char, controller]);
             block.has_error = true;
             return;
         }
         if ns == ne {
-            diags.push(
-                Code::MissingValue,
-                self.span(start, start + 1),
-                format!("address '{}' has no value", letter as char),
-            );
+            diags.push(&msg::MISSING_VALUE, self.span(start, start + 1), args![letter = letter as char]);
             block.has_error = true;
             return;
         }
         let num = match acc.finish(self.limits.digits) {
             Ok(n) => n,
             Err(NumError::Malformed) => {
-                diags.push(
-                    Code::MalformedNumber,
-                    self.span(ns, ne),
-                    format!("'{}' is not a number", self.slice(ns, ne)),
-                );
+                diags.push(&msg::MALFORMED_NUMBER, self.span(ns, ne), args![text = self.slice(ns, ne)]);
                 block.has_error = true;
                 return;
             }
             Err(NumError::TooManyDigits(n)) => {
-                diags.push(
-                    Code::TooManyDigits,
-                    self.span(ns, ne),
-                    format!(
-                        "{n} significant digits: the controller accepts at most {} (setting limits.digits)",
-                        self.limits.digits
-                    ),
-                );
+                diags.push(&msg::TOO_MANY_DIGITS, self.span(ns, ne), args![n, limit = self.limits.digits]);
                 block.has_error = true;
                 return;
             }
@@ -453,11 +393,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
         let word = Word { letter, num, span };
         if letter == b'$' {
             if let Some(first) = block.spindle {
-                diags.push(
-                    Code::RepeatedWord,
-                    span,
-                    format!("second spindle selection in one block (first at {})", first.display()),
-                );
+                diags.push(&msg::SECOND_SPINDLE, span, args![first]);
                 block.has_error = true;
             } else {
                 block.spindle = Some(word);
@@ -466,11 +402,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
         }
         if letter == b'N' {
             if let Some(first) = block.n {
-                diags.push(
-                    Code::RepeatedWord,
-                    span,
-                    format!("second sequence number in one block (first at {})", first.display()),
-                );
+                diags.push(&msg::SECOND_SEQUENCE_NUMBER, span, args![first]);
                 block.has_error = true;
             } else {
                 block.n = Some(word);
@@ -480,16 +412,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
         if let Some(first) = block.push(word) {
             if letter != b'G' && letter != b'M' {
                 block.words.pop();
-                diags.push(
-                    Code::RepeatedWord,
-                    span,
-                    format!(
-                        "address {} appears twice in one block ({} and {})",
-                        letter as char,
-                        first.display(),
-                        word.display()
-                    ),
-                );
+                diags.push(&msg::REPEATED_ADDRESS, span, args![letter = letter as char, first, second = word]);
                 block.has_error = true;
             }
         }

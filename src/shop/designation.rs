@@ -5,8 +5,10 @@
 //! something else (a tool, an operation, `M03` in a note) and is passed over.
 
 use super::Context;
-use crate::diagnostic::{Code, Diagnostics};
+use crate::args;
+use crate::diagnostic::Diagnostics;
 use crate::figures::DesignationSource;
+use crate::message as msg;
 use crate::settings::T;
 use crate::standard::{self, Designation};
 use crate::thread::Thread;
@@ -91,9 +93,7 @@ pub(super) fn designation(t: &Thread, lower: Option<u32>, ctx: &Context, diags: 
     match standard::parse(text) {
         Ok(d) => Some(Found { d, source: DesignationSource::Setting, line: None }),
         Err(e) => {
-            diags.push_with(Code::BadDesignation, (ctx.spans)(t.line), || {
-                format!("setting thread.designation = '{text}' is not a thread designation: {e}")
-            });
+            diags.push_with(&msg::BAD_DESIGNATION_SETTING, (ctx.spans)(t.line), || args![text, error = e.detail]);
             None
         }
     }

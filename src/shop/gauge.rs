@@ -22,9 +22,10 @@
 use super::Context;
 use super::designation::designation;
 use super::load::{by_start, offset};
-use crate::diagnostic::{Code, Diagnostics};
+use crate::args;
+use crate::diagnostic::Diagnostics;
 use crate::figures::Gauge;
-use crate::num::fmt;
+use crate::message::{self as msg, Arg, Args, Message, Template};
 use crate::settings::P;
 use crate::standard::{self, Designation, Diameters, Kind, Limits, Taper};
 use crate::thread::{Axis, CrestSource, Pass, Thread};
@@ -194,18 +195,14 @@ pub fn check(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnost
     let limits = match standard::limits(&d) {
         Ok(l) => l,
         Err(e) => {
-            diags.push_with(Code::BadDesignation, span, || format!("{}: {e}", d.text.trim()));
+            diags.push_with(&msg::DESIGNATION_WITHOUT_LIMITS, span, || {
+                args![designation = d.text.trim(), error = e.detail]
+            });
             return None;
         }
     };
     let Some(tool) = Tool::of(t, ctx) else {
-        diags.push_with(Code::GaugeFail, span, || {
-            format!(
-                "thread check {}: the tool angle is {}°, so the pitch diameter the program cuts is not known",
-                d.text.trim(),
-                fmt(t.tool_angle)
-            )
-        });
+        diags.push_with(&msg::GAUGE_UNKNOWN_ANGLE, span, || args![designation = d.text.trim(), angle = t.tool_angle]);
         return None;
     };
     let (dm, taper) = dims(&limits, ctx.mm());
@@ -251,41 +248,23 @@ fn match_designation(t: &Thread, d: &Designation, ctx: &Context, g: &mut Gauge) 
     let kind = if t.internal { Kind::Internal } else { Kind::External };
     if d.kind != kind {
         g.ok = false;
-        g.notes.push(format!(
-            "the designation is for an {} thread; the program cuts an {} one",
-            if d.kind == Kind::Internal { "internal" } else { "external" },
-            if t.internal { "internal" } else { "external" }
-        ));
+        let side = |internal: bool| if internal { &msg::INTERNAL } else { &msg::EXTERNAL };
+        note(g, &msg::NOTE_KIND, args![want = side(d.kind == Kind::Internal), got = side(t.internal)]);
     }
     if (d.lead_mm - t.lead * mm).abs() > 1e-6 * d.lead_mm.max(1.0) {
         g.ok = false;
-        g.notes.push(format!(
-            "the program cuts a lead of {} mm; {} has a lead of {} mm",
-            fmt(t.lead * mm),
-            g.designation,
-            fmt(d.lead_mm)
-        ));
+        let a = args![lead = t.lead * mm, designation = g.designation.clone(), want = d.lead_mm];
+        note(g, &msg::NOTE_LEAD, a);
     } else if d.starts != t.starts {
-        g.notes.push(format!(
-            "{} has {} start(s); the program's passes show {} (starts are told apart by their start angle Q/L): checked at the designation's pitch {} mm",
-            g.designation,
-            d.starts,
-            t.starts,
-            fmt(d.pitch_mm)
-        ));
+        let a = args![designation = g.designation.clone(), n = d.starts, m = t.starts, pitch = d.pitch_mm];
+        note(g, &msg::NOTE_STARTS, a);
     }
     if (t.tool_angle - 60.0).abs() > 1e-9 {
         g.ok = false;
-        g.notes.push(format!(
-            "the tool angle is {}°: the standard's flanks are 60°, so the thread will not fit the gauge's flanks",
-            fmt(t.tool_angle)
-        ));
+        note(g, &msg::NOTE_TOOL_ANGLE, args![angle = t.tool_angle]);
     }
     if t.starts > 1 {
-        g.notes.push(format!(
-            "multi-start: pitch = lead / starts = {}; each start checked",
-            fmt(t.lead / f64::from(t.starts))
-        ));
+        note(g, &msg::NOTE_MULTI_START, args![pitch = t.lead / f64::from(t.starts)]);
     }
 }
 
@@ -314,7 +293,7 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         g.ok = false;
     }
     if cut.on_nose {
-        g.notes.push("the pitch line crosses the tool's nose radius: the straight-flank formula overstates d2".into());
+        note(g, &msg::NOTE_ON_NOSE, args![]);
     }
     let outline = t.crest_source == CrestSource::Outline;
     if t.internal {
@@ -322,28 +301,20 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         g.minor_diameter = outline.then_some(t.crest);
         if dm.major.min.is_some_and(|v| cut.root < v - eps) {
             g.ok = false;
-            g.notes.push(format!(
-                "the root X{} is below the major diameter's {}: the GO plug will not enter",
-                fmt(cut.root),
-                fmt(dm.major.min.unwrap_or(0.0))
-            ));
+            note(g, &msg::NOTE_ROOT_BELOW_MAJOR, args![root = cut.root, min = dm.major.min.unwrap_or(0.0)]);
         }
-        crest_check(g, outline, t.crest, dm.minor, "bore (minor diameter)");
+        crest_check(g, outline, t.crest, dm.minor, &msg::BORE);
     } else {
         g.minor_diameter = Some(cut.root);
         g.major_diameter = outline.then_some(t.crest);
         if dm.minor.max.is_some_and(|v| cut.root > v + eps) {
             g.ok = false;
-            g.notes.push(format!(
-                "the root X{} is above the minor diameter's {}: the GO ring gauge's crest will ride on it",
-                fmt(cut.root),
-                fmt(dm.minor.max.unwrap_or(0.0))
-            ));
+            note(g, &msg::NOTE_ROOT_ABOVE_MINOR, args![root = cut.root, max = dm.minor.max.unwrap_or(0.0)]);
         }
         if dm.minor.min.is_some_and(|v| cut.root < v - eps) {
-            g.notes.push(format!("the root X{} is below the minor diameter's {} (a root radius of 0.125·P or more): a larger nose radius (setting tool.nose_radius) would keep it", fmt(cut.root), fmt(dm.minor.min.unwrap_or(0.0))));
+            note(g, &msg::NOTE_ROOT_BELOW_MINOR, args![root = cut.root, min = dm.minor.min.unwrap_or(0.0)]);
         }
-        crest_check(g, outline, t.crest, dm.major, "major diameter");
+        crest_check(g, outline, t.crest, dm.major, &msg::MAJOR);
     }
     if let Some(m) = mid {
         g.delta_x = delta_x(t, tool, pitch, z, &groups[worst], m);
@@ -353,28 +324,24 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         let iso = Tool { r: 0.125 * pitch, ..tool };
         if let Some(c) = envelope(t, &groups[worst], iso, pitch, z, 0.0) {
             let fits = dm.pitch.min.is_none_or(|v| c.d2 >= v - eps) && dm.pitch.max.is_none_or(|v| c.d2 <= v + eps);
-            g.notes.push(format!(
-                "the tool is taken as sharp (tool.nose_radius = 0); a full-profile insert with r = 0.125·P = {} cuts d2 = {}{}",
-                fmt(iso.r),
-                fmt(c.d2),
-                if fits { ", which gauges: set tool.nose_radius to the insert's radius" } else { "" }
-            ));
+            let fits = if fits { &msg::FITS } else { &msg::NOTHING };
+            note(g, &msg::NOTE_SHARP_TOOL, args![r = iso.r, d2 = c.d2, fits]);
         }
     }
     Some(())
 }
 
 /// A turned crest within its limits; a note when the program did not turn it.
-fn crest_check(g: &mut Gauge, turned: bool, crest: f64, lim: standard::Limit, what: &str) {
+fn crest_check(g: &mut Gauge, turned: bool, crest: f64, lim: standard::Limit, what: &'static msg::Phrase) {
     if !turned {
-        g.notes.push(format!("the program does not turn the {what}: not checked"));
+        note(g, &msg::NOTE_CREST_NOT_TURNED, args![what]);
         return;
     }
     let eps = 1e-9;
     if lim.min.is_some_and(|v| crest < v - eps) || lim.max.is_some_and(|v| crest > v + eps) {
         g.ok = false;
-        let show = |v: Option<f64>| v.map_or("—".to_string(), fmt);
-        g.notes.push(format!("the turned {what} X{} is outside {} … {}", fmt(crest), show(lim.min), show(lim.max)));
+        let show = |v: Option<f64>| v.map_or(Arg::lit("—"), Arg::Num);
+        note(g, &msg::NOTE_CREST_OUTSIDE, args![what, crest, min = show(lim.min), max = show(lim.max)]);
     }
 }
 
@@ -409,11 +376,7 @@ fn npt(t: &Thread, tool: Tool, pitch: f64, tp: &Taper, ctx: &Context, g: &mut Ga
     let tol = ctx.settings.get(P::NptTaperTolerance);
     if (taper - tp.taper_on_diameter).abs() > tol + 1e-12 {
         g.ok = false;
-        g.notes.push(format!(
-            "the cut taper is {} on diameter, not 1/16 = 0.0625 (± {}, setting gauge.npt_taper_tolerance)",
-            fmt(taper),
-            fmt(tol)
-        ));
+        note(g, &msg::NOTE_NPT_TAPER, args![taper, tol]);
     }
     let (target, name) = if t.internal { (tp.e1, "E1") } else { (tp.e0, "E0") };
     if (b - a).abs() > 1e-12 {
@@ -421,54 +384,47 @@ fn npt(t: &Thread, tool: Tool, pitch: f64, tp: &Taper, ctx: &Context, g: &mut Ga
         g.gauge_plane_z = Some(z);
         if z < za.min(zb) - 1e-9 || z > za.max(zb) + 1e-9 {
             g.ok = false;
-            g.notes
-                .push(format!("the cut never reaches the pitch diameter {name} = {} within its length", fmt(target)));
+            note(g, &msg::NOTE_NPT_NEVER, args![name = Arg::lit(name), target]);
         }
-        g.notes.push(format!(
-            "NPT has no pitch-diameter class (ASME B1.20.1): the L1 gauge sits where the cut pitch diameter is {name} = {}, at Z{}; the {} must be there within ±1 turn (±{})",
-            fmt(target),
-            fmt(z),
-            if t.internal { "face of the fitting" } else { "end of the pipe" },
-            fmt(pitch)
-        ));
+        let end = if t.internal { &msg::FITTING_FACE } else { &msg::PIPE_END };
+        note(g, &msg::NOTE_NPT_PLANE, args![name = Arg::lit(name), target, z, end, pitch]);
     }
     Some(())
 }
 
 /// The verdict as a diagnostic: `gauge-ok` with the numbers, or `gauge-fail` with the fix.
 fn verdict(t: &Thread, g: &Gauge, span: crate::span::Span, diags: &mut Diagnostics) {
-    let range = match (g.pitch_diameter_min, g.pitch_diameter_max) {
-        (Some(a), Some(b)) => {
-            format!(" ({} … {}{})", fmt(a), fmt(b), g.class.as_deref().map(|c| format!(", {c}")).unwrap_or_default())
-        }
-        _ => String::new(),
-    };
     let x = t.passes.iter().max_by(|a, b| a.depth.total_cmp(&b.depth)).map_or(0.0, |p| p.from.x);
-    let fix =
-        g.delta_x.map(|dx| format!("; ΔX {} (final pass X{}) centres it", fmt(dx), fmt(x + dx))).unwrap_or_default();
-    let notes = if g.notes.is_empty() { String::new() } else { format!("; {}", g.notes.join("; ")) };
-    if g.ok {
-        diags.push_with(Code::GaugeOk, span, || {
-            format!(
-                "thread check {}: pitch diameter {}{range}: it gauges{fix}{notes}",
-                g.designation,
-                fmt(g.pitch_diameter)
-            )
-        });
-    } else {
-        let side = match (g.pitch_diameter_min, g.pitch_diameter_max) {
-            (_, Some(max)) if g.pitch_diameter > max + 1e-9 => " is too large",
-            (Some(min), _) if g.pitch_diameter < min - 1e-9 => " is too small",
-            _ => "",
+    let side = match (g.pitch_diameter_min, g.pitch_diameter_max) {
+        (_, Some(max)) if g.pitch_diameter > max + 1e-9 => &msg::TOO_LARGE,
+        (Some(min), _) if g.pitch_diameter < min - 1e-9 => &msg::TOO_SMALL,
+        _ => &msg::NOTHING,
+    };
+    let (template, side): (&'static Template, _) =
+        if g.ok { (&msg::GAUGE_OK, None) } else { (&msg::GAUGE_FAIL, Some(side)) };
+    diags.push_with(template, span, || {
+        let mut a = args![designation = g.designation.clone(), d2 = g.pitch_diameter];
+        if let Some(side) = side {
+            a = a.with("side", side);
+        }
+        a = match (g.pitch_diameter_min, g.pitch_diameter_max, g.class.as_deref()) {
+            (Some(lo), Some(hi), Some(c)) => {
+                a.with("range", &msg::RANGE_CLASS).with("min", lo).with("max", hi).with("class", c)
+            }
+            (Some(lo), Some(hi), None) => a.with("range", &msg::RANGE).with("min", lo).with("max", hi),
+            _ => a.with("range", &msg::NOTHING),
         };
-        diags.push_with(Code::GaugeFail, span, || {
-            format!(
-                "thread check {}: pitch diameter {}{side}{range}: it will not gauge{fix}{notes}",
-                g.designation,
-                fmt(g.pitch_diameter)
-            )
-        });
-    }
+        a = match g.delta_x {
+            Some(dx) => a.with("fix", &msg::FIX).with("dx", dx).with("x", x + dx),
+            None => a.with("fix", &msg::NOTHING),
+        };
+        a.with("notes", Arg::Notes(g.notes.clone()))
+    });
+}
+
+/// Adds a note to the check.
+fn note(g: &mut Gauge, template: &'static Template, args: Args) {
+    g.notes.push(Message::new(template, args));
 }
 
 #[cfg(test)]

@@ -15,8 +15,9 @@
 
 use super::time::pass_rpm;
 use super::{ClearanceSource, Context, Shop};
-use crate::diagnostic::{Code, Diagnostics};
-use crate::num::fmt;
+use crate::args;
+use crate::diagnostic::Diagnostics;
+use crate::message::{self as msg, Arg};
 use crate::settings::P;
 use crate::span::Span;
 use crate::thread::{Pass, Thread};
@@ -44,15 +45,8 @@ pub fn check(threads: &[Thread], i: usize, ctx: &Context, shop: &mut Shop, diags
     shop.rpm_limit = Some(fits);
     if lead_mm * n > max_feed + 1e-9 {
         let p = &t.passes[fast];
-        diags.push_with(Code::ThreadFeedLimit, cut_span(t, p, ctx), || {
-            format!(
-                "thread feed {} mm/min (lead {} mm × {} rev/min) is above the machine's {} mm/min (setting machine.max_thread_feed): the control would cut the lead wrong; at most S{} fits this lead",
-                fmt(lead_mm * n),
-                fmt(lead_mm),
-                fmt(n),
-                fmt(max_feed),
-                fmt(fits)
-            )
+        diags.push_with(&msg::THREAD_FEED_LIMIT, cut_span(t, p, ctx), || {
+            args![feed = lead_mm * n, lead = lead_mm, n, max = max_feed, fits]
         });
     }
     spindle_checks(t, ctx, diags);
@@ -65,25 +59,14 @@ fn spindle_checks(t: &Thread, ctx: &Context, diags: &mut Diagnostics) {
     let over = t.passes.iter().find(|p| !p.spindle.css && p.spindle.s.is_some_and(|v| v > max + 1e-9));
     if let Some(p) = over {
         let v = p.spindle.s.unwrap_or(0.0);
-        diags.push_with(Code::SpindleLimit, cut_span(t, p, ctx), || {
-            format!(
-                "S{} is above the machine's highest spindle speed of {} rev/min (setting machine.max_rpm)",
-                fmt(v),
-                fmt(max)
-            )
-        });
+        diags.push_with(&msg::SPINDLE_LIMIT, cut_span(t, p, ctx), || args![s = v, max]);
     }
     let css = t.passes.iter().find(|p| p.spindle.css && p.spindle.s.is_some());
     if let Some(p) = css {
         let n = pass_rpm(p, ctx.mm(), ctx.settings).unwrap_or(0.0);
         let unit = if ctx.inch { "ft/min" } else { "m/min" };
-        diags.push_with(Code::ThreadCss, cut_span(t, p, ctx), || {
-            format!(
-                "thread cut under G96 (constant surface speed S{} {unit}): the spindle speed changes with X ({} rev/min at X{}), so the passes need not follow one helix; cut threads under G97 with a fixed S",
-                fmt(p.spindle.s.unwrap_or(0.0)),
-                fmt(n.round()),
-                fmt(p.from.x)
-            )
+        diags.push_with(&msg::THREAD_CSS, cut_span(t, p, ctx), || {
+            args![s = p.spindle.s.unwrap_or(0.0), unit = Arg::lit(unit), n = n.round(), x = p.from.x]
         });
     }
 }
@@ -111,43 +94,25 @@ fn clearances(threads: &[Thread], i: usize, ctx: &Context, n: f64, shop: &mut Sh
     shop.run_out = d2;
     shop.clearance_source = Some(source);
     let span = (ctx.spans)(t.line);
-    let how = |which: &str, setting: &str| match source {
-        ClearanceSource::Outline => format!("the program's {which}"),
-        ClearanceSource::Assumed => format!(
-            "the assumed {which} (the program does not turn the work, so setting {setting}, the textbook's O1006 value, stands in for it)"
-        ),
-    };
-    let words = |v: f64| format!("{} at S{} and lead {}", fmt(v), fmt(n.round()), fmt(t.lead));
-    let slower = |d: f64, need: f64| {
+    let assumed = source == ClearanceSource::Assumed;
+    // The figures both messages give; the lower speed only when one fits.
+    let figures = |d: f64, divisor: f64, need: f64, how: &'static msg::Phrase| {
+        let a = args![d, divisor, need, n = n.round(), lead = t.lead, how, more = (need - d).abs()];
         let fits = (n * d / need).floor();
-        if fits >= 1.0 { format!(" or lower the speed to S{}", fmt(fits)) } else { String::new() }
+        if fits >= 1.0 { a.with("slower", &msg::SLOWER).with("fits", fits) } else { a.with("slower", &msg::NOTHING) }
     };
     if let Some(d1) = d1.filter(|d| *d < need1 - 1e-9) {
-        diags.push_with(Code::Delta1Speed, span, || {
-            format!(
-                "lead-in δ1 = {} is shorter than the δ1 ≈ n·L/{} = {} the axis needs to reach the thread feed ({}): the first turns are cut while it accelerates; start the passes {} earlier{}",
-                fmt(d1),
-                fmt(s.get(P::Delta1Divisor)),
-                words(need1),
-                how("lead-in", "shop.assumed_lead_in"),
-                fmt(need1 - d1),
-                slower(d1, need1)
-            )
+        diags.push_with(&msg::DELTA1_SPEED, span, || {
+            let how = if assumed { &msg::ASSUMED_LEAD_IN } else { &msg::PROGRAM_LEAD_IN };
+            figures(d1, s.get(P::Delta1Divisor), need1, how)
         });
     }
     // A cut that ends inside the turned work (δ2 ≤ 0) ends where the thread is
     // meant to end, which the program does not say: not judged, as the textbook's advice.
     if let Some(d2) = d2.filter(|d| *d > 0.0 && *d < need2 - 1e-9) {
-        diags.push_with(Code::Delta2Speed, span, || {
-            format!(
-                "run-out δ2 = {} is shorter than the δ2 ≈ n·L/{} = {} the axis needs to stop ({}): the last turns are cut while it decelerates; run the passes {} further{}",
-                fmt(d2),
-                fmt(s.get(P::Delta2Divisor)),
-                words(need2),
-                how("run-out", "shop.assumed_run_out"),
-                fmt(need2 - d2),
-                slower(d2, need2)
-            )
+        diags.push_with(&msg::DELTA2_SPEED, span, || {
+            let how = if assumed { &msg::ASSUMED_RUN_OUT } else { &msg::PROGRAM_RUN_OUT };
+            figures(d2, s.get(P::Delta2Divisor), need2, how)
         });
     }
 }

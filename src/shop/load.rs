@@ -9,10 +9,11 @@
 //! left alone.
 
 use super::Context;
-use crate::diagnostic::{Code, Diagnostics};
+use crate::args;
+use crate::diagnostic::Diagnostics;
 use crate::figures::ChipLoad;
 use crate::geom::Frame;
-use crate::num::fmt;
+use crate::message as msg;
 use crate::settings::P;
 use crate::thread::{Role, Thread};
 
@@ -97,24 +98,17 @@ fn advise(t: &Thread, idx: &[usize], loads: &[ChipLoad], ctx: &Context, diags: &
     let mm = ctx.mm();
     let s = ctx.settings;
     let span_of = |k: usize| (ctx.spans)(t.passes[k].lines.iter().copied().find(|l| *l >= t.line).unwrap_or(t.line));
-    let a2 = |v: f64| fmt(v * mm * mm);
+    let a2 = |v: f64| v * mm * mm;
     if let Some(&k) = idx.first() {
         let (l, p) = (&loads[k], &t.passes[k]);
         let ratio = s.get(P::ChipFirstRatio);
         if let (Some(a), Some(e), true) = (l.area, l.even_area, ratio > 0.0) {
             if e > 0.0 && a > ratio * e * (1.0 + 1e-9) {
-                diags.push_with(Code::ChipHeavyFirst, span_of(k), || {
-                    format!(
-                        "pass {} removes {} mm², {}× the {} mm² of a constant-area schedule of {} passes to depth {} (setting chip.first_pass_ratio = {}): a first pass this heavy loads the tool tip most; start at depth {}",
-                        p.index,
-                        a2(a),
-                        fmt(a / e),
-                        a2(e),
-                        idx.iter().filter(|&&k| t.passes[k].role != Role::Spring).count(),
-                        fmt(idx.iter().map(|&k| t.passes[k].depth).fold(0.0, f64::max)),
-                        fmt(ratio),
-                        fmt(l.even_depth.unwrap_or(0.0))
-                    )
+                diags.push_with(&msg::CHIP_HEAVY_FIRST, span_of(k), || {
+                    let count = idx.iter().filter(|&&k| t.passes[k].role != Role::Spring).count();
+                    let depth = idx.iter().map(|&k| t.passes[k].depth).fold(0.0, f64::max);
+                    let start = l.even_depth.unwrap_or(0.0);
+                    args![n = p.index, area = a2(a), ratio = a / e, even = a2(e), count, depth, limit = ratio, start]
                 });
             }
         }
@@ -123,13 +117,8 @@ fn advise(t: &Thread, idx: &[usize], loads: &[ChipLoad], ctx: &Context, diags: &
     if max_area > 0.0 {
         let heavy = idx.iter().find(|&&k| loads[k].area.is_some_and(|a| a * mm * mm > max_area * (1.0 + 1e-9)));
         if let Some(&k) = heavy {
-            diags.push_with(Code::ChipHeavyFirst, span_of(k), || {
-                format!(
-                    "pass {} removes {} mm², more than the tool's {} mm² (setting tool.max_chip_area)",
-                    t.passes[k].index,
-                    a2(loads[k].area.unwrap_or(0.0)),
-                    fmt(max_area)
-                )
+            diags.push_with(&msg::CHIP_OVER_TOOL, span_of(k), || {
+                args![n = t.passes[k].index, area = a2(loads[k].area.unwrap_or(0.0)), max = max_area]
             });
         }
     }
@@ -144,22 +133,9 @@ fn advise(t: &Thread, idx: &[usize], loads: &[ChipLoad], ctx: &Context, diags: &
             None => p.infeed <= 1e-9,
         };
         if removes_nothing {
-            diags.push_with(Code::ChipNone, span_of(k), || {
-                format!(
-                    "pass {} removes nothing: it is no deeper than the passes before it (depth {}), so it only rubs; drop it or make it deeper",
-                    p.index,
-                    fmt(p.depth)
-                )
-            });
+            diags.push_with(&msg::CHIP_NONE, span_of(k), || args![n = p.index, depth = p.depth]);
         } else if p.infeed > 0.0 && p.infeed * mm < min - 1e-9 {
-            diags.push_with(Code::ChipThin, span_of(k), || {
-                format!(
-                    "pass {} deepens the thread by only {} (radial; setting chip.min_infeed = {} mm): so thin a cut rubs and work-hardens rather than cuts",
-                    p.index,
-                    fmt(p.infeed),
-                    fmt(min)
-                )
-            });
+            diags.push_with(&msg::CHIP_THIN, span_of(k), || args![n = p.index, infeed = p.infeed, min]);
         }
     }
 }

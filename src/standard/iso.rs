@@ -4,6 +4,8 @@
 //! 0 marks a grade the standard does not define for that pitch.
 
 use super::{Class, Designation, Diameters, Error, IsoZone, Kind, Limit, Limits, System, Tolerances};
+use crate::args;
+use crate::message as msg;
 
 /// ISO 965-1 pitches, mm; the column order of the pitch-keyed tables.
 const PITCHES: [f64; 25] = [
@@ -220,17 +222,13 @@ struct Tol {
 }
 
 fn tolerances(d: f64, p: f64, kind: Kind, pitch: IsoZone, crest: IsoZone) -> Result<Tol, Error> {
-    let pi = pitch_index(p).ok_or_else(|| {
-        Error::new(format!("pitch {p} mm is not one of the ISO 965-1 pitches (0.2 … 8 mm); no tolerances"))
-    })?;
-    let row = pd_row(d, p).ok_or_else(|| {
-        Error::new(format!("ISO 965-1 tabulates no pitch-diameter tolerance for d = {d} mm with P = {p} mm"))
-    })?;
-    let missing = |what: &str, z: IsoZone| {
-        Error::new(format!("ISO 965-1 defines no {what} for {}{} at P = {p} mm (d = {d} mm)", z.grade, z.position))
+    let pi = pitch_index(p).ok_or_else(|| Error::new(&msg::STD_ISO_PITCH, args![p]))?;
+    let row = pd_row(d, p).ok_or_else(|| Error::new(&msg::STD_ISO_NO_PITCH_TOLERANCE, args![d, p]))?;
+    let missing = |what: &'static msg::Phrase, z: IsoZone| {
+        Error::new(&msg::STD_ISO_UNDEFINED, args![what, zone = format!("{}{}", z.grade, z.position), p, d])
     };
-    let pd_dev = deviation(pitch.position, pi).ok_or_else(|| missing("fundamental deviation", pitch))?;
-    let crest_dev = deviation(crest.position, pi).ok_or_else(|| missing("fundamental deviation", crest))?;
+    let pd_dev = deviation(pitch.position, pi).ok_or_else(|| missing(&msg::FUNDAMENTAL_DEVIATION, pitch))?;
+    let crest_dev = deviation(crest.position, pi).ok_or_else(|| missing(&msg::FUNDAMENTAL_DEVIATION, crest))?;
     let (pd_tol, crest_tol) = match kind {
         Kind::External => {
             let pd = row.2.get(usize::from(pitch.grade).wrapping_sub(3)).copied().and_then(nonzero);
@@ -240,12 +238,12 @@ fn tolerances(d: f64, p: f64, kind: Kind, pitch: IsoZone, crest: IsoZone) -> Res
                 8 => nonzero(TD[2][pi]),
                 _ => None,
             };
-            (pd.ok_or_else(|| missing("Td2", pitch))?, cr.ok_or_else(|| missing("Td", crest))?)
+            (pd.ok_or_else(|| missing(&msg::TD2, pitch))?, cr.ok_or_else(|| missing(&msg::TD, crest))?)
         }
         Kind::Internal => {
             let pd = row.3.get(usize::from(pitch.grade).wrapping_sub(4)).copied().and_then(nonzero);
             let cr = TD1.get(usize::from(crest.grade).wrapping_sub(4)).map(|t| t[pi]).and_then(nonzero);
-            (pd.ok_or_else(|| missing("TD2", pitch))?, cr.ok_or_else(|| missing("TD1", crest))?)
+            (pd.ok_or_else(|| missing(&msg::TD2_INTERNAL, pitch))?, cr.ok_or_else(|| missing(&msg::TD1, crest))?)
         }
     };
     Ok(Tol { pd_dev, crest_dev, pd_tol, crest_tol })
@@ -264,10 +262,10 @@ fn mm(um: i64) -> f64 {
 pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
     let (d, p) = (des.nominal_mm, des.pitch_mm);
     let Some(Class::Iso { pitch, crest }) = des.class else {
-        return Err(Error::new("an ISO metric thread needs an ISO tolerance class such as 6g or 6H"));
+        return Err(Error::new(&msg::STD_ISO_NEEDS_CLASS, args![]));
     };
     if d > 1000.0 {
-        return Err(Error::new(format!("d = {d} mm is outside ISO 965-1 (up to 355 mm tabulated)")));
+        return Err(Error::new(&msg::STD_ISO_TOO_LARGE, args![d]));
     }
     let t = tolerances(d, p, des.kind, pitch, crest)?;
     let basic_pitch = d - 0.649_519 * p;

@@ -68,6 +68,9 @@ mod unified;
 
 use serde::Serialize;
 
+use crate::args;
+use crate::message as msg;
+
 pub use parse::find;
 
 /// Millimetres per inch.
@@ -209,15 +212,19 @@ impl Designation {
 }
 
 /// A designation or limits request that could not be understood or served.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Error {
-    /// What was not understood, in words.
+    /// What was not understood, in words (English).
     pub message: String,
+    /// The same as a message of the catalogue (in any language).
+    #[serde(skip)]
+    pub detail: crate::message::Message,
 }
 
 impl Error {
-    fn new(message: impl Into<String>) -> Error {
-        Error { message: message.into() }
+    fn new(template: &'static crate::message::Template, args: crate::message::Args) -> Error {
+        let detail = crate::message::Message::new(template, args);
+        Error { message: detail.render(crate::message::Lang::En), detail }
     }
 }
 
@@ -345,7 +352,7 @@ pub fn parse(text: &str) -> Result<Designation, Error> {
 /// Computes the limits of size of a designation per its standard.
 pub fn limits(d: &Designation) -> Result<Limits, Error> {
     if !(d.nominal_mm.is_finite() && d.pitch_mm.is_finite() && d.nominal_mm > 0.0 && d.pitch_mm > 0.0) {
-        return Err(Error::new("nominal diameter and pitch must be positive numbers"));
+        return Err(Error::new(&msg::STD_NOT_POSITIVE, args![]));
     }
     match d.system {
         System::IsoMetric => iso::limits(d),

@@ -1,6 +1,8 @@
 //! American taper pipe threads (NPT), ASME B1.20.1 basic dimensions.
 
 use super::{Designation, Diameters, Error, Limit, Limits, MM_PER_INCH, System, Taper, round_to};
+use crate::args;
+use crate::message as msg;
 
 /// Nominal size (in, as a number), outside diameter D (in), threads per
 /// inch, hand-tight engagement L1 (in): ASME B1.20.1 table 2.
@@ -38,7 +40,7 @@ fn l1_of(od: f64) -> Option<f64> {
 /// Basic NPT dimensions; there are no class limits.
 pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
     let d = des.nominal_in.unwrap_or(des.nominal_mm / MM_PER_INCH);
-    let l1 = l1_of(d).ok_or_else(|| Error::new(format!("no NPT size has an outside diameter of {d} in")))?;
+    let l1 = l1_of(d).ok_or_else(|| Error::new(&msg::STD_NO_NPT_SIZE, args![d]))?;
     let p = 1.0 / des.tpi.unwrap_or(MM_PER_INCH / des.pitch_mm);
     let e0 = round_to(d - (0.05 * d + 1.1) * p, 5);
     let l2 = round_to((0.8 * d + 6.8) * p, 4);

@@ -1,6 +1,8 @@
 //! Reading thread designations from free text.
 
 use super::{Class, Designation, Error, IsoZone, Kind, MM_PER_INCH, Series, System, iso, npt, unified};
+use crate::args;
+use crate::message as msg;
 
 /// The medium ISO class (ISO 965-1): 6g external, 6H internal.
 pub(super) fn iso_default(kind: Kind) -> Class {
@@ -22,10 +24,10 @@ fn normalise(text: &str) -> String {
 pub(super) fn parse(text: &str) -> Result<Designation, Error> {
     let s = normalise(text);
     if s.is_empty() {
-        return Err(Error::new("empty designation"));
+        return Err(Error::new(&msg::STD_EMPTY, args![]));
     }
     if !s.is_ascii() {
-        return Err(Error::new(format!("'{s}': unexpected character (only ASCII and × are understood)")));
+        return Err(Error::new(&msg::STD_NOT_ASCII, args![s]));
     }
     let upper = s.to_ascii_uppercase();
     let mut chars = s.chars();
@@ -38,10 +40,7 @@ pub(super) fn parse(text: &str) -> Result<Designation, Error> {
     } else if upper.contains("UN") {
         parse_unified(&s, &upper)
     } else {
-        Err(Error::new(format!(
-            "'{s}' is not a thread designation: expected M<d>[x<P>][-<class>] (ISO metric), \
-             <size>-<tpi> UNC/UNF/UNEF/UN[-<class>] (Unified) or <size>-<tpi> NPT"
-        )))
+        Err(Error::new(&msg::STD_NOT_A_DESIGNATION, args![s]))
     }?;
     Ok(Designation { text: text.to_string(), ..d })
 }
@@ -130,19 +129,15 @@ fn iso_class(c: &mut Cursor) -> Option<Result<(Class, Kind), Error>> {
     let kind = if first.position.is_ascii_lowercase() { Kind::External } else { Kind::Internal };
     let ext = |z: IsoZone| z.position.is_ascii_lowercase();
     if ext(first) != ext(crest) {
-        return Some(Err(Error::new("ISO class mixes external (e f g h) and internal (G H) positions")));
+        return Some(Err(Error::new(&msg::STD_ISO_MIXED, args![])));
     }
     let (pd_ok, crest_ok) = match kind {
         Kind::External => ((3..=9).contains(&first.grade), [4, 6, 8].contains(&crest.grade)),
         Kind::Internal => ((4..=8).contains(&first.grade), (4..=8).contains(&crest.grade)),
     };
     if !pd_ok || !crest_ok {
-        let which = if kind == Kind::External {
-            "external grades are 3–9 for the pitch diameter and 4, 6, 8 for the major diameter"
-        } else {
-            "internal grades are 4–8"
-        };
-        return Some(Err(Error::new(format!("tolerance class not in ISO 965-1: {which}"))));
+        let t = if kind == Kind::External { &msg::STD_ISO_EXTERNAL_GRADES } else { &msg::STD_ISO_INTERNAL_GRADES };
+        return Some(Err(Error::new(t, args![])));
     }
     Some(Ok((Class::Iso { pitch: first, crest }, kind)))
 }
@@ -167,18 +162,16 @@ fn iso_suffixes(c: &mut Cursor, s: &str) -> Result<IsoSuffixes, Error> {
         } else if c.eat_word("RH") {
         } else if let Some(k) = iso_class(c) {
             if class.is_some() {
-                return Err(Error::new(format!(
-                    "'{s}': two tolerance classes (fit designations such as 6H/6g are not read; give one)"
-                )));
+                return Err(Error::new(&msg::STD_TWO_CLASSES, args![s]));
             }
             class = Some(k?);
         } else if let Some(g) = [b'S', b'N', b'L'].into_iter().find(|g| c.s.get(c.i) == Some(g)) {
             c.i += 1;
             notes.push(format!("length of engagement group {} noted; limits do not depend on it", g as char));
         } else if c.peek() == Some(b'/') {
-            return Err(Error::new(format!("'{s}': fit designations such as 6H/6g are not read; give one class")));
+            return Err(Error::new(&msg::STD_FIT, args![s]));
         } else {
-            return Err(Error::new(format!("'{s}': did not understand '{}'", c.rest())));
+            return Err(Error::new(&msg::STD_NOT_UNDERSTOOD, args![s, rest = c.rest()]));
         }
     }
     Ok((class, left_hand, notes))
@@ -187,19 +180,19 @@ fn iso_suffixes(c: &mut Cursor, s: &str) -> Result<IsoSuffixes, Error> {
 /// `M<d>[x<P> | xPh<L>P<P>][-<class>][-LH]`.
 fn parse_iso(s: &str) -> Result<Designation, Error> {
     let mut c = Cursor { s: s.as_bytes(), i: 1 };
-    let d = c.number().ok_or_else(|| Error::new(format!("'{s}': expected the nominal diameter after M")))?;
+    let d = c.number().ok_or_else(|| Error::new(&msg::STD_NO_DIAMETER, args![s]))?;
     c.spaces();
     let (mut pitch, mut lead) = (None, None);
     if c.eat(b'x') {
         c.spaces();
         if c.eat_word("Ph") {
-            lead = Some(c.number().ok_or_else(|| Error::new(format!("'{s}': expected the lead after Ph")))?);
+            lead = Some(c.number().ok_or_else(|| Error::new(&msg::STD_NO_LEAD, args![s]))?);
             c.spaces();
             if !c.eat(b'P') {
-                return Err(Error::new(format!("'{s}': expected P<pitch> after Ph<lead>")));
+                return Err(Error::new(&msg::STD_NO_PITCH_AFTER_LEAD, args![s]));
             }
         }
-        pitch = Some(c.number().ok_or_else(|| Error::new(format!("'{s}': expected the pitch after x")))?);
+        pitch = Some(c.number().ok_or_else(|| Error::new(&msg::STD_NO_PITCH, args![s]))?);
     } else if c.peek() == Some(b'-') {
         // "M8-1.25": pitch after a hyphen, when no class letter follows the number.
         let save = c.i;
@@ -215,13 +208,13 @@ fn parse_iso(s: &str) -> Result<Designation, Error> {
     let pitch = match pitch.or(coarse) {
         Some(p) => p,
         None => {
-            return Err(Error::new(format!("M{d} has no ISO 261 coarse pitch; give the pitch, e.g. M{d}x1.5")));
+            return Err(Error::new(&msg::STD_NO_COARSE_PITCH, args![d]));
         }
     };
     let lead = lead.unwrap_or(pitch);
     let ratio = lead / pitch;
     if (ratio - ratio.round()).abs() > 1e-6 || ratio < 1.0 {
-        return Err(Error::new(format!("'{s}': lead Ph{lead} is not a whole multiple of pitch P{pitch}")));
+        return Err(Error::new(&msg::STD_LEAD_NOT_MULTIPLE, args![s, lead, pitch]));
     }
     let series = if coarse.is_some_and(|p| (p - pitch).abs() < 1e-9) { Series::Coarse } else { Series::Fine };
     let (class, kind, defaulted) = match class {
@@ -297,21 +290,20 @@ fn parse_unified(s: &str, upper: &str) -> Result<Designation, Error> {
     let at = upper.find("UN").unwrap_or(0);
     let end = upper[at..].find(|c: char| !c.is_ascii_alphabetic()).map_or(upper.len(), |e| at + e);
     let word = &upper[at..end];
-    let series = series_of(word).ok_or_else(|| Error::new(format!("'{s}': unknown Unified series '{word}'")))?;
+    let series = series_of(word).ok_or_else(|| Error::new(&msg::STD_UNKNOWN_SERIES, args![s, word]))?;
     // "8UN": a pitch-series prefix glued to UN is dropped.
     let head = s[..at].trim_end_matches(|c: char| c.is_ascii_digit() && !s[..at].trim_end().ends_with('-'));
     let head = if head.trim().is_empty() { &s[..at] } else { head };
-    let (size_text, tpi) =
-        size_and_tpi(head).ok_or_else(|| Error::new(format!("'{s}': could not read the size and threads per inch")))?;
+    let (size_text, tpi) = size_and_tpi(head).ok_or_else(|| Error::new(&msg::STD_NO_SIZE_AND_TPI, args![s]))?;
     let whole: Option<u32> = size_text.trim().parse().ok();
     let d = match (whole, tpi) {
         (Some(n), Some(t)) if unified::is_number_size_pitch(n, t) => unified::number_size(n),
         _ => inch_size(size_text),
     }
-    .ok_or_else(|| Error::new(format!("'{s}': could not read the size '{}'", size_text.trim())))?;
+    .ok_or_else(|| Error::new(&msg::STD_NO_SIZE, args![s, size = size_text.trim()]))?;
     let tpi = match tpi.or_else(|| unified::series_tpi(series, d)) {
         Some(t) if t > 0.0 && t.is_finite() => t,
-        _ => return Err(Error::new(format!("'{s}': give the threads per inch, e.g. 1-8 UN-2A"))),
+        _ => return Err(Error::new(&msg::STD_GIVE_TPI, args![s])),
     };
     let mut notes = Vec::new();
     if let Some(std_tpi) = unified::series_tpi(series, d).filter(|t| (t - tpi).abs() > 1e-9) {
@@ -358,7 +350,7 @@ fn unified_class(tail: &str) -> Result<UnifiedTail, Error> {
             grade = Some(b[0] - b'0');
             kind = Some(if b[1] == b'A' { Kind::External } else { Kind::Internal });
         } else {
-            return Err(Error::new(format!("did not understand '{tok}' (Unified classes are 1A, 2A, 3A, 1B, 2B, 3B)")));
+            return Err(Error::new(&msg::STD_UNIFIED_CLASS, args![tok]));
         }
     }
     Ok((grade, kind, lh))
@@ -369,20 +361,18 @@ fn parse_npt(s: &str, upper: &str) -> Result<Designation, Error> {
     let at = upper.find("NPT").unwrap_or(0);
     let tail = upper[at + 3..].trim();
     if !tail.is_empty() {
-        let what = if tail.starts_with('F') {
-            "NPTF (dryseal, ASME B1.20.3) is not covered".to_string()
+        return Err(if tail.starts_with('F') {
+            Error::new(&msg::STD_NPTF, args![s])
         } else {
-            format!("did not understand '{tail}' after NPT")
-        };
-        return Err(Error::new(format!("'{s}': {what}")));
+            Error::new(&msg::STD_AFTER_NPT, args![s, tail])
+        });
     }
-    let (size_text, tpi) = size_and_tpi(&s[..at])
-        .ok_or_else(|| Error::new(format!("'{s}': could not read the pipe size and threads per inch")))?;
-    let nominal = inch_size(size_text).ok_or_else(|| Error::new(format!("'{s}': could not read the pipe size")))?;
-    let (od, std_tpi) =
-        npt::size(nominal).ok_or_else(|| Error::new(format!("'{s}': {nominal} in is not an NPT size (1/16 … 12)")))?;
+    let (size_text, tpi) =
+        size_and_tpi(&s[..at]).ok_or_else(|| Error::new(&msg::STD_NO_PIPE_SIZE_AND_TPI, args![s]))?;
+    let nominal = inch_size(size_text).ok_or_else(|| Error::new(&msg::STD_NO_PIPE_SIZE, args![s]))?;
+    let (od, std_tpi) = npt::size(nominal).ok_or_else(|| Error::new(&msg::STD_NOT_NPT_SIZE, args![s, nominal]))?;
     if let Some(t) = tpi.filter(|t| (t - std_tpi).abs() > 1e-9) {
-        return Err(Error::new(format!("'{s}': NPT {} has {std_tpi} threads per inch, not {t}", size_text.trim())));
+        return Err(Error::new(&msg::STD_NPT_TPI, args![s, size = size_text.trim(), standard = std_tpi, tpi = t]));
     }
     let pitch = MM_PER_INCH / std_tpi;
     Ok(Designation {

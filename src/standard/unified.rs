@@ -4,6 +4,8 @@
 use super::{
     Class, Designation, Diameters, Error, Kind, Limit, Limits, MM_PER_INCH, Series, System, Tolerances, round_to,
 };
+use crate::args;
+use crate::message as msg;
 
 /// Threads per inch of the coarse (UNC), fine (UNF) and extra-fine (UNEF)
 /// series by basic major diameter, inches (ASME B1.1 table 1); 0 = none.
@@ -159,10 +161,10 @@ fn internal(s: &Sizes, grade: u8, notes: &mut Vec<String>) -> (Diameters, Tolera
 /// ASME B1.1 limits of a Unified designation.
 pub(super) fn limits(des: &Designation) -> Result<Limits, Error> {
     let Some(Class::Unified { grade }) = des.class else {
-        return Err(Error::new("a Unified thread needs a class 1A–3A or 1B–3B"));
+        return Err(Error::new(&msg::STD_UNIFIED_NEEDS_CLASS, args![]));
     };
     if !(1..=3).contains(&grade) {
-        return Err(Error::new(format!("Unified class {grade} does not exist (1, 2 or 3)")));
+        return Err(Error::new(&msg::STD_UNIFIED_NO_GRADE, args![grade]));
     }
     let d = des.nominal_in.unwrap_or(des.nominal_mm / MM_PER_INCH);
     let tpi = des.tpi.unwrap_or(MM_PER_INCH / des.pitch_mm);

@@ -10,6 +10,7 @@ use super::keys::js_key;
 use super::memo::SidePieces;
 use super::pack::Packed;
 use crate::dialect::Dialect;
+use crate::message::Lang;
 use crate::plan::Plan;
 use crate::settings::Settings;
 use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind};
@@ -57,12 +58,12 @@ pub fn settings_from(d: Dialect, lines: &str) -> (Settings, Vec<SettingProblem>)
     (s, problems)
 }
 
-/// A diagnostic with its range in the editor's UTF-16 offsets.
+/// A diagnostic with its range in the editor's UTF-16 offsets and its message in the page's language.
 #[derive(Serialize)]
 pub struct EditorDiagnostic<'a> {
     severity: crate::Severity,
     code: crate::Code,
-    message: &'a str,
+    message: std::borrow::Cow<'a, str>,
     line: u32,
     column: u32,
     end_line: u32,
@@ -71,8 +72,8 @@ pub struct EditorDiagnostic<'a> {
     to: u32,
 }
 
-/// The plan's diagnostics with their ranges in `text`'s UTF-16 offsets.
-pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan) -> Vec<EditorDiagnostic<'a>> {
+/// The plan's diagnostics with their ranges in `text`'s UTF-16 offsets, their messages in `lang`.
+pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan, lang: Lang) -> Vec<EditorDiagnostic<'a>> {
     let bytes: Vec<u32> = plan.diagnostics.iter().flat_map(|d| [d.span.start, d.span.end]).collect();
     let units = super::text::utf16_offsets(text, &bytes);
     plan.diagnostics
@@ -81,7 +82,7 @@ pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan) -> Vec<EditorDiagnosti
         .map(|(d, u)| EditorDiagnostic {
             severity: d.severity,
             code: d.code,
-            message: &d.message,
+            message: d.render(lang),
             line: d.line,
             column: d.column,
             end_line: d.end_line,
@@ -111,14 +112,21 @@ pub struct ThreadSummary {
     height: f64,
     taper: f64,
     passes: u32,
-    /// The shop-floor figures (cycle time, speeds, clearances, chip loads, the thread check).
+    /// The shop-floor figures (cycle time, speeds, clearances, chip loads, the thread check without its notes).
     shop: crate::figures::Shop,
+    /// The thread check's notes in the page's language.
+    notes: Vec<String>,
 }
 
 impl ThreadSummary {
-    /// The summary of `t`.
-    pub fn of(t: &Thread) -> ThreadSummary {
+    /// The summary of `t`, its notes in `lang`.
+    pub fn of(t: &Thread, lang: Lang) -> ThreadSummary {
         let r = crate::num::round_out;
+        let mut shop = t.shop.clone();
+        let notes = match shop.gauge.as_mut() {
+            Some(g) => std::mem::take(&mut g.notes).iter().map(|n| n.render(lang)).collect(),
+            None => Vec::new(),
+        };
         ThreadSummary {
             line: t.line,
             end_line: t.end_line,
@@ -136,7 +144,8 @@ impl ThreadSummary {
             height: r(t.height),
             taper: r(t.taper),
             passes: t.passes.len() as u32,
-            shop: t.shop.clone(),
+            shop,
+            notes,
         }
     }
 }

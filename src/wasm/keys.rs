@@ -281,7 +281,10 @@ fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
         opt(h, v);
     }
     ok.hash(h);
-    notes.hash(h);
+    h.write_usize(notes.len());
+    for n in notes {
+        n.render(crate::message::Lang::En).hash(h);
+    }
 }
 
 /// The key of a run of motions.

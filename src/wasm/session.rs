@@ -20,6 +20,7 @@ use super::memo::SideMemo;
 use super::pack::pack;
 use super::parts::{Known, Part, ThreadsSent, keyed};
 use crate::diagram;
+use crate::message::Lang;
 use crate::plan::Plan;
 use crate::planner::Planner;
 
@@ -35,6 +36,8 @@ struct State {
 #[derive(Default)]
 pub struct Session {
     state: Cell<Option<State>>,
+    /// The language of the messages and notes it answers with.
+    lang: Cell<Lang>,
 }
 
 #[wasm_bindgen]
@@ -88,15 +91,55 @@ impl Session {
         };
         session.planner.plan(text);
         let State { planner, side, threads } = &mut session;
+        let lang = self.lang.get();
         let out = match planner.last() {
-            Some(plan) => answer(text, plan, (side, threads), &problems, (thread, start), known_diagnostics, &known)
-                .map(|o| {
-                    set(&o, "resumedAt", &planner.resumed_at().into());
-                    o.into()
-                }),
+            Some(plan) => {
+                answer(text, plan, (side, threads), &problems, (thread, start, lang), known_diagnostics, &known).map(
+                    |o| {
+                        set(&o, "resumedAt", &planner.resumed_at().into());
+                        o.into()
+                    },
+                )
+            }
             None => Err(err("the planner kept no plan")),
         };
         self.state.set(Some(session));
+        out
+    }
+
+    /// Sets the language (`en` or `zh`; anything else is English) of the
+    /// diagnostics' messages and the thread check's notes in the answers
+    /// from now on. Their keys carry the language, so a caller holding the
+    /// other language's lists is sent new ones.
+    pub fn set_lang(&self, lang: &str) {
+        self.lang.set(Lang::parse(lang).unwrap_or_default());
+    }
+
+    /// The last plan's diagnostics and thread list in the language set
+    /// last, without planning again: `{diagnostics, diagnosticsKey,
+    /// threads, threadsKey}` (the whole list, as [`Session::update`] keys them).
+    pub fn relabel(&self) -> Result<JsValue, JsValue> {
+        let lang = self.lang.get();
+        let mut state = self.state.take();
+        let out = match state.as_mut() {
+            Some(State { planner, threads, .. }) => match planner.last() {
+                Some(plan) => {
+                    let o = Object::new();
+                    set(&o, "diagnosticsKey", &diagnostics_key(plan, lang).into());
+                    set(&o, "diagnostics", &to_js(&editor_diagnostics(planner.text(), plan, lang))?);
+                    let (listed, all) = listed_keys(&PlanKeys::of(plan), lang);
+                    keyed(&o, &Known(Vec::new()), Part::Threads, all, || {
+                        threads.answer(&Known(Vec::new()), all, &listed, |i| {
+                            to_js(&ThreadSummary::of(&plan.threads[i], lang))
+                        })
+                    })?;
+                    Ok(o.into())
+                }
+                None => Err(err("nothing planned yet")),
+            },
+            None => Err(err("nothing planned yet")),
+        };
+        self.state.set(state);
         out
     }
 
@@ -263,15 +306,28 @@ fn pick(plan: &Plan, thread: i32) -> Option<usize> {
     (thread >= 0 && n > 0).then(|| (thread as usize).min(n - 1))
 }
 
-/// The key of the diagnostics by position (line and column, not offset): when
-/// it is unchanged the editor's own diagnostics, mapped through the edit, are current.
-fn diagnostics_key(plan: &Plan) -> f64 {
+/// The key of the diagnostics by position (line and column, not offset) and
+/// language: when it is unchanged the editor's own diagnostics, mapped
+/// through the edit, are current.
+fn diagnostics_key(plan: &Plan, lang: Lang) -> f64 {
     let fields: Vec<(u8, &str, &str, u32, u32, u32, u32)> = plan
         .diagnostics
         .iter()
         .map(|d| (d.severity as u8, d.code.as_str(), d.message.as_str(), d.line, d.column, d.end_line, d.end_column))
         .collect();
-    js_key(key_of(&fields))
+    js_key(key_of(&(lang.name(), fields)))
+}
+
+/// The keys of the listed threads (their notes are in `lang`) and of the list.
+fn listed_keys(keys: &PlanKeys, lang: Lang) -> (Vec<u64>, u64) {
+    match lang {
+        Lang::En => (keys.listed.clone(), keys.all_listed),
+        _ => {
+            let listed: Vec<u64> = keys.listed.iter().map(|k| combine(&[*k, lang as u64 + 1])).collect();
+            let all = combine(&listed);
+            (listed, all)
+        }
+    }
 }
 
 /// Sets the chosen thread, its passes and its tooth and starts scenes on `o`.
@@ -310,7 +366,7 @@ fn answer(
     plan: &Plan,
     (memo, sent): (&mut SideMemo, &mut ThreadsSent),
     problems: &[SettingProblem],
-    (thread, start): (i32, u32),
+    (thread, start, lang): (i32, u32, Lang),
     known_diagnostics: f64,
     known: &Known,
 ) -> Result<Object, JsValue> {
@@ -326,13 +382,15 @@ fn answer(
     let good = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
     set(&o, "good", &good.into());
     set(&o, "settingErrors", &to_js(problems)?);
-    let key = diagnostics_key(plan);
+    let key = diagnostics_key(plan, lang);
     set(&o, "diagnosticsKey", &key.into());
-    let diagnostics = if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan))? };
+    let diagnostics =
+        if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan, lang))? };
     set(&o, "diagnostics", &diagnostics);
     let keys = PlanKeys::of(plan);
-    keyed(&o, known, Part::Threads, keys.all_listed, || {
-        sent.answer(known, keys.all_listed, &keys.listed, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
+    let (listed, all) = listed_keys(&keys, lang);
+    keyed(&o, known, Part::Threads, all, || {
+        sent.answer(known, all, &listed, |i| to_js(&ThreadSummary::of(&plan.threads[i], lang)))
     })?;
     keyed(&o, known, Part::Side, keys.side, || {
         if !known.keeps() {

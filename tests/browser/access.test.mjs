@@ -85,7 +85,8 @@ try {
     await page.click('#program-new');
     await page.waitForTimeout(500);
     await page.locator('.cm-content').click();
-    await page.keyboard.type('G00 X40 Z5\nG32 Z-20 F1.2.3\n');
+    // In one piece: typed key by key, a half-typed F1.2 plans without an alarm and is rightly kept greyed.
+    await page.keyboard.insertText('G00 X40 Z5\nG32 Z-20 F1.2.3\n');
     await page.waitForSelector('#diagnostics li.error', { timeout: 10_000 }).catch(() => {});
     await page.waitForTimeout(300);
     const stale = await page.evaluate(() => ({ banner: !document.getElementById('stale').hidden, table: document.getElementById('passes').classList.contains('stale') }));
@@ -96,8 +97,28 @@ try {
     await page.waitForTimeout(600);
     const zh = await page.evaluate(() => ({ head: document.querySelector('#passes thead').textContent, label: document.getElementById('side').getAttribute('aria-label'), summary: document.getElementById('summary').textContent }));
     check('in Chinese the table, the drawing’s label and the summary are Chinese', zh.head.includes('切深') && zh.label.includes('条螺纹') && zh.summary.includes('条螺纹'), JSON.stringify(zh));
+    // The diagnostics, the editor's lint and the thread's kind follow the language.
+    const words = () =>
+      page.evaluate(() => ({
+        diag: document.querySelector('#diagnostics li')?.textContent || '',
+        kind: document.querySelector('#thread option')?.textContent || '',
+        lint: (window.__screwcut.result?.diagnostics || [])[0]?.message || '',
+      }));
+    const zhWords = await words();
+    check(
+      'in Chinese the first diagnostic and the thread’s kind are Chinese',
+      zhWords.diag.includes('提示') && zhWords.diag.includes('程序没有车出这个螺纹的大径') && zhWords.kind.includes('G32 直螺纹') && zhWords.lint.startsWith('程序没有'),
+      JSON.stringify(zhWords),
+    );
     await page.screenshot({ path: path.join(shots, 'access-zh-1440.png') });
     await page.click('#lang');
+    await page.waitForTimeout(600);
+    const enWords = await words();
+    check(
+      '… and English again after switching back',
+      enWords.diag.includes('the program does not turn this thread’s major diameter'.replace('’', "'")) && enWords.kind.includes('G32 straight') && enWords.lint.startsWith('the program'),
+      JSON.stringify(enWords),
+    );
     await close();
   }
 

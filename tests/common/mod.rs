@@ -53,3 +53,84 @@ pub fn eq(a: f64, b: f64) {
 pub fn pt(p: screwcut::motion::Point, x: f64, z: f64) {
     assert!((p.x - x).abs() < 1e-9 && (p.z - z).abs() < 1e-9, "({}, {}) != ({x}, {z})", p.x, p.z);
 }
+
+/// Checks one diagnostic's message in both languages: its English is the
+/// `message` field; every argument its template (and the phrases given as
+/// arguments) names is supplied, and every argument supplied is named.
+/// Returns the Chinese text.
+pub fn check_languages(d: &Diagnostic) -> String {
+    assert_eq!(d.render(screwcut::message::Lang::En), d.message, "{}", d.template.name);
+    check_message(&screwcut::message::Message::new(d.template, d.args.clone()))
+}
+
+/// [`check_languages`] of a message (a thread check's note): the Chinese text.
+pub fn check_message(m: &screwcut::message::Message) -> String {
+    use screwcut::message::Lang;
+    for lang in [Lang::En, Lang::Zh] {
+        let mut used = std::collections::BTreeSet::new();
+        names_used(m.template.text(lang), &m.args, lang, &mut used);
+        let given: std::collections::BTreeSet<&str> = m.args.0.iter().map(|(n, _)| *n).collect();
+        assert_eq!(used, given, "{} ({}): arguments named and given differ", m.template.name, lang.name());
+    }
+    m.render(Lang::Zh)
+}
+
+/// The argument names `text` uses, with those of the phrases it is given; panics on a name not given.
+fn names_used<'a>(
+    text: &'a str,
+    args: &'a screwcut::message::Args,
+    lang: screwcut::message::Lang,
+    out: &mut std::collections::BTreeSet<&'a str>,
+) {
+    for name in screwcut::message::names(text) {
+        let arg = args.get(name).unwrap_or_else(|| panic!("{{{name}}} of {text:?} is not given"));
+        out.insert(name);
+        if let screwcut::message::Arg::Phrase(p) = arg {
+            names_used(p.text(lang), args, lang, out);
+        }
+    }
+}
+
+/// The words of a Chinese message that are English: ASCII words outside
+/// quotes (“LinuxCNC's message”, 'program text') that are not G-code
+/// words, numbers, units, names of settings, parameters, codes or standards.
+pub fn english_words(zh: &str) -> Vec<String> {
+    const KEPT: &[&str] = &[
+        "mm", "min", "ms", "s", "ISO", "ASME", "NPT", "NPTF", "UN", "UNC", "UNF", "UNEF", "GSK", "Fanuc", "Renhe",
+        "LinuxCNC", "DPI", "IS", "Ph", "Td", "TD", "cos", "tan", "mmrraa", "d", "D", "P", "k", "x", "r", "m", "a", "n",
+        "L", "U", "W", "X", "Z", "Q", "R", "E", "F", "H", "I", "J", "K", "S", "M", "G", "B", "C", "A", "O", "N", "T",
+        "Y", "V",
+    ];
+    let mut out = Vec::new();
+    let mut rest = zh;
+    // Quoted text is the program's or LinuxCNC's own: drop it.
+    let mut plain = String::new();
+    while let Some(i) = rest.find(['“', '\'']) {
+        plain.push_str(&rest[..i]);
+        let close = if rest[i..].starts_with('“') { '”' } else { '\'' };
+        let after = &rest[i + rest[i..].chars().next().map_or(1, char::len_utf8)..];
+        match after.find(close) {
+            Some(j) => rest = &after[j + close.len_utf8()..],
+            None => {
+                rest = "";
+            }
+        }
+    }
+    plain.push_str(rest);
+    for token in plain.split(|c: char| !(c.is_ascii_alphanumeric() || "._#-/Δδα".contains(c))) {
+        let token = token.trim_matches(|c: char| ".-/".contains(c));
+        if token.is_empty()
+            || token.chars().any(|c| c.is_ascii_digit() || !c.is_ascii())
+            || token.contains(['.', '_', '#'])
+        {
+            continue; // a number, a word with its value, a symbol (Δdmin), a setting or parameter name
+        }
+        for word in token.split(['-', '/']) {
+            // A single letter is an address or a symbol (tolerance position e, f, g, h).
+            if word.len() > 1 && !KEPT.contains(&word) && !word.chars().all(|c| c.is_ascii_uppercase()) {
+                out.push(word.to_string());
+            }
+        }
+    }
+    out
+}

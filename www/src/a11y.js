@@ -8,7 +8,7 @@
 //   and a label saying what it shows, in numbers, and how to move it.
 
 import { num } from './table.js';
-import { passLines, passText } from './lists.js';
+import { passLines, passText, threadName } from './lists.js';
 
 /** A live region for short announcements (created once, visually hidden). */
 function liveRegion() {
@@ -78,7 +78,7 @@ export function labelViews(r, ti, st, t) {
   const keys = t('view_keys');
   const c = r && r.passes;
   const passes = c && c.n ? t('alt_passes', { n: c.n, x0: num(c.x[0]), x1: num(c.x[c.n - 1]), z0: num(c.z[0]), z1: num(c.zEnd[0]) }) : '';
-  const thread = th ? t('alt_thread', { i: ti + 1, kind: `${th.source.toUpperCase()} ${th.kind}`, lead: num(th.lead), starts: th.starts }) : '';
+  const thread = th ? t('alt_thread', { i: ti + 1, kind: threadName(th, t), lead: num(th.lead), starts: th.starts }) : '';
   const side = r ? t('alt_side', { threads: r.threads.length, moves: r.moves, alarms: r.alarms }) : '';
   const labels = {
     side: `${t('side')}: ${side}${thread ? ` ${thread}${passes ? `, ${passes}` : ''}.` : ''} ${keys}`,

@@ -85,9 +85,16 @@ export class Engine {
     }
   }
 
+  /** Another language: the drawings' labels, and the last plan's diagnostics and thread list (no new plan). */
   on_lang({ lang }) {
     this.lang = lang === 'zh' ? 'zh' : 'en';
+    this.session.set_lang(this.lang);
     for (const v of Object.values(this.views)) v.draw();
+    if (!this.result) return;
+    const r = this.held.fill(this.session.relabel());
+    this.diagnosticsKey = r.diagnosticsKey;
+    Object.assign(this.result, { diagnostics: r.diagnostics, diagnosticsKey: r.diagnosticsKey, threads: r.threads });
+    this.postResult(this.result, null, null);
   }
 
   /**

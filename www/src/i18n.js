@@ -106,6 +106,9 @@ const EN = {
   info: 'note',
   legend_side: 'cut ─  rapid ╌  run-out/screw-in ┄  finish green · spring violet',
   units: 'units',
+  kind_straight: 'straight',
+  kind_taper: 'taper',
+  kind_face: 'face',
   default: 'default',
   range: 'range',
   // Scene labels.
@@ -249,6 +252,9 @@ const ZH = {
   info: '提示',
   legend_side: '切削 ─  快移 ╌  退尾/旋进 ┄  精车 绿 · 光刀 紫',
   units: '单位',
+  kind_straight: '直螺纹',
+  kind_taper: '锥螺纹',
+  kind_face: '端面螺纹',
   default: '默认',
   range: '范围',
   dia_major: '大径 Ø{}',
@@ -286,6 +292,56 @@ const ZH = {
 };
 
 const TABLES = { en: EN, zh: ZH };
+
+/** The settings' units in Chinese (English shows them as the planner names them). */
+const UNITS_ZH = {
+  '0.1 lead': '0.1 导程',
+  bytes: '字节',
+  characters: '字符',
+  diagnostics: '条',
+  diameter: '直径值',
+  digits: '位',
+  increment: '最小增量',
+  leads: '导程',
+  moves: '段',
+  'on diameter': '(直径上)',
+  passes: '刀',
+  'program unit': '程序单位',
+  'rev/min': 'r/min',
+  spindles: '个主轴',
+  starts: '头',
+  '× even share': '× 等分量',
+  '× pitch': '× 螺距',
+};
+
+/** The settings' choices in Chinese; the value (what the planner reads) stays as it is and is shown after. */
+const CHOICES_ZH = {
+  diameter: '直径',
+  radius: '半径',
+  parameter: '取参数',
+  zero: '取 0',
+  'minus-z': '−Z 侧',
+  'plus-z': '+Z 侧',
+  start: '起点',
+  thread: '成品螺纹',
+  previous: '上次切深 + Δdmin',
+  printed: '手册公式',
+  steps: '首刀切除余量',
+  split: '均分余量',
+  fraction: '分数',
+  decimal: '小数',
+};
+
+/** A setting's unit in the page's language. */
+export function unitText(unit) {
+  return (lang === 'zh' && UNITS_ZH[unit]) || unit;
+}
+
+/** A setting's choice in the page's language (`半径 (radius)`); its value is unchanged. */
+export function choiceText(value) {
+  const zh = lang === 'zh' && CHOICES_ZH[value];
+  return zh ? `${zh} (${value})` : value;
+}
 let lang = 'en';
 
 export function setLang(l) {

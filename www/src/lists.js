@@ -7,6 +7,14 @@ import { esc, num } from './table.js';
 
 const ROLE_NAMES = ['rough', 'finish', 'spring'];
 
+/** The command of each thread source (src/thread.rs `Source`), the same in every language. */
+const SOURCE_CODES = { g32: 'G32', renhe: 'G32/G33', g78: 'G78', g92: 'G92', g76: 'G76', linuxcnc_g33: 'G33', linuxcnc_g76: 'G76' };
+
+/** A thread summary's command and kind in language `t`: `G32 straight`, `G76 锥螺纹`. */
+export function threadName(th, t) {
+  return `${SOURCE_CODES[th.source] || String(th.source).toUpperCase()} ${t(`kind_${th.kind}`)}`;
+}
+
 /** A virtual list in `scroller`: `body` holds the rows; `row(i)` gives one row's HTML. */
 export class VirtualRows {
   /**

@@ -11,7 +11,7 @@ import { Library } from './programs.js';
 import { num, esc } from './table.js';
 import { download, toast } from './pageutil.js';
 import { startEngine } from './client.js';
-import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText } from './lists.js';
+import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText, threadName } from './lists.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { DESIGNATION, renderCheck, bindDesignation } from './check.js';
 import { SettingsPanel } from './settingspanel.js';
@@ -219,7 +219,7 @@ function renderThreads(r, stale) {
   const options = r.threads
     .map((th, i) => {
       const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
-      const text = `${i + 1}: ${th.source.toUpperCase()} ${th.kind} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
+      const text = `${i + 1}: ${threadName(th, t)} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
       return `<option value="${i}">${esc(text)}</option>`;
     })
     .join('');

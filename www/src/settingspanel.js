@@ -4,6 +4,7 @@
 // setting errors shown on their rows.
 
 import { esc, num } from './table.js';
+import { unitText, choiceText } from './i18n.js';
 
 export class SettingsPanel {
   /**
@@ -29,7 +30,7 @@ export class SettingsPanel {
         let input;
         if (s.kind === 'choice') {
           input = `<select id="${id}" data-name="${esc(s.name)}">${s.choices
-            .map((c, i) => `<option value="${esc(c)}"${(v ?? s.choices[s.default]) === c ? ' selected' : ''}>${esc(c)}${i === s.default ? ' *' : ''}</option>`)
+            .map((c, i) => `<option value="${esc(c)}"${(v ?? s.choices[s.default]) === c ? ' selected' : ''}>${esc(choiceText(c))}${i === s.default ? ' *' : ''}</option>`)
             .join('')}</select>`;
         } else if (s.kind === 'bool') {
           const on = v === undefined ? s.default !== 0 : v === '1';
@@ -39,7 +40,7 @@ export class SettingsPanel {
           input = `<input type="number" id="${id}" data-name="${esc(s.name)}" step="${step}" min="${s.min}" max="${s.max}" value="${esc(v ?? s.default)}">`;
         }
         const range = `${t('default')} ${num(s.default)} · ${t('range')} ${num(s.min)}…${num(s.max)}`;
-        return `<div class="setting${v !== undefined ? ' changed' : ''}" data-name="${esc(s.name)}"><label for="${id}">${esc(s.name)} ${input} <span class="unit">${esc(s.unit)}</span></label><div class="help" title="${esc(range)}">${esc(zh ? s.help_zh : s.help)} <span class="unit">(${esc(range)})</span></div><div class="err"></div></div>`;
+        return `<div class="setting${v !== undefined ? ' changed' : ''}" data-name="${esc(s.name)}"><label for="${id}">${esc(s.name)} ${input} <span class="unit">${esc(unitText(s.unit))}</span></label><div class="help" title="${esc(range)}">${esc(zh ? s.help_zh : s.help)} <span class="unit">(${esc(range)})</span></div><div class="err"></div></div>`;
       })
       .join('');
   }

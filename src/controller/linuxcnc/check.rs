@@ -5,8 +5,9 @@
 //! installed `librs274`), each after the word it is about.
 
 use super::{Reader, g_word_span};
+use crate::args;
 use crate::block::{Block, Word};
-use crate::diagnostic::Code;
+use crate::message::{self as msg, Arg};
 
 /// Checks `b`, whose motion (×10) is `motion`; false after an alarm.
 pub fn block(r: &mut Reader, b: &Block, motion: Option<i64>) -> bool {
@@ -18,16 +19,12 @@ fn integers(r: &mut Reader, b: &Block) -> bool {
     for w in b.words.iter().filter(|w| matches!(w.letter, b'H' | b'L')) {
         let v = w.value();
         if v - v.floor() > 1e-4 && v.ceil() - v > 1e-4 {
-            let what = if w.letter == b'H' { "the spring pass count H" } else { "L" };
-            r.diag(
-                Code::ValueOutOfRange,
-                w.span,
-                format!("{}: Non integer value for integer ({what} is a whole number)", w.display()),
-            );
+            let what = if w.letter == b'H' { &msg::SPRING_COUNT_H } else { &msg::L_WORD };
+            r.diag(&msg::LCNC_NON_INTEGER, w.span, args![word = w, what]);
             return false;
         }
         if w.letter == b'L' && v.round() < 0.0 {
-            r.diag(Code::ValueOutOfRange, w.span, format!("{}: Negative l word used", w.display()));
+            r.diag(&msg::LCNC_NEGATIVE_L, w.span, args![word = w]);
             return false;
         }
     }
@@ -39,11 +36,7 @@ fn axes(r: &mut Reader, b: &Block) -> bool {
     for w in b.all(b'G') {
         let code = (w.value() * 10.0).round() as i64;
         if matches!(code, 330 | 331 | 760) && !r.has_axes(b) {
-            r.diag(
-                Code::MissingWord,
-                w.span,
-                format!("{}: All axes missing with motion code (give the end point: X, Z)", w.display()),
-            );
+            r.diag(&msg::LCNC_ALL_AXES_MISSING, w.span, args![word = w]);
             return false;
         }
     }
@@ -131,27 +124,23 @@ fn other_codes(r: &mut Reader, b: &Block, mo: i64) -> bool {
     for (letter, message) in WORDS {
         if let Some(w) = word(b, letter) {
             if !used(letter, mo, &c) {
-                r.diag(Code::UnexpectedWord, w.span, format!("{}: {message}", w.display()));
+                r.diag(&msg::LCNC_WORD_UNUSED, w.span, args![word = w, message = Arg::lit(message)]);
                 return false;
             }
         }
     }
     if c.g(&[960]) && !b.has(b'S') {
-        r.diag(Code::MissingWord, g_word_span(b, 960), "S word missing with G96 (the surface speed)");
+        r.diag(&msg::LCNC_S_MISSING_G96, g_word_span(b, 960), args![]);
         return false;
     }
     let span = g_word_span(b, mo);
     if mo == 330 || mo == 331 {
         if !b.has(b'K') {
-            r.diag(
-                Code::MissingLead,
-                span,
-                "K word missing with g33/g33.1: every G33 block gives K, the distance along the move per revolution",
-            );
+            r.diag(&msg::LCNC_K_MISSING_G33, span, args![]);
             return false;
         }
         if let Some(f) = b.get(b'F') {
-            r.diag(Code::UnexpectedWord, f.span, format!("{}: F word used with a g33/g33.1", f.display()));
+            r.diag(&msg::LCNC_F_WITH_G33, f.span, args![word = f]);
             return false;
         }
     }
@@ -164,26 +153,16 @@ fn other_codes(r: &mut Reader, b: &Block, mo: i64) -> bool {
 /// G76 needs P (P−1 is the interpreter's "no P") and I, J, K.
 fn g76_words(r: &mut Reader, b: &Block, span: crate::span::Span) -> bool {
     if b.get(b'P').is_none_or(|p| p.value() == -1.0) {
-        let why = if b.has(b'P') { " (P-1 is the interpreter's value for no P)" } else { "" };
-        r.diag(
-            Code::MissingLead,
-            span,
-            format!("P word missing with G76{why}: every G76 block gives the pitch P, and I, J, K"),
-        );
+        let t = if b.has(b'P') { &msg::LCNC_P_MINUS_ONE_G76 } else { &msg::LCNC_P_MISSING_G76 };
+        r.diag(t, span, args![]);
         return false;
     }
-    let missing = [(b'I', Code::MissingWord), (b'J', Code::MissingFirstDepth), (b'K', Code::MissingThreadHeight)]
-        .into_iter()
-        .find(|(l, _)| !b.has(*l));
-    if let Some((letter, code)) = missing {
-        r.diag(
-            code,
-            span,
-            format!(
-                "I J or K words missing with G76 ({} is missing: I the peak offset, J the first depth, K the thread depth)",
-                letter as char
-            ),
-        );
+    let missing =
+        [(b'I', &msg::LCNC_I_MISSING_G76), (b'J', &msg::LCNC_J_MISSING_G76), (b'K', &msg::LCNC_K_MISSING_G76)]
+            .into_iter()
+            .find(|(l, _)| !b.has(*l));
+    if let Some((letter, t)) = missing {
+        r.diag(t, span, args![letter = letter as char]);
         return false;
     }
     true

@@ -4,14 +4,14 @@
 //! block (checked before); consecutive G33 blocks make a continuous thread.
 
 use super::{Reader, g_word_span, plane_warning, spindle_number};
+use crate::args;
 use crate::block::Block;
 use crate::controller::g32;
 use crate::cycle::classify;
-use crate::diagnostic::Code;
 use crate::event::{Event, Seg};
 use crate::geom::Frame;
+use crate::message::{self as msg, Arg};
 use crate::motion::{Move, MoveKind};
-use crate::num::fmt;
 use crate::state::once;
 use crate::thread::{Source, ThreadKind};
 
@@ -22,7 +22,7 @@ pub fn block(r: &mut Reader, b: &Block) {
         return r.end_chain();
     }
     if !r.m.spindle_on {
-        r.diag(Code::SpindleNotTurning, g, "Spindle not turning in G33: start the spindle with M3 or M4 first");
+        r.diag(&msg::LCNC_SPINDLE_NOT_TURNING_G33, g, args![]);
         return r.end_chain();
     }
     plane_warning(r, g, "G33");
@@ -36,19 +36,8 @@ pub fn block(r: &mut Reader, b: &Block) {
         return r.end_chain();
     };
     if k <= 0.0 {
-        r.diag(
-            Code::OddPitch,
-            kw.span,
-            format!(
-                "{}: LinuxCNC passes a K of zero or below on as the spindle sync ratio; {}",
-                kw.display(),
-                if k == 0.0 {
-                    "with K0 the axes would wait for a spindle that never moves them: the move is drawn, but no thread"
-                } else {
-                    "a negative ratio runs the axes against the spindle: the thread is drawn with |K|"
-                }
-            ),
-        );
+        let what = if k == 0.0 { &msg::K_ZERO } else { &msg::K_NEGATIVE };
+        r.diag(&msg::LCNC_ODD_K, kw.span, args![word = kw, what]);
     }
     if k == 0.0 || !k.is_finite() {
         r.end_chain();
@@ -66,17 +55,8 @@ pub fn block(r: &mut Reader, b: &Block) {
     let along = Frame(long).travel(start, end).abs() / start.dist(end);
     let lead = k.abs() * along;
     if kind == ThreadKind::Taper && r.m.first(once::LEAD_ALONG_PATH) {
-        r.diag(
-            Code::LeadAlongPath,
-            kw.span,
-            format!(
-                "{}: G33 K is the distance along the move per revolution, so on this taper the tool advances {} per revolution along {} (K·cos α, α = {}° from the axis); G32's F would give the lead along the long axis",
-                kw.display(),
-                fmt(lead),
-                if long == crate::thread::Axis::Z { "Z" } else { "X" },
-                fmt(along.acos().to_degrees())
-            ),
-        );
+        let axis = Arg::lit(if long == crate::thread::Axis::Z { "Z" } else { "X" });
+        r.diag(&msg::LCNC_LEAD_ALONG_PATH, kw.span, args![word = kw, lead, axis, alpha = along.acos().to_degrees()]);
     }
     let tool_angle = r.param(crate::settings::P::LinuxToolAngle);
     let seg = Seg { from: start, to: end, runout_to: None, kind, long };

@@ -20,6 +20,7 @@
 mod helpers;
 mod incremental;
 mod input;
+mod lang;
 mod plans;
 mod scenes;
 mod tools;

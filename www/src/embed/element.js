@@ -28,7 +28,7 @@ import { SceneView } from '../sceneview.js';
 import { bindCanvas } from '../input.js';
 import { textIn, labelIn } from '../i18n.js';
 import { esc, num } from '../table.js';
-import { VirtualRows, passHead, passRow, passObjects } from '../lists.js';
+import { VirtualRows, passHead, passRow, passObjects, threadName } from '../lists.js';
 import { jsonFragment, knownDialect, DEFAULT_DIALECT } from '../fragment.js';
 import { HERE, loadCore, startWhenVisible, forget, fetchProgram } from './core.js';
 import { HeldParts } from '../parts.js';
@@ -295,6 +295,7 @@ export class ScrewcutPreview extends HTMLElement {
     const thread = this._thread ?? parseThread(this.getAttribute('thread'));
     let r;
     try {
+      this._session.set_lang(this._lang());
       r = this._held.fill(this._session.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
     } catch (e) {
       this._held.clear();
@@ -377,7 +378,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._sum.textContent = sum;
     this._sum.classList.toggle('stale', stale || r.alarms > 0);
     const options = r.threads
-      .map((x, i) => `<option value="${i}">${i + 1}: ${esc(x.source.toUpperCase())} ${esc(x.kind)} · ${esc(labelIn(this._lang(), 'lead', num(x.lead)))} · L${x.line}–${x.end_line}</option>`)
+      .map((x, i) => `<option value="${i}">${i + 1}: ${esc(threadName(x, (k) => this._t(k)))} · ${esc(labelIn(this._lang(), 'lead', num(x.lead)))} · L${x.line}–${x.end_line}</option>`)
       .join('');
     if (this._select.dataset.html !== options) {
       this._select.innerHTML = options;

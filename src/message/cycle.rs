@@ -1,0 +1,44 @@
+//! Planning cycles and grouping passes: the cycles' geometry, run-out and
+//! screw-in, the depth schedule, starts and the motion limit.
+
+use super::{phrases, templates};
+
+templates! {
+    FACE_THREAD_CYCLE = FaceThreadNotAllowed:
+        "{what} cuts straight and taper threads along Z only: the end Z is the start Z, which would be a face thread (use G32)",
+        "{what} 只能沿 Z 向切削直螺纹和锥螺纹：终点 Z 等于起点 Z，那是端面螺纹（请用 G32）";
+    TAPER_BEYOND_START = TaperBeyondStart:
+        "{what}: taper R{i} and U/2 = {half_u} have opposite signs and |R| > |U/2|: the cut would start at X{x}, beyond the start point X{ax}; the manual allows |R| ≤ |U/2|",
+        "{what}：锥度 R{i} 与 U/2 = {half_u} 符号相反且 |R| > |U/2|：切削将从 X{x} 开始，超出起点 X{ax}；说明书规定 |R| ≤ |U/2|";
+    CYCLE_NO_LENGTH = ZeroLengthThread:
+        "{what}: the thread has no length (end Z is the start Z)",
+        "{what}：螺纹长度为零（终点 Z 等于起点 Z）";
+    CYCLE_ALONG_X = FaceThreadNotAllowed:
+        "{what} cuts straight and taper threads along Z only: this thread runs along X (a face or steep thread needs G32)",
+        "{what} 只能沿 Z 向切削直螺纹和锥螺纹：这个螺纹沿 X 方向（端面螺纹或大锥度螺纹需用 G32）";
+    ENDS_TOO_LONG = RunoutTooLong:
+        "run-out {ro} and screw-in {si} together are longer than the thread's {len} of Z",
+        "退尾 {ro} 与切入 {si} 之和超过螺纹的 Z 向长度 {len}";
+    ENDS_TOO_LONG_SHIFTED = RunoutTooLong:
+        "run-out {ro} and screw-in {si} together, with passes starting up to {shift} along the cut, are longer than the thread's {len} of Z",
+        "退尾 {ro} 与切入 {si} 之和（各刀起点沿切削方向最多错开 {shift}）超过螺纹的 Z 向长度 {len}";
+    PASS_LIMIT = PassLimit:
+        "the depth schedule needs {needed} passes per start (k {k}, Δd {dd}, Δdmin {dmin}, d {d}): more than {limit} (setting limits.passes_per_start)",
+        "切深分配每头需要 {needed} 刀（k {k}，Δd {dd}，Δdmin {dmin}，d {d}）：超过 {limit} 刀（设置 limits.passes_per_start）";
+    CYCLE_TOO_MANY_STARTS = TooManyStarts:
+        "{n} starts: at most {limit} (setting limits.starts)",
+        "{n} 头：最多 {limit} 头（设置 limits.starts）";
+    START_INSIDE_THREAD = StartInsideThread:
+        "the start point X{x} is inside the thread's crest X{crest}: the approach rapids through the work",
+        "起点 X{x} 在螺纹牙顶 X{crest} 以内：快速接近时会穿过工件";
+    TOO_MANY_STARTS = TooManyStarts:
+        "{n} starts (distinct start angles Q): at most {limit} (setting limits.starts)",
+        "{n} 头（不同的起始角 Q）：最多 {limit} 头（设置 limits.starts）";
+    MOVE_LIMIT = MoveLimit:
+        "more than {limit} motions (setting limits.moves): the rest of the program is not drawn",
+        "运动超过 {limit} 段（设置 limits.moves）：程序其余部分不绘制";
+}
+
+phrases! {
+    TOO_MANY: "too many", "过多";
+}
