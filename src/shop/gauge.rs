@@ -115,18 +115,30 @@ fn envelope(t: &Thread, idx: &[usize], tool: Tool, pitch: f64, z: f64, dx: f64) 
         left.push(l);
         right.push(r);
     }
-    let width = |at: f64| match tips.partition_point(|t| t.0 <= at) {
-        0 => 0.0,
-        k => (right[k - 1] - left[k - 1] + 2.0 * at * tool.tan).max(0.0),
-    };
-    // The space widens with height: bisect for the height where it is P/2 wide.
-    let (mut lo, mut hi) = (y0, top);
-    for _ in 0..100 {
-        let mid = (lo + hi) / 2.0;
-        if width(mid) < pitch / 2.0 { lo = mid } else { hi = mid }
-    }
-    let y = (lo + hi) / 2.0;
+    let y = pitch_height(&tips, &left, &right, tool.tan, pitch / 2.0, top);
     Some(Cut { d2: 2.0 * sigma * y, root: 2.0 * sigma * root, on_nose: y - y0 < tool.tangent_height() - 1e-12 })
+}
+
+/// The lowest height at which the space between the tips (sorted by height
+/// `y`, with the prefix extremes `left` and `right` of their edges) is
+/// `half` wide, at most `top`. Between two tip heights the width grows
+/// linearly, c + 2·h·tan, and it jumps up where a tip joins: the first piece
+/// that reaches `half` holds the answer.
+fn pitch_height(tips: &[(f64, f64)], left: &[f64], right: &[f64], tan: f64, half: f64, top: f64) -> f64 {
+    for k in 1..=tips.len() {
+        let (lo, hi) = (tips[k - 1].0, tips.get(k).map_or(top, |t| t.0));
+        let c = right[k - 1] - left[k - 1];
+        if c + 2.0 * lo * tan >= half {
+            return lo;
+        }
+        if tan > 0.0 {
+            let at = (half - c) / (2.0 * tan);
+            if at < hi {
+                return at;
+            }
+        }
+    }
+    top
 }
 
 /// The passes of each start that has some.
