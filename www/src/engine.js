@@ -19,8 +19,12 @@ export class Engine {
    * @param core the initialised wasm module (`Session`, `scene_layout`, `style_names`, …)
    * @param post `post(message, transfer)` to the page
    * @param afterCommit runs a function once the current frame is on screen
+   * @param opts `{immediate}`: draw a plan's views at once rather than at the
+   *   next animation frame (in a worker, whose canvases show what was drawn
+   *   when its task ends; pan and zoom still draw at animation frames)
    */
-  constructor(core, post, afterCommit) {
+  constructor(core, post, afterCommit, opts = {}) {
+    this.immediate = !!opts.immediate;
     this.core = core;
     this.post = post;
     this.afterCommit = afterCommit;
@@ -122,6 +126,7 @@ export class Engine {
     this.apply(r);
     if (input !== undefined && input !== null) this.pendingFrame = { seq, input };
     this.postResult(r, seq, { plan: t1 - t0, views: performance.now() - t1 });
+    if (this.immediate) for (const v of Object.values(this.views)) v.flush();
     this.maybeFrameNow();
   }
 
@@ -272,7 +277,7 @@ export class Engine {
 
   /**
    * For tests and benchmarks: `view` (what view `name` shows), `pixels`
-   * (the inked pixels of its canvas), `labels` (its labels as placed), `svg_layout` (what its SVG export
+   * (the inked pixels of its canvas), `draws` (each view's last drawing time, ms), `labels` (its labels as placed), `svg_layout` (what its SVG export
    * is drawn with: `screwcut svg --layout`), `layout`, `result` (keys and thread
    * list of the last answer), `same_as_full` (whether the side section shown
    * equals a full build), `transfer` (the cost of a side scene as typed
@@ -297,6 +302,7 @@ export class Engine {
         for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && (d[i] < 235 || d[i + 1] < 235 || d[i + 2] < 235)) n++;
         return { n, w: c.width, h: c.height };
       },
+      draws: () => Object.fromEntries(Object.entries(this.views).map(([k, view]) => [k, view.lastDraw])),
       layout: () => this.core.scene_layout(),
       labels: () => v && v.labels(),
       svg_layout: () => v && v.svgLayout(),

@@ -164,7 +164,7 @@ function onResult(m) {
   const t1 = performance.now();
   if (m.timing) {
     const total = inFlight && inFlight.seq === m.seq ? performance.now() - inFlight.t0 : null;
-    probe.updates.push({ seq: m.seq, ...m.timing, lists: t1 - t0, total, lines: editor.view.state.doc.lines, resumedAt: r.resumedAt });
+    probe.updates.push({ seq: m.seq, ...m.timing, lists: t1 - t0, total, lines: editor.view.state.doc.lines, resumedAt: r.resumedAt, sent: inFlight?.t0, received: t0 });
     if (probe.updates.length > 200) probe.updates.shift();
     setText($('timing'), t('timing', { plan: m.timing.plan.toFixed(1), draw: m.timing.views.toFixed(1) }));
   }
@@ -255,7 +255,12 @@ function renderThreads(r, stale) {
   passRows.set(order.length, (k, hot) => passRow(c, order[k], t, hot, stale));
 }
 
+/** The diagnostics list as last rendered: the same list, filter and language render nothing. */
+let rendered = { list: null, severities: null, lang: null };
+
 function renderDiagnostics(list) {
+  if (list === rendered.list && severities === rendered.severities && getLang() === rendered.lang) return;
+  rendered = { list, severities, lang: getLang() };
   const shown = list.map((d, i) => [d, i]).filter(([d]) => severities.has(d.severity));
   diagnosticsShown = shown;
   const MAX = 2000;

@@ -158,9 +158,17 @@ export class SceneView {
     if (this.queued) return;
     this.queued = true;
     nextFrame(() => {
+      if (!this.queued) return; // drawn already by flush()
       this.queued = false;
       this.drawNow();
     });
+  }
+
+  /** Draws now what draw() queued (a worker's canvas shows it when the task ends). */
+  flush() {
+    if (!this.queued) return;
+    this.queued = false;
+    this.drawNow();
   }
 
   drawNow() {

@@ -16,7 +16,7 @@ self.onmessage = async (e) => {
     try {
       await init({ module_or_path: m.wasm });
       // In a worker a drawing is on screen once the animation frame that drew it returns.
-      engine = new Engine(core, post, (f) => f());
+      engine = new Engine(core, post, (f) => f(), { immediate: true });
       post({ type: 'ready', dialects: core.dialects() });
       for (const q of queue.splice(0)) engine.handle(q);
     } catch (err) {
