@@ -9,7 +9,7 @@ import { t, label, setLang, getLang } from './i18n.js';
 import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
 import { Library } from './programs.js';
 import { num, esc } from './table.js';
-import { download, toast } from './pageutil.js';
+import { download, toast, shareLink } from './pageutil.js';
 import { startEngine } from './client.js';
 import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText, threadName } from './lists.js';
 import { bindListKeys, labelViews } from './a11y.js';
@@ -392,17 +392,6 @@ async function setDialect(name, plan = true) {
   if (plan) replan();
 }
 
-async function share() {
-  const url = `${location.origin}${location.pathname}${encodeFragment(state)}`;
-  history.replaceState(null, '', url);
-  try {
-    await navigator.clipboard.writeText(url);
-    toast(t('shared'));
-  } catch {
-    toast(t('share_failed'));
-  }
-}
-
 function bindViewBar(panelId, name) {
   $(panelId)
     .querySelector('.bar')
@@ -542,7 +531,7 @@ function finishSetup() {
     $('settings').hidden = !$('settings').hidden;
     $('settings-toggle').setAttribute('aria-pressed', String(!$('settings').hidden));
   });
-  $('share').addEventListener('click', share);
+  $('share').addEventListener('click', () => shareLink(encodeFragment(state), t));
   $('plan-json').addEventListener('click', async () => {
     const json = await client.request('json');
     download('screwcut-plan.json', new Blob([json], { type: 'application/json' }));

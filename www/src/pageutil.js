@@ -1,4 +1,5 @@
-// Small page helpers: a download of a blob, a passing message in the footer.
+// Small page helpers: a download of a blob, a passing message in the footer,
+// a link to share.
 
 /** Downloads `blob` as file `name`. */
 export function download(name, blob) {
@@ -19,4 +20,16 @@ export function toast(text) {
   setTimeout(() => {
     if (el.textContent === text) el.textContent = '';
   }, 2500);
+}
+
+/** Puts the link with `fragment` in the address bar and on the clipboard, and says which. */
+export async function shareLink(fragment, t) {
+  const url = `${location.origin}${location.pathname}${fragment}`;
+  history.replaceState(null, '', url);
+  try {
+    await navigator.clipboard.writeText(url);
+    toast(t('shared'));
+  } catch {
+    toast(t('share_failed'));
+  }
 }
