@@ -51,6 +51,7 @@ impl NumAcc {
 
     /// The number, or why it is not one. Significant digits exclude leading
     /// zeros and trailing zeros of the fraction.
+    #[inline(always)]
     pub(super) fn finish(self, max_digits: usize) -> Result<Number, NumError> {
         let digits = self.digits;
         if self.malformed || digits == 0 {

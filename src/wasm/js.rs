@@ -114,19 +114,26 @@ pub struct ThreadSummary {
     passes: u32,
     /// The shop-floor figures (cycle time, speeds, clearances, chip loads, the thread check without its notes).
     shop: crate::figures::Shop,
-    /// The thread check's notes in the page's language.
-    notes: Vec<String>,
+    /// The thread check's notes in both languages (a greyed thread list
+    /// stays readable when the language changes with no new good plan).
+    notes: Notes,
+}
+
+/// The thread check's notes rendered in each language the page offers.
+#[derive(Serialize)]
+struct Notes {
+    en: Vec<String>,
+    zh: Vec<String>,
 }
 
 impl ThreadSummary {
-    /// The summary of `t`, its notes in `lang`.
-    pub fn of(t: &Thread, lang: Lang) -> ThreadSummary {
+    /// The summary of `t`, its notes in every language.
+    pub fn of(t: &Thread) -> ThreadSummary {
         let r = crate::num::round_out;
         let mut shop = t.shop.clone();
-        let notes = match shop.gauge.as_mut() {
-            Some(g) => std::mem::take(&mut g.notes).iter().map(|n| n.render(lang)).collect(),
-            None => Vec::new(),
-        };
+        let kept = shop.gauge.as_mut().map(|g| std::mem::take(&mut g.notes)).unwrap_or_default();
+        let render = |lang: Lang| kept.iter().map(|n| n.render(lang)).collect();
+        let notes = Notes { en: render(Lang::En), zh: render(Lang::Zh) };
         ThreadSummary {
             line: t.line,
             end_line: t.end_line,

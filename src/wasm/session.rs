@@ -108,35 +108,28 @@ impl Session {
     }
 
     /// Sets the language (`en` or `zh`; anything else is English) of the
-    /// diagnostics' messages and the thread check's notes in the answers
-    /// from now on. Their keys carry the language, so a caller holding the
-    /// other language's lists is sent new ones.
+    /// diagnostics' messages in the answers from now on. Their key carries
+    /// the language, so a caller holding the other language's list is sent
+    /// a new one.
     pub fn set_lang(&self, lang: &str) {
         self.lang.set(Lang::parse(lang).unwrap_or_default());
     }
 
-    /// The last plan's diagnostics and thread list in the language set
-    /// last, without planning again: `{diagnostics, diagnosticsKey,
-    /// threads, threadsKey}` (the whole list, as [`Session::update`] keys them).
+    /// The last plan's diagnostics in the language set last, without
+    /// planning again: `{diagnostics, diagnosticsKey}` (keyed as
+    /// [`Session::update`] keys them). Thread summaries need no relabelling:
+    /// they carry their notes in every language.
     pub fn relabel(&self) -> Result<JsValue, JsValue> {
         let lang = self.lang.get();
-        let mut state = self.state.take();
-        let out = match state.as_mut() {
-            Some(State { planner, threads, .. }) => match planner.last() {
-                Some(plan) => {
-                    let o = Object::new();
-                    set(&o, "diagnosticsKey", &diagnostics_key(plan, lang).into());
-                    set(&o, "diagnostics", &to_js(&editor_diagnostics(planner.text(), plan, lang))?);
-                    let (listed, all) = listed_keys(&PlanKeys::of(plan), lang);
-                    keyed(&o, &Known(Vec::new()), Part::Threads, all, || {
-                        threads.answer(&Known(Vec::new()), all, &listed, |i| {
-                            to_js(&ThreadSummary::of(&plan.threads[i], lang))
-                        })
-                    })?;
-                    Ok(o.into())
-                }
-                None => Err(err("nothing planned yet")),
-            },
+        let state = self.state.take();
+        let answer = |s: &State, plan: &Plan| -> Result<JsValue, JsValue> {
+            let o = Object::new();
+            set(&o, "diagnosticsKey", &diagnostics_key(plan, lang).into());
+            set(&o, "diagnostics", &to_js(&editor_diagnostics(s.planner.text(), plan, lang))?);
+            Ok(o.into())
+        };
+        let out = match state.as_ref().and_then(|s| s.planner.last().map(|plan| (s, plan))) {
+            Some((s, plan)) => answer(s, plan),
             None => Err(err("nothing planned yet")),
         };
         self.state.set(state);
@@ -318,18 +311,6 @@ fn diagnostics_key(plan: &Plan, lang: Lang) -> f64 {
     js_key(key_of(&(lang.name(), fields)))
 }
 
-/// The keys of the listed threads (their notes are in `lang`) and of the list.
-fn listed_keys(keys: &PlanKeys, lang: Lang) -> (Vec<u64>, u64) {
-    match lang {
-        Lang::En => (keys.listed.clone(), keys.all_listed),
-        _ => {
-            let listed: Vec<u64> = keys.listed.iter().map(|k| combine(&[*k, lang as u64 + 1])).collect();
-            let all = combine(&listed);
-            (listed, all)
-        }
-    }
-}
-
 /// Sets the chosen thread, its passes and its tooth and starts scenes on `o`.
 fn thread_parts(
     o: &Object,
@@ -388,9 +369,9 @@ fn answer(
         if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan, lang))? };
     set(&o, "diagnostics", &diagnostics);
     let keys = PlanKeys::of(plan);
-    let (listed, all) = listed_keys(&keys, lang);
+    let all = keys.all_listed;
     keyed(&o, known, Part::Threads, all, || {
-        sent.answer(known, all, &listed, |i| to_js(&ThreadSummary::of(&plan.threads[i], lang)))
+        sent.answer(known, all, &keys.listed, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
     })?;
     keyed(&o, known, Part::Side, keys.side, || {
         if !known.keeps() {

@@ -155,6 +155,9 @@ try {
   check('the edited program survives a reload', (await rows()) === 6, `${await rows()} rows`);
 
   // ---- an alarm: listed with line:column, drawing kept greyed ----
+  // (with a designation, so the greyed thread check is there to switch language below)
+  await page.fill('#designation', 'M48x2-6g');
+  await page.waitForFunction(() => document.querySelector('#check-verdict .verdict'), null, { timeout: 10_000 }).catch(() => {});
   await page.locator('.cm-line', { hasText: 'N203 X45.3' }).click();
   await page.keyboard.press('End');
   await page.keyboard.press('ArrowLeft'); // before the ';' that ends the block
@@ -174,9 +177,22 @@ try {
   check('the last good drawing stays visible, greyed', greyed.n > 300 && sideView.stale, `${greyed.n} pixels, stale ${sideView.stale}`);
   check('… and the last good table, marked stale', (await rows()) === 6 && (await page.locator('#passes.stale').count()) === 1, `${await rows()} rows`);
   await page.screenshot({ path: path.join(shots, '3-alarm.png') });
+  // The greyed thread check follows a language switch with no new good plan: its notes come in both languages.
+  const noteOf = () => page.locator('#check-verdict .verdict').getAttribute('title').catch(() => '');
+  const enNote = await noteOf();
+  await page.click('#lang');
+  await page.waitForFunction(() => (document.querySelector('#check-verdict .verdict')?.title || '').includes('程序没有车出大径'), null, { timeout: 5_000 }).catch(() => {});
+  const zhNote = await noteOf();
+  check('while greyed, switching to Chinese turns the thread check\'s notes Chinese', enNote.includes('does not turn the major diameter') && zhNote.includes('程序没有车出大径') && (await page.locator('#stale').isVisible()), JSON.stringify([enNote, zhNote]));
+  await page.click('#lang');
+  await page.locator('.cm-line', { hasText: 'X1.2.3' }).click();
+  await page.keyboard.press('End');
+  await page.keyboard.press('ArrowLeft');
   for (let i = 0; i < 7; i++) await page.keyboard.press('Backspace');
   await page.waitForFunction(() => !document.querySelector('#diagnostics li.error'), null, { timeout: 10_000 }).catch(() => {});
   check('removing it clears the alarm', (await page.locator('#diagnostics li.error').count()) === 0);
+  await page.fill('#designation', '');
+  await page.waitForFunction(() => !document.querySelector('#check-verdict .verdict'), null, { timeout: 10_000 }).catch(() => {});
 
   // ---- language, export ----
   await page.click('#lang');

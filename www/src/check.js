@@ -8,6 +8,7 @@
 // only lays it out.
 
 import { esc, num } from './table.js';
+import { getLang } from './i18n.js';
 
 /** The setting the designation field edits. */
 export const DESIGNATION = 'thread.designation';
@@ -21,8 +22,8 @@ export function verdictHtml(th, units, t) {
   const g = th.shop ? th.shop.gauge : null;
   if (!g) return `<span class="none">${esc(t('check_none'))}</span>`;
   const from = g.source === 'comment' ? t('check_from_comment', { line: g.line }) : t('check_from_setting');
-  // The notes come in the page's language (`th.notes`); the plan's JSON keeps them in English.
-  const notes = [from, ...(th.notes || g.notes || [])].join('\n');
+  // The summary carries the notes in each language (`th.notes.en`, `th.notes.zh`); the plan's JSON keeps them in English.
+  const notes = [from, ...((th.notes && th.notes[getLang()]) || g.notes || [])].join('\n');
   const head = `<span class="verdict ${g.ok ? 'ok' : 'fail'}" title="${esc(notes)}">${g.ok ? '✓' : '✗'} ${esc(g.designation)} ${esc(g.ok ? t('check_ok') : t('check_fail'))}</span>`;
   const parts = [`${esc(t('check_d2'))} ${esc(num(g.pitch_diameter))}`];
   if (g.pitch_diameter_min != null && g.pitch_diameter_max != null) {

@@ -89,7 +89,7 @@ export class Engine {
     }
   }
 
-  /** Another language: the drawings' labels, and the last plan's diagnostics and thread list (no new plan). */
+  /** Another language: the drawings' labels and the last plan's diagnostics (no new plan; thread summaries carry both languages). */
   on_lang({ lang }) {
     this.lang = lang === 'zh' ? 'zh' : 'en';
     this.session.set_lang(this.lang);
@@ -97,7 +97,7 @@ export class Engine {
     if (!this.result) return;
     const r = this.held.fill(this.session.relabel());
     this.diagnosticsKey = r.diagnosticsKey;
-    Object.assign(this.result, { diagnostics: r.diagnostics, diagnosticsKey: r.diagnosticsKey, threads: r.threads });
+    Object.assign(this.result, { diagnostics: r.diagnostics, diagnosticsKey: r.diagnosticsKey });
     this.postResult(this.result, null, null);
   }
 
