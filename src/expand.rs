@@ -12,10 +12,12 @@
 //! lead × angle / 360° (the same helix). Planned again, the program gives
 //! the same passes and start angles.
 
+use crate::args;
 use crate::controller::{self, ThreadWords, Writing};
 use crate::cycle::classify;
 use crate::dialect::Dialect;
 use crate::geom::Frame;
+use crate::message::{Arg, Remark, tools};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::EPS;
 use crate::plan::{Plan, Units};
@@ -28,7 +30,7 @@ pub struct Expansion {
     /// The program text.
     pub program: String,
     /// What the target could not express as the source did, and other remarks.
-    pub notes: Vec<String>,
+    pub notes: Vec<Remark>,
 }
 
 /// Plans `text` with `settings` and writes the plan for `to`.
@@ -75,7 +77,7 @@ struct Writer<'p> {
     plan: &'p Plan,
     w: &'static Writing,
     out: String,
-    notes: Vec<String>,
+    notes: Vec<Remark>,
     /// Program units per plan unit (25.4 for an inch plan on a millimetre controller).
     scale: f64,
     at: Option<Point>,
@@ -123,6 +125,13 @@ impl<'p> Writer<'p> {
         self.out.push('\n');
     }
 
+    /// Says `r` once (a remark repeated by every thread or pass is kept once).
+    fn note(&mut self, r: Remark) {
+        if !self.notes.contains(&r) {
+            self.notes.push(r);
+        }
+    }
+
     /// A length as the target reads it.
     fn len(&self, v: f64) -> String {
         self.w.length(v * self.scale)
@@ -147,7 +156,7 @@ impl<'p> Writer<'p> {
             (Units::Mm, Some((_, mm))) => self.line(mm),
             (Units::Inch, None) => {
                 self.scale = 25.4;
-                self.notes.push(format!("{} reads millimetres only: the inch program is written in mm", to.title()));
+                self.note(Remark::new(&tools::EX_MM_ONLY, args![dialect = Arg::lit(to.title())]));
             }
             (Units::Mm, None) => {}
         }
@@ -168,11 +177,7 @@ impl<'p> Writer<'p> {
         let sp = &self.plan.threads[t].passes[p].spindle;
         match sp.s {
             Some(_) if sp.css => {
-                let note =
-                    "constant surface speed (G96) is not written: set the spindle speed before the threads".to_string();
-                if !self.notes.contains(&note) {
-                    self.notes.push(note);
-                }
+                self.note(Remark::new(&tools::EX_NO_CSS, args![]));
             }
             Some(s) if self.speed != Some(s) => {
                 self.speed = Some(s);
@@ -233,10 +238,7 @@ impl<'p> Writer<'p> {
             MoveKind::Feed => self.feed(to),
             MoveKind::Arc => self.arc(m),
             MoveKind::Thread | MoveKind::ScrewIn | MoveKind::Runout => {
-                self.notes.push(format!(
-                    "line {}: a synchronised move that belongs to no thread is written as a feed",
-                    m.line
-                ));
+                self.note(Remark::new(&tools::EX_STRAY_THREAD_MOVE, args![line = m.line]));
                 self.feed(to);
             }
         }
@@ -284,7 +286,7 @@ impl<'p> Writer<'p> {
         }
         let f = if self.feed_given { String::new() } else { format!(" F{}", self.lead(0.2 / self.scale)) };
         if !self.feed_given {
-            self.notes.push("the plan has no feed rates: the turning moves are written with F0.2".into());
+            self.note(Remark::new(&tools::EX_NO_FEED, args![]));
         }
         self.feed_given = true;
         self.line(format!("{}{words}{f}", self.w.motion[1]));
@@ -378,7 +380,7 @@ impl<'p> Writer<'p> {
             None => Tail::Set(0.0, 0.0),
         };
         if body.len() + usize::from(tail.is_some()) > 1 && want != Tail::Set(0.0, 0.0) {
-            self.notes.push("Renhe applies the G30 tail to every block of a continuous thread: the segments before the last are written without a tail".into());
+            self.note(Remark::new(&tools::EX_RENHE_TAIL_LAST, args![]));
         }
         let set = |w: &mut Writer, t: Tail| {
             if w.tail != t {
@@ -394,7 +396,7 @@ impl<'p> Writer<'p> {
         }
         for s in body {
             if s.kind == MoveKind::Runout {
-                self.notes.push("a run-out Renhe cannot write as a G30 tail is written as a thread block".into());
+                self.note(Remark::new(&tools::EX_RENHE_RUNOUT, args![]));
             }
             self.renhe_block(s.to, lead);
             self.arrive(s.to);
@@ -410,11 +412,8 @@ impl<'p> Writer<'p> {
         let at = self.at.unwrap_or(end);
         let (u, w) = (end.x - at.x, end.z - at.z);
         if !(w.abs() * self.scale > 4.0 && w.abs() > u.abs()) {
-            self.notes.push(format!(
-                "a Renhe thread block must be longer than 4 mm and than its U: W{} U{} will alarm (E18-04)",
-                self.len(w),
-                self.len(u)
-            ));
+            let (w, u) = (self.len(w), self.len(u));
+            self.note(Remark::new(&tools::EX_RENHE_SHORT, args![w, u]));
         }
         let uw =
             if u.abs() > EPS { format!(" U{} W{}", self.len(u), self.len(w)) } else { format!(" W{}", self.len(w)) };

@@ -3,6 +3,8 @@
 
 use serde::Serialize;
 
+use crate::message::{Phrase, tools};
+
 /// The threading forms a program can be written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -23,15 +25,15 @@ pub enum Form {
     LinuxG76,
 }
 
-/// Names of the forms, in [`Form::ALL`] order (command line and JSON).
-const FORM_NAMES: [(&str, &str); 7] = [
-    ("g32", "G32 block by block (textbook, table 4-3)"),
-    ("g92", "G92 simple cycle"),
-    ("g76", "G76 multiple cycle"),
-    ("g78", "G78 enhanced cycle"),
-    ("renhe_g33", "Renhe G33 block by block"),
-    ("g33", "LinuxCNC G33 block by block"),
-    ("linuxcnc_g76", "LinuxCNC G76 cycle"),
+/// Names and titles of the forms, in [`Form::ALL`] order (names: command line and JSON).
+const FORM_NAMES: [(&str, &Phrase); 7] = [
+    ("g32", &tools::FORM_G32),
+    ("g92", &tools::FORM_G92),
+    ("g76", &tools::FORM_G76),
+    ("g78", &tools::FORM_G78),
+    ("renhe_g33", &tools::FORM_RENHE_G33),
+    ("g33", &tools::FORM_G33),
+    ("linuxcnc_g76", &tools::FORM_LINUXCNC_G76),
 ];
 
 impl Form {
@@ -43,8 +45,13 @@ impl Form {
         FORM_NAMES[self as usize].0
     }
 
-    /// A display title.
+    /// A display title (English).
     pub fn title(self) -> &'static str {
+        FORM_NAMES[self as usize].1.en
+    }
+
+    /// The display title in both languages.
+    pub fn title_phrase(self) -> &'static Phrase {
         FORM_NAMES[self as usize].1
     }
 

@@ -18,8 +18,10 @@ mod write;
 
 use serde::Serialize;
 
+use crate::args;
 use crate::controller;
 use crate::dialect::Dialect;
+use crate::message::{Arg, Remark, tools};
 use crate::num::fmt;
 use crate::standard::{self, Kind, System};
 
@@ -140,14 +142,15 @@ pub struct Generated {
     /// The thread it cuts.
     pub spec: Spec,
     /// Choices made and what the user should know (tool, relief groove, limits).
-    pub notes: Vec<String>,
+    pub notes: Vec<Remark>,
 }
 
 /// Writes the program `r` asks for, or says why it cannot.
-pub fn generate(r: &Request) -> Result<Generated, String> {
+pub fn generate(r: &Request) -> Result<Generated, Remark> {
     if !Form::of(r.dialect).contains(&r.form) {
         let have: Vec<&str> = Form::of(r.dialect).iter().map(|f| f.name()).collect();
-        return Err(format!("{} has no {} form; it has {}", r.dialect.title(), r.form.title(), have.join(", ")));
+        let (dialect, form, forms) = (Arg::lit(r.dialect.title()), r.form.title_phrase(), have.join(", "));
+        return Err(Remark::new(&tools::WZ_NO_FORM, args![dialect, form, forms]));
     }
     let (spec, mut notes) = spec(r)?;
     let program = write::program(r, &spec, &mut notes)?;
@@ -165,31 +168,32 @@ struct Thread {
     taper: f64,
 }
 
-fn thread(r: &Request, notes: &mut Vec<String>) -> Result<Thread, String> {
+fn thread(r: &Request, notes: &mut Vec<Remark>) -> Result<Thread, Remark> {
     let Some(text) = r.designation.as_deref().filter(|t| !t.trim().is_empty()) else {
         let (Some(d), Some(lead)) = (r.major, r.lead) else {
-            return Err("give a designation, or a major diameter and a lead".into());
+            return Err(Remark::new(&tools::WZ_NEED_SIZE, args![]));
         };
         let internal = r.internal.unwrap_or(false);
         let starts = r.starts.unwrap_or(1).max(1);
         let p = lead / starts as f64;
         if !(d > 0.0 && lead > 0.0 && d.is_finite() && lead.is_finite()) {
-            return Err("the major diameter and the lead must be positive".into());
+            return Err(Remark::new(&tools::WZ_SIZE_POSITIVE, args![]));
         }
         // A basic 60° thread: d2 = d − 0.649519·P.
         let d2 = d - 0.649_519 * p;
         let (crest, root) =
             if internal { (d - 1.082_532 * p, last_pass(r, d2, p, true)) } else { (d, last_pass(r, d2, p, false)) };
-        notes.push("no designation: a basic 60° profile (ISO 68-1) without a tolerance class".into());
+        notes.push(Remark::new(&tools::WZ_BASIC_PROFILE, args![]));
         let side = if internal { "internal" } else { "external" };
         let title = format!("D{} lead {} {side}", fmt(d), fmt(lead));
         return Ok(Thread { title, internal, lead, starts, crest, root, taper: 0.0 });
     };
-    let mut des = standard::parse(text).map_err(|e| e.message)?;
+    let refused = |e: standard::Error| Remark::new(&tools::WZ_DESIGNATION, args![error = e.detail]);
+    let mut des = standard::parse(text).map_err(refused)?;
     if let Some(i) = r.internal {
         des = des.with_kind(if i { Kind::Internal } else { Kind::External });
     }
-    let lim = standard::limits(&des).map_err(|e| e.message)?;
+    let lim = standard::limits(&des).map_err(refused)?;
     let internal = des.kind == Kind::Internal;
     let starts = r.starts.unwrap_or(des.starts).max(1);
     let p = des.lead_mm / starts as f64;
@@ -201,16 +205,11 @@ fn thread(r: &Request, notes: &mut Vec<String>) -> Result<Thread, String> {
     let m = &lim.mm;
     let (crest, root, taper) = if des.system == System::Npt {
         let t = lim.taper.unwrap_or_default();
-        notes.push(
-            "NPT: a 1:16 taper on the diameter, the small end at the start Z, cut to the truncated height 0.8·P".into(),
-        );
+        notes.push(Remark::new(&tools::WZ_NPT, args![]));
         let (major, minor) = (t.e0 + t.height, t.e0 - t.height);
         if internal { (minor, major, t.taper_on_diameter) } else { (major, minor, t.taper_on_diameter) }
     } else {
-        notes.push(format!(
-            "the last pass puts the pitch diameter in the middle of its tolerance with a 60° tool of nose radius {} (d2 = X ∓ 2r ± 0.866025·P)",
-            fmt(r.nose_radius)
-        ));
+        notes.push(Remark::new(&tools::WZ_LAST_PASS, args![r = r.nose_radius]));
         let crest = if internal { mid(m.minor, m.basic_minor) } else { mid(m.major, m.basic_major) };
         (crest, last_pass(r, mid(m.pitch, m.basic_pitch), p, internal), 0.0)
     };
@@ -243,40 +242,31 @@ pub fn depths(pitch: f64, height: f64) -> Vec<f64> {
     (1..=n).map(|k| height * (k as f64 / n as f64).sqrt()).collect()
 }
 
-fn spec(r: &Request) -> Result<(Spec, Vec<String>), String> {
+fn spec(r: &Request) -> Result<(Spec, Vec<Remark>), Remark> {
     let mut notes = Vec::new();
     let t = thread(r, &mut notes)?;
     let z0 = r.start_z;
     let z1 = match (r.end_z, r.length) {
         (Some(z), _) => z,
         (None, Some(l)) if l > 0.0 => z0 - l,
-        _ => return Err("give the thread's end Z or its length".into()),
+        _ => return Err(Remark::new(&tools::WZ_NEED_END, args![])),
     };
     if !(z0.is_finite() && z1.is_finite()) || (z1 - z0).abs() < 1e-6 {
-        return Err("the thread has no length: its end Z is its start Z".into());
+        return Err(Remark::new(&tools::WZ_NO_LENGTH, args![]));
     }
     let height = (t.root - t.crest).abs() / 2.0;
     let pitch = t.lead / t.starts as f64;
     if !(height > 0.0 && height.is_finite() && t.lead.is_finite()) {
-        return Err("the thread has no depth".into());
+        return Err(Remark::new(&tools::WZ_NO_DEPTH, args![]));
     }
     // The textbook's O1006 clearances, δ1 = 5 mm before the work and δ2 = 2 mm
     // past the end (a relief groove), must cover the acceleration zones
     // n·L/500 and n·L/1800: the speed is kept within them.
     let rpm = r.max_rpm.min(r.max_feed / t.lead).min(500.0 * 5.0 / t.lead).min(1800.0 * 2.0 / t.lead).floor();
     if rpm.is_nan() || rpm < 1.0 {
-        return Err(format!(
-            "no spindle speed fits: the thread feed lead {} × 1 rev/min is over the machine's {} mm/min",
-            fmt(t.lead),
-            fmt(r.max_feed)
-        ));
+        return Err(Remark::new(&tools::WZ_NO_SPEED, args![lead = t.lead, feed = r.max_feed]));
     }
-    notes.push(format!(
-        "spindle S{}: within the machine's {} rev/min and {} mm/min of thread feed, with n·L/500 ≤ 5 mm of lead-in and n·L/1800 ≤ 2 mm of run-out past the end (leave a relief groove)",
-        fmt(rpm),
-        fmt(r.max_rpm),
-        fmt(r.max_feed)
-    ));
+    notes.push(Remark::new(&tools::WZ_SPINDLE, args![s = rpm, rpm = r.max_rpm, feed = r.max_feed]));
     // Lead-in δ1: at least the textbook's 5 mm and two leads.
     let delta1 = (5.0f64).max(2.0 * t.lead);
     let delta1 = (delta1 * 2.0).ceil() / 2.0;
@@ -304,7 +294,7 @@ fn spec(r: &Request) -> Result<(Spec, Vec<String>), String> {
     spec.clear_x = if t.internal {
         let x = crests[0].min(crests[1]) - 2.0 * c;
         if x <= 0.0 {
-            return Err(format!("the bore (Ø{}) is too small to enter with {} of clearance", fmt(crests[0]), fmt(c)));
+            return Err(Remark::new(&tools::WZ_BORE_TOO_SMALL, args![bore = crests[0], clearance = c]));
         }
         x
     } else {

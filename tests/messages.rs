@@ -267,3 +267,60 @@ fn shop_checks_and_limits_in_both_languages() {
     }
     eprintln!("{} templates under settings: {seen:?}", seen.len());
 }
+
+/// What the writing tools say, in Chinese without English words: the
+/// wizard's notes and refusals over designations, controllers and forms,
+/// and `expand`'s notes over the examples written for every controller.
+#[test]
+fn the_writing_tools_speak_both_languages() {
+    use screwcut::wizard::{Form, Request, generate};
+    let mut said: Vec<message::Remark> = Vec::new();
+    let designations = ["M10x1.5-6g", "M24xPh3P1.5", "1/2-14 NPT", "M20x1.5-6H", "1/2-13 UNC-2A"];
+    for d in designations {
+        for dialect in Dialect::ALL {
+            for form in Form::ALL {
+                let r =
+                    Request { designation: Some(d.into()), length: Some(25.0), dialect, form, ..Request::default() };
+                match generate(&r) {
+                    Ok(g) => said.extend(g.notes),
+                    Err(e) => said.push(e),
+                }
+            }
+        }
+    }
+    let base = Request { length: Some(25.0), ..Request::default() };
+    let refused = [
+        Request { length: None, designation: Some("M30x2".into()), ..base.clone() },
+        Request { major: Some(-3.0), lead: Some(1.0), ..base.clone() },
+        Request { major: Some(30.0), lead: Some(2.0), end_z: Some(0.0), ..base.clone() },
+        Request { designation: Some("M30x2".into()), max_feed: 1.0, ..base.clone() },
+        Request { major: Some(1.5), lead: Some(0.3), internal: Some(true), ..base.clone() },
+        Request { designation: Some("M30x15".into()), dialect: Dialect::Renhe, form: Form::RenheG33, ..base.clone() },
+        Request { designation: Some("Q12".into()), ..base.clone() },
+    ];
+    for r in &refused {
+        said.push(generate(r).err().unwrap_or_else(|| panic!("{r:?} was written")));
+    }
+    for (_, dialect, text) in
+        programs().into_iter().filter(|(n, ..)| n.ends_with(".nc") || n.ends_with(".ngc")).take(60)
+    {
+        let plan = plan(&text, dialect);
+        for to in Dialect::ALL {
+            said.extend(screwcut::expand::expand(&plan, to).notes);
+        }
+    }
+    let mut bad = Vec::new();
+    let mut seen = BTreeSet::new();
+    for r in &said {
+        let (en, zh) = (r.render(Lang::En), r.render(Lang::Zh));
+        seen.insert(r.phrase.en);
+        assert_eq!(en, r.to_string());
+        if en.contains('{') || zh.contains('{') || !english_words(&zh).is_empty() {
+            bad.push(format!("{zh:?}: {:?}", english_words(&zh)));
+        }
+    }
+    bad.sort();
+    bad.dedup();
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+    assert!(seen.len() >= 15, "only {} of the tools' phrases said: {seen:#?}", seen.len());
+}

@@ -61,6 +61,9 @@ enum Command {
         /// Set a controller parameter or setting of the source dialect (repeatable).
         #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
         set: Vec<String>,
+        /// Language of the notes: en or zh.
+        #[arg(long, default_value = "en", value_parser = parse_lang)]
+        lang: Lang,
     },
     /// Write a threading program: a designation (or --major and --lead), its
     /// length (or --end-z), a controller and a form.
@@ -149,6 +152,9 @@ struct GenerateArgs {
     /// Form: g32, g92, g76, g78 (GSK), renhe_g33, g33 or linuxcnc_g76 (LinuxCNC).
     #[arg(long, short, default_value = "g32", value_parser = parse_form)]
     form: screwcut::wizard::Form,
+    /// Language of the notes and of a refusal: en or zh.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: Lang,
 }
 
 fn parse_form(s: &str) -> Result<screwcut::wizard::Form, String> {
@@ -184,13 +190,13 @@ fn generate(a: GenerateArgs) -> ExitCode {
     match screwcut::wizard::generate(&r) {
         Ok(g) => {
             for n in &g.notes {
-                eprintln!("screwcut: note: {n}");
+                eprintln!("screwcut: note: {}", n.render(a.lang));
             }
             emit(&g.program);
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("screwcut: {e}");
+            eprintln!("screwcut: {}", e.render(a.lang));
             ExitCode::from(2)
         }
     }
@@ -214,7 +220,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Plan { file, dialect, set, json, lang } => plan(&file, dialect, &set, json, lang),
-        Command::Expand { file, dialect, to, set } => expand(&file, dialect, to.unwrap_or(dialect), &set),
+        Command::Expand { file, dialect, to, set, lang } => expand(&file, dialect, to.unwrap_or(dialect), &set, lang),
         Command::Generate(a) => generate(a),
         Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, layout } => {
             let (settings, text) = match input(&file, dialect, &set) {
@@ -306,7 +312,7 @@ fn input(file: &str, dialect: Dialect, set: &[String]) -> Result<(Settings, Stri
     Ok((settings, String::from_utf8_lossy(&bytes).into_owned()))
 }
 
-fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String]) -> ExitCode {
+fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String], lang: Lang) -> ExitCode {
     let (settings, text) = match input(file, dialect, set) {
         Ok(v) => v,
         Err(code) => return code,
@@ -318,7 +324,7 @@ fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String]) -> ExitCode
     }
     let e = screwcut::expand::expand(&plan, to);
     for n in &e.notes {
-        eprintln!("screwcut: note: {n}");
+        eprintln!("screwcut: note: {}", n.render(lang));
     }
     emit(&e.program);
     ExitCode::SUCCESS

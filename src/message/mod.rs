@@ -15,7 +15,8 @@
 //! [`read`] (the interpreter and the controllers' commands), [`renhe`],
 //! [`linuxcnc`], [`cycle`] (planning cycles and grouping passes), [`shop`]
 //! (shop-floor checks and textbook advice), [`gauge`] (the thread check's
-//! notes), [`standard`] (designations) and [`words`] (the command line's
+//! notes), [`standard`] (designations), [`tools`] (what the wizard and
+//! `expand` say, as [`Remark`]s) and [`words`] (the command line's
 //! summary). `words` is not re-exported: its names are read as `words::NAME`.
 
 use std::borrow::Cow;
@@ -34,6 +35,7 @@ pub mod read;
 pub mod renhe;
 pub mod shop;
 pub mod standard;
+pub mod tools;
 pub mod words;
 
 pub use cycle::*;
@@ -301,6 +303,41 @@ impl Message {
     }
 }
 
+/// A phrase with its arguments: what a tool says that is not a diagnostic
+/// of a program (the wizard's notes and refusals, `expand`'s notes).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Remark {
+    /// What is said.
+    pub phrase: &'static Phrase,
+    /// The values it names.
+    pub args: Args,
+}
+
+impl Remark {
+    /// `phrase` with `args`.
+    pub fn new(phrase: &'static Phrase, args: Args) -> Remark {
+        Remark { phrase, args }
+    }
+
+    /// The text in `lang`.
+    pub fn render(&self, lang: Lang) -> String {
+        self.phrase.render(&self.args, lang)
+    }
+}
+
+/// Remarks serialise as their English text.
+impl Serialize for Remark {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.render(Lang::En))
+    }
+}
+
+impl std::fmt::Display for Remark {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.render(Lang::En))
+    }
+}
+
 /// Notes serialise as their English text (the JSON's language).
 impl Serialize for Message {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -407,10 +444,19 @@ pub fn all() -> impl Iterator<Item = &'static Template> {
 
 /// Every phrase of the catalogue.
 pub fn all_phrases() -> impl Iterator<Item = &'static Phrase> {
-    [read::PHRASES, linuxcnc::PHRASES, cycle::PHRASES, shop::PHRASES, gauge::PHRASES, standard::PHRASES, words::PHRASES]
-        .into_iter()
-        .flatten()
-        .copied()
+    [
+        read::PHRASES,
+        linuxcnc::PHRASES,
+        cycle::PHRASES,
+        shop::PHRASES,
+        gauge::PHRASES,
+        standard::PHRASES,
+        tools::PHRASES,
+        words::PHRASES,
+    ]
+    .into_iter()
+    .flatten()
+    .copied()
 }
 
 #[cfg(test)]

@@ -210,11 +210,15 @@ impl Session {
 
     /// The last plan written block by block for dialect `to` (every pass
     /// with its approach, cut, run-out, retract and return; see
-    /// [`crate::expand`]): `{program, notes}`. Planned again, the program gives
-    /// the same passes.
+    /// [`crate::expand`]): `{program, notes}`, the notes in the session's
+    /// language. Planned again, the program gives the same passes.
     pub fn expand(&self, to: &str) -> Result<JsValue, JsValue> {
         let to = dialect(to)?;
-        self.with_last(|plan| to_js(&crate::expand::expand(plan, to)))
+        let lang = self.lang.get();
+        self.with_last(|plan| {
+            let e = crate::expand::expand(plan, to);
+            to_js(&super::tools::Written::<()>::new(&e.program, &e.notes, lang, None))
+        })
     }
 
     /// The motions of the last plan, seven numbers each:

@@ -12,6 +12,7 @@ use wasm_bindgen::prelude::*;
 use super::js::{dialect, err, to_js};
 use crate::dialect::Dialect;
 use crate::form::Form;
+use crate::message::{Lang, Remark};
 use crate::wizard::{Request, generate};
 
 /// A form for the wizard's selector.
@@ -29,15 +30,20 @@ struct DialectForms {
     forms: Vec<FormInfo>,
 }
 
-/// The wizard's targets: `[{dialect, title, forms: [{name, title}]}]`.
+/// The wizard's targets: `[{dialect, title, forms: [{name, title}]}]`, the
+/// forms' titles in `lang` (`en` or `zh`; anything else is English).
 #[wasm_bindgen]
-pub fn wizard_forms() -> Result<JsValue, JsValue> {
+pub fn wizard_forms(lang: Option<String>) -> Result<JsValue, JsValue> {
+    let lang = lang.as_deref().and_then(Lang::parse).unwrap_or_default();
     let list: Vec<DialectForms> = Dialect::ALL
         .iter()
         .map(|d| DialectForms {
             dialect: d.name(),
             title: d.title(),
-            forms: Form::of(*d).iter().map(|f| FormInfo { name: f.name(), title: f.title() }).collect(),
+            forms: Form::of(*d)
+                .iter()
+                .map(|f| FormInfo { name: f.name(), title: f.title_phrase().text(lang) })
+                .collect(),
         })
         .collect();
     to_js(&list)
@@ -73,7 +79,7 @@ fn text(o: &JsValue, key: &str) -> Result<Option<String>, JsValue> {
 }
 
 /// Reads a wizard request: `{designation, major, lead, starts, internal,
-/// startZ, endZ, length, noseRadius, maxRpm, maxFeed, dialect, form}` (all
+/// startZ, endZ, length, noseRadius, maxRpm, maxFeed, dialect, form, lang}` (all
 /// optional but a thread — a designation, or major and lead — and a length or end Z).
 fn request(o: &JsValue) -> Result<Request, JsValue> {
     let mut r = Request {
@@ -107,12 +113,30 @@ fn request(o: &JsValue) -> Result<Request, JsValue> {
     Ok(r)
 }
 
-/// The wizard's program for `req` (see [`request`]): `{program, notes,
+/// A written program with its notes in the page's language.
+#[derive(Serialize)]
+pub(super) struct Written<'a, S: Serialize> {
+    program: &'a str,
+    notes: Vec<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    spec: Option<S>,
+}
+
+impl<'a, S: Serialize> Written<'a, S> {
+    /// `program` with `notes` rendered in `lang` (and the wizard's `spec`).
+    pub(super) fn new(program: &'a str, notes: &[Remark], lang: Lang, spec: Option<S>) -> Self {
+        Written { program, notes: notes.iter().map(|n| n.render(lang)).collect(), spec }
+    }
+}
+
+/// The wizard's program for `req` (see [`request`]; its `lang`, `en` or
+/// `zh`, is the language of the notes and the refusal): `{program, notes,
 /// spec}`; an error names what is wrong with the request or why the thread
 /// cannot be written for the form.
 #[wasm_bindgen]
 pub fn wizard_generate(req: JsValue) -> Result<JsValue, JsValue> {
     let r = request(&req)?;
-    let g = generate(&r).map_err(err)?;
-    to_js(&g)
+    let lang = text(&req, "lang")?.and_then(|l| Lang::parse(&l)).unwrap_or_default();
+    let g = generate(&r).map_err(|e| err(e.render(lang)))?;
+    to_js(&Written::new(&g.program, &g.notes, lang, Some(&g.spec)))
 }

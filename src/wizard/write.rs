@@ -5,7 +5,9 @@
 //! further back along Z (the same helix, reached later).
 
 use super::{Form, Request, Spec};
+use crate::args;
 use crate::controller::{self, ThreadWords, Writing};
+use crate::message::{Remark, tools};
 use crate::num::fmt;
 
 struct Out {
@@ -47,7 +49,7 @@ impl Out {
 }
 
 /// The program of `r` for the thread `s`.
-pub fn program(r: &Request, s: &Spec, notes: &mut Vec<String>) -> Result<String, String> {
+pub fn program(r: &Request, s: &Spec, notes: &mut Vec<Remark>) -> Result<String, Remark> {
     let w = &controller::of(r.dialect).writing;
     let mut o = Out { w, text: String::new() };
     o.comment(&format!("{}: {} for {}, by screwcut generate", s.title, r.form.title(), r.dialect.title()));
@@ -73,10 +75,10 @@ pub fn program(r: &Request, s: &Spec, notes: &mut Vec<String>) -> Result<String,
         _ => s.spindle,
     };
     if spindle < 1.0 {
-        return Err(format!("the Renhe speed advice n ≤ 2300/t − 60 leaves no speed for a lead of {}", fmt(s.lead)));
+        return Err(Remark::new(&tools::WZ_RENHE_NO_SPEED, args![lead = s.lead]));
     }
     if spindle < s.spindle {
-        notes.push(format!("spindle S{} by Renhe's advice n ≤ 2300/t − 60", fmt(spindle)));
+        notes.push(Remark::new(&tools::WZ_RENHE_SPINDLE, args![s = spindle]));
     }
     o.line(format!("{} S{}", w.spindle_on.unwrap_or("M03"), fmt(spindle)));
     let r0 = o.rapid();
@@ -143,9 +145,9 @@ fn blockwise(o: &mut Out, s: &Spec) {
 }
 
 /// Renhe: no tail (`G30 U0 W0`), incremental `G33 U W F` (or `G32 W F` in threads per inch).
-fn renhe(o: &mut Out, s: &Spec) -> Result<(), String> {
+fn renhe(o: &mut Out, s: &Spec) -> Result<(), Remark> {
     if (s.z1 - s.za).abs() <= 4.0 {
-        return Err("Renhe threads must be longer than 4 mm (E18-04), lead-in included".into());
+        return Err(Remark::new(&tools::WZ_RENHE_TOO_SHORT, args![]));
     }
     let tpi = 25.4 / s.lead;
     let half = (2.0 * tpi).round();
@@ -155,7 +157,7 @@ fn renhe(o: &mut Out, s: &Spec) -> Result<(), String> {
     } else if (0.25..=12.0).contains(&s.lead) {
         format!("G33 {{}} F{}", o.w.lead(s.lead))
     } else {
-        return Err(format!("Renhe's G33 takes a pitch of 0.25..12 mm, not {}", fmt(s.lead)));
+        return Err(Remark::new(&tools::WZ_RENHE_PITCH, args![lead = s.lead]));
     };
     o.line("G30 U0 W0");
     for k in 0..s.starts {
@@ -190,16 +192,13 @@ fn taper_word(o: &Out, s: &Spec, za: f64, z1: f64) -> String {
 }
 
 /// G92: one block per pass; GSK without run-out (J0) and with L starts, Fanuc with Q per start.
-fn g92(o: &mut Out, s: &Spec, notes: &mut Vec<String>) {
+fn g92(o: &mut Out, s: &Spec, notes: &mut Vec<Remark>) {
     let gsk = o.w.thread == (ThreadWords::G32 { runout: true });
     // Fanuc's chamfer (parameter 5130, one lead at its default) is inside the
     // programmed travel: program one lead further to keep the full depth to the end.
     let z1 = if gsk { s.z1 } else { s.z1 + s.sense() * s.lead };
     if !gsk {
-        notes.push(format!(
-            "G92 ends in the chamfer of parameter 5130 (default: one lead): programmed to Z{}, one lead past the thread's end, so leave a relief groove",
-            fmt(z1)
-        ));
+        notes.push(Remark::new(&tools::WZ_G92_CHAMFER, args![z = z1]));
     }
     let starts = if gsk { 1 } else { s.starts };
     for k in 0..starts {
@@ -255,15 +254,13 @@ fn g78(o: &mut Out, s: &Spec) {
 
 /// LinuxCNC's G76 in diameter mode (I, J, K diameters): depth degression R2
 /// (constant chip area), compound angle Q29.5, one spring pass.
-fn linux_g76(o: &mut Out, s: &Spec, notes: &mut Vec<String>) -> Result<(), String> {
+fn linux_g76(o: &mut Out, s: &Spec, notes: &mut Vec<Remark>) -> Result<(), Remark> {
     if s.taper != 0.0 {
-        return Err(
-            "LinuxCNC's G76 cuts straight threads only (E and L taper its ends): choose G33 for a taper thread".into(),
-        );
+        return Err(Remark::new(&tools::WZ_LINUXCNC_TAPER, args![]));
     }
     let i = s.crest - s.clear_x;
     let j = 2.0 * s.height / (s.depths.len() as f64).sqrt();
-    notes.push("G76 with R2 (constant chip area), Q29.5 (compound infeed along the flank of a 60° tool) and H1".into());
+    notes.push(Remark::new(&tools::WZ_LINUXCNC_G76, args![]));
     for n in 0..s.starts {
         let (_, za) = start(s, n);
         o.line(format!("G0 {} {}", o.x(s.clear_x), o.z(za)));

@@ -259,13 +259,14 @@ export class Engine {
   /**
    * The program-writing tools: `what: 'forms'` (the wizard's controllers and
    * forms), `'generate'` (the wizard's program for `request`), `'expand'`
-   * (the last plan block by block for dialect `to`). A wrong request is
-   * answered with an error naming it.
+   * (the last plan block by block for dialect `to`), their notes and
+   * refusals in the page's language. A wrong request is answered with an
+   * error naming it.
    */
   on_tool({ id, what, request, to }) {
     let data;
-    if (what === 'forms') data = this.core.wizard_forms();
-    else if (what === 'generate') data = this.core.wizard_generate(request);
+    if (what === 'forms') data = this.core.wizard_forms(this.lang);
+    else if (what === 'generate') data = this.core.wizard_generate({ ...request, lang: this.lang });
     else if (what === 'expand') data = this.session.expand(to);
     else throw new Error(`unknown tool '${what}'`);
     this.post({ type: 'reply', id, data });

@@ -217,8 +217,9 @@ fn passed_count(line: &str) -> Option<u32> {
 /// embedded previews (`docs.test.mjs`), hostile links, the program
 /// list and the element's guards (`safety.test.mjs`), the keyboard, a
 /// phone's screen and Chinese (`access.test.mjs`), then the drawings' labels
-/// in the app and in embeds, English and Chinese (`labels.test.mjs`); fails
-/// when any fails.
+/// in the app and in embeds, English and Chinese (`labels.test.mjs`), and
+/// the thread wizard and "Expand to blocks" (`tools.test.mjs`); fails when
+/// any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -236,8 +237,9 @@ pub fn browser_tests() -> Result {
     run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
     let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
     let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
-    let rest = ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs", "labels.test.mjs"]
-        .map(|t| run("node", &[t, &url], Some(&dir)));
+    let rest =
+        ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs", "labels.test.mjs", "tools.test.mjs"]
+            .map(|t| run("node", &[t, &url], Some(&dir)));
     rest.into_iter().fold(app, |all, r| all.and(r))
 }
 

@@ -24,7 +24,7 @@ fn plan(text: &str, dialect: &str) -> JsValue {
 
 #[wasm_bindgen_test]
 fn the_wizard_lists_each_controllers_forms() {
-    let list = array(&wasm::wizard_forms().unwrap());
+    let list = array(&wasm::wizard_forms(None).unwrap());
     let forms = |d: &str| -> Vec<String> {
         let entry = list.iter().find(|e| get(e, "dialect").as_string().as_deref() == Some(d)).unwrap();
         array(&get(entry, "forms")).iter().map(|f| get(f, "name").as_string().unwrap()).collect()
@@ -33,6 +33,15 @@ fn the_wizard_lists_each_controllers_forms() {
     assert!(forms("gsk980tdc").contains(&"g78".to_string()));
     assert!(!forms("fanuc0i").contains(&"g78".to_string()));
     assert_eq!(forms("linuxcnc"), ["g33", "linuxcnc_g76"]);
+    // The titles in the page's language.
+    let title = |lang: &str| {
+        let list = array(&wasm::wizard_forms(Some(lang.into())).unwrap());
+        let gsk = list.iter().find(|e| get(e, "dialect").as_string().as_deref() == Some("gsk980tdc")).unwrap();
+        let forms = array(&get(gsk, "forms"));
+        let g92 = forms.iter().find(|f| get(f, "name").as_string().as_deref() == Some("g92")).unwrap();
+        get(g92, "title").as_string().unwrap()
+    };
+    assert_eq!((title("en"), title("zh")), ("G92 simple cycle".into(), "G92 简单螺纹循环".into()));
 }
 
 /// M30×2-6g, 30 mm, GSK G76: the program names its designation in a comment,
@@ -58,6 +67,15 @@ fn the_wizards_program_plans_and_gauges() {
     assert_eq!(get(&gauge, "ok").as_bool(), Some(true), "{program}");
     let d2 = num(&gauge, "pitch_diameter");
     assert!((28.493..=28.663).contains(&d2), "d2 {d2}");
+    // The notes in the request's language; the program is the same.
+    let notes =
+        |g: &JsValue| -> Vec<String> { array(&get(g, "notes")).iter().map(|n| n.as_string().unwrap()).collect() };
+    let mut zh_req = Vec::from([("designation", "M30x2-6g".into()), ("length", 30.0.into())]);
+    zh_req.extend([("dialect", "gsk980tdc".into()), ("form", "g76".into()), ("lang", "zh".into())]);
+    let zh = wasm::wizard_generate(object(&zh_req)).unwrap();
+    assert_eq!(get(&zh, "program").as_string().unwrap(), program);
+    assert!(notes(&g).iter().any(|n| n.starts_with("the last pass puts the pitch diameter")), "{:?}", notes(&g));
+    assert!(notes(&zh).iter().any(|n| n.starts_with("最后一刀使中径落在公差带中间")), "{:?}", notes(&zh));
 }
 
 #[wasm_bindgen_test]
@@ -72,6 +90,8 @@ fn a_bad_wizard_request_is_named() {
         ("form", "g78".into()),
     ]);
     assert!(e.contains("has no") && e.contains("G78"), "{e}");
+    let e = bad(&[("designation", "M30x2".into()), ("dialect", "fanuc0i".into()), ("lang", "zh".into())]);
+    assert_eq!(e, "请给出螺纹终点 Z 或螺纹长度");
     let e = bad(&[("designation", "M30x2".into()), ("length", 30.0.into()), ("starts", 0.5.into())]);
     assert!(e.contains("starts"), "{e}");
     let e = bad(&[("designation", "x".repeat(300).into()), ("length", 30.0.into())]);
@@ -95,4 +115,14 @@ fn a_plan_expands_to_blocks_for_another_controller() {
     let z: Vec<f64> = js_sys::Float64Array::from(get(&passes, "zEnd")).to_vec();
     assert_close(&z, &[13.0; 5]);
     assert!(message(s.expand("bogus").unwrap_err()).contains("unknown dialect"));
+    // Notes in the session's language: Renhe has no G96 and writes a G30 tail.
+    let css = "G00 X58 Z70\nG96 S120 M03\nG00 X47.1\nG32 Z13 F2\nG00 X58\nZ70\nM30\n";
+    s.update(css, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    let notes =
+        |e: JsValue| -> Vec<String> { array(&get(&e, "notes")).iter().map(|n| n.as_string().unwrap()).collect() };
+    let en = notes(s.expand("gsk980tdc").unwrap());
+    assert!(en.iter().any(|n| n.starts_with("constant surface speed (G96) is not written")), "{en:?}");
+    s.set_lang("zh");
+    let zh = notes(s.expand("gsk980tdc").unwrap());
+    assert!(zh.iter().any(|n| n.starts_with("恒线速（G96）没有写出")), "{zh:?}");
 }
