@@ -4,6 +4,9 @@
 // - The app in a worker (OffscreenCanvas) and on the page (`?engine=page`,
 //   what a browser without OffscreenCanvas gets) draw the same scenes,
 //   highlight the same items and follow the same edits.
+// - In a program of 80 threads, an edit of one thread changes its entry of
+//   the thread menu and no other (both paths; the engine sends the page the
+//   summaries that changed).
 // - The 3-line L99 program (99 starts × 675 passes, 334,125 motions) leaves
 //   the page responsive: the pass table keeps a few dozen rows in the DOM,
 //   the drawings are summarised, a button answers while the engine works,
@@ -75,6 +78,26 @@ try {
   check('hovering pass 6 highlights the same items both ways', a2.side.highlight > 0 && a2.side.highlight === b2.side.highlight && a2.tooth.highlight === b2.tooth.highlight, `${a2.side.highlight} / ${b2.side.highlight}`);
   await worker.close();
   await onPage.close();
+
+  // ---- 80 threads: an edit of one changes its entry of the thread menu, and only it ----
+  // (past 64 threads the engine sends the page the summaries that changed, not the list)
+  const many = ['O0080', 'S300 M03'];
+  for (let k = 0; k < 80; k++) many.push('G00 X60 Z70', 'X47.1', 'G32 Z13 F2', 'G00 X60', 'G01 Z70 F0.2');
+  for (const mode of ['', '?engine=page']) {
+    const p = await open(mode + fragment({ dialect: 'gsk980tdc', settings: {}, program: many.join('\n') + '\n' }));
+    await p.waitForFunction(() => document.querySelectorAll('#thread option').length === 80, null, { timeout: 30_000 }).catch(() => {});
+    const menu = () => p.locator('#thread option').allTextContents();
+    const before = await menu();
+    await p.locator('.cm-line').nth(14).click(); // line 15: the third thread's G32
+    await p.keyboard.press('End');
+    await p.keyboard.press('Backspace');
+    await p.keyboard.type('3');
+    await p.waitForFunction(() => /Ph 3\b/.test(document.querySelectorAll('#thread option')[2]?.textContent || ''), null, { timeout: 10_000 }).catch(() => {});
+    const after = await menu();
+    const others = after.every((o, i) => i === 2 || o === before[i]);
+    check(`${mode || 'worker'}: editing thread 3 of 80 to F3 changes its menu entry to Ph 3, and no other`, after.length === 80 && /Ph 3\b/.test(after[2]) && /Ph 2\b/.test(before[2]) && others, JSON.stringify([before[2], after[2], after.length]));
+    await p.close();
+  }
 
   // ---- L99: 99 starts of 675 passes, from a link ----
   const program = 'G00 X100 Z5\nG78 P1060 Q10 R0.01 L99\nG78 X40 Z-30 P9000 Q300 F2\n';

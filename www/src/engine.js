@@ -158,7 +158,8 @@ export class Engine {
 
   /** Posts what the page's lists need; lists it already has are not sent again. */
   postResult(r, seq, timing) {
-    const threads = r.threads === this.sentThreads ? undefined : r.threads;
+    // The thread list: nothing when the page holds it, else the entries that changed when they are few.
+    const threads = r.threads === this.sentThreads ? undefined : listChanges(this.sentThreads, r.threads);
     this.sentThreads = r.threads;
     // The passes come from the planner as columns of typed arrays (copied, not moved: the engine keeps them).
     const passes = r.passes === this.sentPasses ? undefined : r.passes;
@@ -346,4 +347,23 @@ export class Engine {
       threadsJson: time(() => JSON.parse(s.threads_as('json'))),
     };
   }
+}
+
+/**
+ * `now` as the page needs it after `before`: `{changes: [[index, entry]],
+ * length}` when few entries changed (a first-pass edit of a program of
+ * 2,000 threads changes one summary: the other 1,999 are not copied to the
+ * page again), else the whole list. Unchanged entries keep their identity
+ * (the parts holder patches lists entry by entry).
+ */
+function listChanges(before, now) {
+  if (!Array.isArray(before) || !Array.isArray(now) || now.length < 64) return now;
+  const changes = [];
+  for (let i = 0; i < now.length; i++) {
+    if (now[i] !== before[i]) {
+      changes.push([i, now[i]]);
+      if (changes.length * 4 > now.length) return now;
+    }
+  }
+  return { changes, length: now.length };
 }

@@ -152,3 +152,30 @@ export function tipText(info, result, thread, t) {
     ` · X${num(c.x[i])} Z${num(c.z[i])}→${num(c.zEnd[i])} · ${t('col_depth')} ${num(c.depth[i])} · ${t(ROLE_NAMES[c.role[i]] || 'rough')} · ${t('col_lines')} ${passLines(c, i).join(', ')}`
   );
 }
+
+/** The rows last written into each list by `patchRows`. */
+const written = new WeakMap();
+
+/**
+ * Writes `rows` (each an `<li>`, as HTML) and `tail` into `ul`. An edit
+ * changes a few diagnostics of a long list: when the list keeps its length,
+ * only the rows that changed are replaced (a 1,000-row list is not laid out
+ * again for each keystroke).
+ */
+export function patchRows(ul, rows, tail) {
+  const old = written.get(ul);
+  const same = old && old.rows.length === rows.length && old.tail === tail && ul.children.length === rows.length + (tail ? 1 : 0);
+  if (same) {
+    for (let i = 0; i < rows.length; i++) if (rows[i] !== old.rows[i]) ul.children[i].outerHTML = rows[i];
+  } else {
+    ul.innerHTML = rows.join('') + tail;
+  }
+  written.set(ul, { rows, tail });
+}
+
+/** `held` with `d.changes` (`[index, entry]`) applied and cut or grown to `d.length`: a new list. */
+export function patchList(held, d) {
+  const list = held.slice(0, d.length);
+  for (const [i, entry] of d.changes) list[i] = entry;
+  return list;
+}

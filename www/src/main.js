@@ -11,7 +11,7 @@ import { Library } from './programs.js';
 import { num, esc } from './table.js';
 import { download, toast, shareLink } from './pageutil.js';
 import { startEngine } from './client.js';
-import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText, threadName } from './lists.js';
+import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText, threadName, patchRows, patchList } from './lists.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { DESIGNATION, renderCheck, bindDesignation } from './check.js';
 import { SettingsPanel } from './settingspanel.js';
@@ -115,7 +115,7 @@ function replan() {
   state.program = text;
   persist();
   seq += 1;
-  inFlight = { seq, text, t0: performance.now() };
+  inFlight = { seq, text, doc: editor.view.state.doc, t0: performance.now() };
   if (pendingInput !== null) {
     inputs.set(seq, pendingInput);
     pendingInput = null;
@@ -152,6 +152,7 @@ function onMessage(m) {
 function onResult(m) {
   const r = m.r;
   if (r.threads === undefined) r.threads = result ? result.threads : [];
+  else if (r.threads.changes) r.threads = patchList(result ? result.threads : [], r.threads);
   if (r.passes === undefined) r.passes = result ? result.passes : null;
   if (r.diagnostics === null) r.diagnostics = result ? result.diagnostics : [];
   else editor.setDiagnosticsSoon(r.diagnostics);
@@ -169,8 +170,10 @@ function onResult(m) {
     setText($('timing'), t('timing', { plan: m.timing.plan.toFixed(1), draw: m.timing.views.toFixed(1) }));
   }
   if (inFlight && inFlight.seq === m.seq) {
+    const sent = inFlight.doc;
     inFlight = null;
-    if (wanted || editor.text() !== state.program) replan();
+    // The document is immutable: another one is another text (no walk of a long program to compare).
+    if (wanted || editor.view.state.doc !== sent) replan();
   }
   if (!probe.ready) {
     probe.ready = true;
@@ -264,12 +267,9 @@ function renderDiagnostics(list) {
   const shown = list.map((d, i) => [d, i]).filter(([d]) => severities.has(d.severity));
   diagnosticsShown = shown;
   const MAX = 2000;
-  const ul = $('diagnostics');
-  const html = shown.slice(0, MAX).map(([d, i]) => diagnosticRow(d, i, t, false)).join('');
-  if (ul.dataset.html !== html) {
-    ul.innerHTML = html + (shown.length > MAX ? `<li class="more">${esc(t('more', { n: shown.length - MAX }))}</li>` : '');
-    ul.dataset.html = html;
-  }
+  const rows = shown.slice(0, MAX).map(([d, i]) => diagnosticRow(d, i, t, false));
+  const more = shown.length > MAX ? `<li class="more">${esc(t('more', { n: shown.length - MAX }))}</li>` : '';
+  patchRows($('diagnostics'), rows, more);
   const counts = { error: 0, warning: 0, info: 0 };
   for (const d of list) counts[d.severity]++;
   for (const sev of Object.keys(counts)) setText(document.querySelector(`#sev-filter [data-sev="${sev}"] .n`), String(counts[sev]));
