@@ -112,7 +112,8 @@ pub struct ThreadSummary {
     height: f64,
     taper: f64,
     passes: u32,
-    /// The shop-floor figures (cycle time, speeds, clearances, chip loads, the thread check without its notes).
+    /// The shop-floor figures (cycle time, speeds, clearances, the thread check without its notes; the
+    /// per-pass chip loads and times are the pass table's columns instead).
     shop: crate::figures::Shop,
     /// The thread check's notes in both languages (a greyed thread list
     /// stays readable when the language changes with no new good plan).
@@ -130,7 +131,9 @@ impl ThreadSummary {
     /// The summary of `t`, its notes in every language.
     pub fn of(t: &Thread) -> ThreadSummary {
         let r = crate::num::round_out;
-        let mut shop = t.shop.clone();
+        // Per-pass figures (chip loads, pass times) go to the page as the pass
+        // table's columns: a summary of 66,825 passes must not carry them again.
+        let mut shop = crate::figures::Shop { chip: Vec::new(), pass_time_s: Vec::new(), ..t.shop.clone() };
         let kept = shop.gauge.as_mut().map(|g| std::mem::take(&mut g.notes)).unwrap_or_default();
         let render = |lang: Lang| kept.iter().map(|n| n.render(lang)).collect();
         let notes = Notes { en: render(Lang::En), zh: render(Lang::Zh) };

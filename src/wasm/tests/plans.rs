@@ -69,6 +69,10 @@ fn o1006_plans_five_passes_to_the_last_digit() {
         assert_eq!(p.lines, [first, first + 1, first + 2, first + 3]);
         assert!(p.area.unwrap() > 0.0 && p.shift == 0.0 && p.angle == 0.0);
     }
+    // The per-pass figures are the table's columns, not repeated in the thread summary.
+    let shop = get(&array(&get(&r, "threads"))[0], "shop");
+    assert_eq!((array(&get(&shop, "chip")).len(), array(&get(&shop, "pass_time_s")).len()), (0, 0));
+    assert!((num(&shop, "cut_time_s") - 28.5).abs() < 1e-9, "O1006 at S300: 5 × 57 mm at 600 mm/min");
     let diags: Vec<Diag> = field(&r, "diagnostics");
     let codes: Vec<&str> = diags.iter().map(|d| d.code.as_str()).collect();
     assert_eq!(codes, ["crest-assumed", "infeed-guidance"]);
