@@ -13,7 +13,7 @@
 // - In Chinese, the page's own words are Chinese; screenshots in both
 //   languages at 1440×900 and 390×844 go to tests/browser/screenshots/.
 
-import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
+import { siteUrl, checker, guard, openApp, finish, shots } from './harness.mjs';
 import path from 'node:path';
 
 const url = siteUrl('access.test.mjs');
@@ -22,15 +22,9 @@ const timer = guard(120, 'the access test');
 const problems = [];
 
 async function open(viewport) {
-  const { context, close } = await launch('screwcut-access-', { viewport });
-  const page = context.pages()[0] || (await context.newPage());
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
-  await page.goto(url);
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
-  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 30_000 });
-  await page.waitForTimeout(400);
-  return { page, close };
+  const opened = await openApp('screwcut-access-', url, viewport, problems);
+  await opened.page.waitForTimeout(400);
+  return opened;
 }
 
 try {

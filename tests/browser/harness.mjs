@@ -95,3 +95,19 @@ export function finish(label, counts) {
   console.log(`${label}: ${counts.passed} passed, ${counts.failed} failed`);
   process.exit(counts.failed ? 1 : 0);
 }
+
+/**
+ * Opens the app at `url` in a launched browser (`prefix` names its profile)
+ * with O1006 planned (its five passes in the table); page errors and console
+ * errors go to `problems`. Returns `{page, close}`.
+ */
+export async function openApp(prefix, url, viewport, problems) {
+  const { context, close } = await launch(prefix, { viewport });
+  const page = context.pages()[0] || (await context.newPage());
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 30_000 });
+  return { page, close };
+}

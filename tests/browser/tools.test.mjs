@@ -9,22 +9,16 @@
 // - In Chinese the wizard's form titles, notes and refusals are Chinese.
 // Screenshots of both dialogs in both languages go to tests/browser/screenshots/.
 
-import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
+import { siteUrl, checker, guard, openApp, finish, shots } from './harness.mjs';
 import path from 'node:path';
 
 const url = siteUrl('tools.test.mjs');
 const { check, counts } = checker();
 const timer = guard(120, 'the tools test');
 const problems = [];
-const { context, close } = await launch('screwcut-tools-', { viewport: { width: 1440, height: 900 } });
+const { page, close } = await openApp('screwcut-tools-', url, { width: 1440, height: 900 }, problems);
 
 try {
-  const page = context.pages()[0] || (await context.newPage());
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
-  await page.goto(url);
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
-  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 30_000 });
   const programs = () => page.evaluate(() => window.__screwcut.library.programs.list().map((i) => i.name));
   const xs = () => page.locator('#passes tbody tr[data-pass] td:nth-child(3)').allTextContents();
   const before = await programs();
