@@ -172,10 +172,3 @@ export function patchRows(ul, rows, tail) {
   }
   written.set(ul, { rows, tail });
 }
-
-/** `held` with `d.changes` (`[index, entry]`) applied and cut or grown to `d.length`: a new list. */
-export function patchList(held, d) {
-  const list = held.slice(0, d.length);
-  for (const [i, entry] of d.changes) list[i] = entry;
-  return list;
-}

@@ -43,21 +43,12 @@ export class HeldParts {
         r[part] = this.values[i];
       } else {
         if (r[part] && r[part].pieces) r[part] = this.assemble(r[part]);
-        if (r[part] && r[part].changes) r[part] = this.patch(this.values[i], r[part]);
+        if (r[part] && r[part].changes) r[part] = patchList(this.values[i], r[part]);
         this.keys[i] = key;
         this.values[i] = r[part];
       }
     });
     return r;
-  }
-
-  /** The list `held` with the entries `d.changes` (`[index, entry]`) replaced, cut or grown to `d.length`. */
-  patch(held, d) {
-    if (!Array.isArray(held)) throw new Error('a list changed entry by entry that is not held');
-    const list = held.slice(0, d.length);
-    for (const [i, entry] of d.changes) list[i] = entry;
-    if (list.length !== d.length || list.some((e) => e === undefined)) throw new Error('a list changed entry by entry has gaps');
-    return list;
   }
 
   /** The packed side section from pieces `a`: those sent and those held; holds the ones it uses. */
@@ -123,4 +114,17 @@ export class HeldParts {
     this.pieces = held;
     return { view: a.view, bounds: a.bounds, focus: a.focus, coords, items, lines, labels: labels.join('\u001e') };
   }
+}
+
+/**
+ * The list `held` with the entries `d.changes` (`[index, entry]`) replaced,
+ * cut or grown to `d.length`: a new list (the engine's parts, and the page's
+ * thread list the engine sends as changes).
+ */
+export function patchList(held, d) {
+  if (!Array.isArray(held)) throw new Error('a list changed entry by entry that is not held');
+  const list = held.slice(0, d.length);
+  for (const [i, entry] of d.changes) list[i] = entry;
+  if (list.length !== d.length || list.some((e) => e === undefined)) throw new Error('a list changed entry by entry has gaps');
+  return list;
 }
