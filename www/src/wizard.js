@@ -21,6 +21,21 @@ const FIELDS = [
   ['maxFeed', 'wz_max_feed', 'type="number" step="any" min="1" max="1000000"', '3000'],
 ];
 
+/** The written program and its notes (after `before`), and the Open and Cancel buttons: what both dialogs end with. */
+const outputHtml = (t, before) => `<div class="wz-out">
+      ${before}
+      <pre class="wz-program" tabindex="0" aria-label="${esc(t('wz_program'))}"></pre>
+      <ul class="wz-notes"></ul>
+    </div>
+    <div class="wz-buttons"><button type="button" value="open" class="primary" disabled>${esc(t('wz_open'))}</button><button type="submit" value="cancel">${esc(t('wz_cancel'))}</button></div>`;
+
+/** Shows `out` (`{program, notes}`) in dialog `dlg`, or `text` when there is none (Open then disabled). */
+function showOutput(dlg, out, text) {
+  dlg.querySelector('.wz-program').textContent = out ? out.program : text;
+  dlg.querySelector('.wz-notes').innerHTML = out ? out.notes.map((n) => `<li>${esc(n)}</li>`).join('') : '';
+  dlg.querySelector('[value="open"]').disabled = !out;
+}
+
 /**
  * Opens the wizard. `request(what, payload)` asks the engine (`tool`
  * messages); `onOpen({name, text, dialect})` receives the program.
@@ -45,12 +60,7 @@ export async function openWizard({ request, t, dialect, onOpen }) {
         .join('')}</select></label>
       <label class="wz-field"><span>${esc(t('wz_form'))}</span><select name="form"></select></label>
     </div>
-    <div class="wz-out">
-      <p class="wz-error" role="alert" hidden></p>
-      <pre class="wz-program" tabindex="0" aria-label="${esc(t('wz_program'))}"></pre>
-      <ul class="wz-notes"></ul>
-    </div>
-    <div class="wz-buttons"><button type="button" value="open" class="primary" disabled>${esc(t('wz_open'))}</button><button type="submit" value="cancel">${esc(t('wz_cancel'))}</button></div>
+    ${outputHtml(t, '<p class="wz-error" role="alert" hidden></p>')}
   </form>`;
   document.body.append(dlg);
   const form = dlg.querySelector('form');
@@ -82,9 +92,7 @@ export async function openWizard({ request, t, dialect, onOpen }) {
     last = out ? { ...out, dialect: req.dialect } : null;
     $('.wz-error').hidden = !error;
     $('.wz-error').textContent = error || '';
-    $('.wz-program').textContent = out ? out.program : '';
-    $('.wz-notes').innerHTML = out ? out.notes.map((n) => `<li>${esc(n)}</li>`).join('') : '';
-    $('[value="open"]').disabled = !out;
+    showOutput(dlg, out, '');
   };
   let timer = 0;
   form.addEventListener('input', (e) => {
@@ -129,11 +137,7 @@ export async function openExpand({ request, t, dialects, dialect, alarms, onOpen
         .join('')}</select></label>
       <p class="wz-error" role="alert"${alarms ? '' : ' hidden'}>${esc(t('ex_alarms', { n: alarms }))}</p>
     </div>
-    <div class="wz-out">
-      <pre class="wz-program" tabindex="0" aria-label="${esc(t('wz_program'))}"></pre>
-      <ul class="wz-notes"></ul>
-    </div>
-    <div class="wz-buttons"><button type="button" value="open" class="primary" disabled>${esc(t('wz_open'))}</button><button type="submit" value="cancel">${esc(t('wz_cancel'))}</button></div>
+    ${outputHtml(t, '')}
   </form>`;
   document.body.append(dlg);
   const form = dlg.querySelector('form');
@@ -149,9 +153,7 @@ export async function openExpand({ request, t, dialects, dialect, alarms, onOpen
     }
     if (to !== form.to.value) return;
     last = out ? { text: out.program, dialect: to } : null;
-    dlg.querySelector('.wz-program').textContent = out ? out.program : error;
-    dlg.querySelector('.wz-notes').innerHTML = out ? out.notes.map((n) => `<li>${esc(n)}</li>`).join('') : '';
-    dlg.querySelector('[value="open"]').disabled = !out;
+    showOutput(dlg, out, error);
   };
   form.to.addEventListener('change', update);
   dlg.querySelector('[value="open"]').addEventListener('click', () => {
