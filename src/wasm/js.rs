@@ -10,6 +10,7 @@ use super::keys::js_key;
 use super::memo::SidePieces;
 use super::pack::Packed;
 use crate::dialect::Dialect;
+use crate::figures::Shop;
 use crate::message::Lang;
 use crate::plan::Plan;
 use crate::settings::Settings;
@@ -127,13 +128,52 @@ struct Notes {
     zh: Vec<String>,
 }
 
+/// A thread's shop-floor figures without the per-pass ones (chip loads,
+/// pass times): the page gets those as the pass table's columns, and a
+/// summary of 66,825 passes must not copy them again.
+fn thread_figures(s: &Shop) -> Shop {
+    // Every field named: a figure added to `Shop` is a decision here.
+    let Shop {
+        cut_time_s,
+        time_s,
+        pass_time_s: _,
+        rpm,
+        thread_feed,
+        rpm_limit,
+        lead_in_needed,
+        run_out_needed,
+        lead_in,
+        run_out,
+        clearance_source,
+        pitch_diameter,
+        helix_angle_deg,
+        chip: _,
+        gauge,
+    } = s;
+    Shop {
+        cut_time_s: *cut_time_s,
+        time_s: *time_s,
+        pass_time_s: Vec::new(),
+        rpm: *rpm,
+        thread_feed: *thread_feed,
+        rpm_limit: *rpm_limit,
+        lead_in_needed: *lead_in_needed,
+        run_out_needed: *run_out_needed,
+        lead_in: *lead_in,
+        run_out: *run_out,
+        clearance_source: *clearance_source,
+        pitch_diameter: *pitch_diameter,
+        helix_angle_deg: *helix_angle_deg,
+        chip: Vec::new(),
+        gauge: gauge.clone(),
+    }
+}
+
 impl ThreadSummary {
     /// The summary of `t`, its notes in every language.
     pub fn of(t: &Thread) -> ThreadSummary {
         let r = crate::num::round_out;
-        // Per-pass figures (chip loads, pass times) go to the page as the pass
-        // table's columns: a summary of 66,825 passes must not carry them again.
-        let mut shop = crate::figures::Shop { chip: Vec::new(), pass_time_s: Vec::new(), ..t.shop.clone() };
+        let mut shop = thread_figures(&t.shop);
         let kept = shop.gauge.as_mut().map(|g| std::mem::take(&mut g.notes)).unwrap_or_default();
         let render = |lang: Lang| kept.iter().map(|n| n.render(lang)).collect();
         let notes = Notes { en: render(Lang::En), zh: render(Lang::Zh) };
