@@ -21,7 +21,6 @@ use crate::message::{Arg, Remark, tools};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::EPS;
 use crate::plan::{Plan, Units};
-use crate::settings::Settings;
 use crate::thread::Thread;
 
 /// A program written for a controller, with what could not be kept.
@@ -31,11 +30,6 @@ pub struct Expansion {
     pub program: String,
     /// What the target could not express as the source did, and other remarks.
     pub notes: Vec<Remark>,
-}
-
-/// Plans `text` with `settings` and writes the plan for `to`.
-pub fn expand_text(text: &str, settings: &Settings, to: Dialect) -> Expansion {
-    expand(&crate::plan(text, settings), to)
 }
 
 /// Writes `plan` as a block-by-block program for `to`.

@@ -160,11 +160,6 @@ impl Grouper {
         }
     }
 
-    /// Whether a continuous thread is being cut.
-    pub fn in_chain(&self) -> bool {
-        self.chain.is_some()
-    }
-
     /// The continuous thread being cut ends: it joins the current thread or
     /// starts a new one (completed threads go to `out`).
     pub fn end_chain(&mut self, s: &Settings, out: &mut Vec<Thread>, diags: &mut Diagnostics) {

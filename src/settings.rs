@@ -396,11 +396,6 @@ impl Settings {
         &self.texts[t as usize]
     }
 
-    /// Sets a text setting directly (trimmed; no length check).
-    pub fn set_text(&mut self, t: T, v: &str) {
-        self.texts[t as usize] = v.trim().to_string();
-    }
-
     /// The text settings with their current values.
     pub fn text_entries(&self) -> impl Iterator<Item = (&'static TextDef, &str)> + '_ {
         TEXT_DEFS.iter().zip(&self.texts).map(|(d, v)| (d, v.as_str()))

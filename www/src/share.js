@@ -107,12 +107,6 @@ export function readFragment(hash, cap = LINK_MAX_BYTES) {
   return { state };
 }
 
-/** The state in a link's fragment, or null (unchecked; kept for callers of the old API). */
-export function decodeFragment(hash) {
-  const r = readFragment(hash);
-  return r && r.state ? r.state : null;
-}
-
 const MAX_SETTING_NAME = 64;
 const MAX_SETTING_VALUE = 256;
 const MAX_SETTINGS = 400;

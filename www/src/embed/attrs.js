@@ -24,13 +24,9 @@ export function parseThread(attr) {
   return Number.isFinite(n) && n >= 1 ? n - 1 : 0;
 }
 
-/** `settings="No.058=55; x_mode=radius"` → `{name: value}` (lines or `;` separate them). */
-export function parseSettings(attr) {
-  return readSettings(attr).values;
-}
-
 /**
- * `settings="..."` → `{values: {name: value}, problems: [{setting, message}]}`:
+ * `settings="No.058=55; x_mode=radius"` (lines or `;` separate the entries) →
+ * `{values: {name: value}, problems: [{setting, message}]}`:
  * an entry that is not NAME=VALUE is a problem to show, not dropped silently
  * (the planner reports unknown names and bad values: `settingErrors`).
  */
