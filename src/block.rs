@@ -60,6 +60,9 @@ pub enum BlockKind {
     Percent,
     /// An `O1234` (or `:1234`) program number line.
     ProgramNumber(u32),
+    /// A macro line (variables, expressions, jumps, loops, o-words): the
+    /// lexer leaves it to the program flow ([`crate::exec`]), which parses it.
+    Macro,
 }
 
 /// One block (program line) with its words.
@@ -114,6 +117,14 @@ impl Block {
     pub fn get(&self, letter: u8) -> Option<&Word> {
         let i = self.index[(letter - b'A') as usize];
         if i == 0 { None } else { Some(&self.words[i as usize - 1]) }
+    }
+
+    /// Marks the block a macro line: its words are left to the program flow.
+    pub fn macro_line(&mut self) {
+        self.kind = BlockKind::Macro;
+        self.words.clear();
+        self.n = None;
+        self.index = [0; 26];
     }
 
     /// Whether a word with `letter` is present.

@@ -110,6 +110,25 @@ codes! {
     StartAssumed = "start-assumed", Info;
     /// The plan would hold more motions than `limits.moves`.
     MoveLimit = "move-limit", Error;
+    // ---- program flow: subprograms, macros, o-words ----
+    /// A macro line the controller cannot read (`#1=`, `IF[…]`, `o100 call`).
+    MacroSyntax = "macro-syntax", Error;
+    /// A value a macro cannot compute: division by zero, a function outside its domain, a variable number that is not whole.
+    MacroValue = "macro-value", Error;
+    /// A variable the controller does not have, cannot write, or a named parameter not yet defined.
+    MacroVariable = "macro-variable", Error;
+    /// A jump or call whose target is not in the text: program, sequence number, subroutine, loop end.
+    JumpTarget = "jump-target", Error;
+    /// Calls nested deeper than the controller (or `limits.call_depth`) allows.
+    CallDepth = "call-depth", Error;
+    /// More blocks run again by loops, jumps and calls than `limits.blocks`.
+    BlockLimit = "block-limit", Error;
+    /// The program raised its own alarm (`#3000 = n`).
+    MacroAlarm = "macro-alarm", Error;
+    /// M99 in the main program repeats it forever; the preview runs it `program.main_repeats` times.
+    MainRepeats = "main-repeats", Info;
+    /// A subprogram or subroutine ran to its end without M99/endsub.
+    SubprogramEnd = "subprogram-end", Warning;
     // ---- thread cutting (G32 and shared) ----
     /// A thread block with no lead: no F/I in it or before it.
     MissingLead = "missing-lead", Error;

@@ -82,7 +82,7 @@ fn block(r: &mut Reader, ctl: &Controller, b: &Block) {
             r.m.percent = true;
             return;
         }
-        BlockKind::ProgramNumber(_) => return,
+        BlockKind::ProgramNumber(_) | BlockKind::Macro => return,
         BlockKind::Normal => {}
     }
     if b.is_empty() && b.spindle.is_none() {
@@ -223,7 +223,9 @@ fn command(r: &mut Reader, ctl: &Controller, b: &Block, motion_g: Code1, one_sho
     let m_end = b.all(b'M').any(|m| matches!(m.num.integer(), Some(2 | 30)));
     for m in b.all(b'M') {
         match m.num.integer() {
-            Some(98 | 99) => r.diag(&msg::SUBPROGRAM_NOT_FOLLOWED, m.span, args![word = m]),
+            Some(98 | 99) if !r.rules.macros.as_ref().is_some_and(|x| x.subprograms) => {
+                r.diag(&msg::SUBPROGRAM_NOT_FOLLOWED, m.span, args![word = m])
+            }
             Some(3 | 4) => r.m.spindle_on = true,
             Some(5) => r.m.spindle_on = false,
             _ => {}

@@ -29,6 +29,7 @@ pub mod diagnostic;
 pub mod diagram;
 pub mod dialect;
 pub mod event;
+pub mod exec;
 pub mod expand;
 pub mod figures;
 pub mod form;

@@ -14,6 +14,8 @@ use crate::block::Block;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
 use crate::dialect::Dialect;
 use crate::event::Event;
+use crate::exec::index::{At, Index};
+use crate::exec::{Ctx, Exec, Flow};
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
 use crate::motion::Move;
@@ -88,6 +90,10 @@ pub(crate) struct Reading {
     pub it: Interp,
     pub asm: Assembler,
     pub diags: Diagnostics,
+    /// The program's flow: variables, calls, loops.
+    pub exec: Exec,
+    /// The labels of the text being read, built on first use.
+    index: Option<Index>,
     events: Vec<Event>,
 }
 
@@ -96,6 +102,7 @@ pub(crate) struct Reading {
 #[derive(Clone, Debug)]
 pub struct Snapshot {
     modal: Modal,
+    exec: Exec,
     plan: Mark,
     diags: (usize, usize, Option<Span>),
 }
@@ -127,8 +134,11 @@ impl Snapshot {
         let mut modal = self.modal.clone();
         // The one byte position the modal state holds (where an end-of-program finding goes).
         modal.last_span = modal.last_span.shifted(bytes);
+        let mut exec = self.exec.clone();
+        exec.shift(bytes);
         Snapshot {
             modal,
+            exec,
             plan: self.plan.shifted(moves, threads, bytes),
             diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|s| s.shifted(bytes))),
         }
@@ -137,7 +147,17 @@ impl Snapshot {
     /// Whether reading goes on from here exactly as from `other` (the same
     /// modal and grouping state, whatever the outputs before it).
     pub fn same_state(&self, other: &Snapshot) -> bool {
-        self.modal == other.modal && self.plan.group == other.plan.group
+        self.modal == other.modal && self.plan.group == other.plan.group && self.exec == other.exec
+    }
+
+    /// The furthest byte of the text the reading depended on up to here.
+    pub fn read_to(&self) -> usize {
+        self.exec.high
+    }
+
+    /// Whether the reading had left the order of the text (a jump, a call, a loop).
+    pub fn jumped(&self) -> bool {
+        self.exec.jumped
     }
 }
 
@@ -148,6 +168,8 @@ impl Reading {
             it: Interp::new(settings),
             asm: Assembler::new(settings, bytes),
             diags: Diagnostics::with_limit(settings.int(P::LimitDiagnostics).max(1) as usize),
+            exec: Exec::new(settings),
+            index: None,
             events: Vec::new(),
         }
     }
@@ -155,12 +177,18 @@ impl Reading {
     /// Where the reading is now.
     pub fn snapshot(&self) -> Snapshot {
         let d = &self.diags;
-        Snapshot { modal: self.it.m.clone(), plan: self.asm.mark(), diags: (d.len(), d.dropped(), d.first_dropped()) }
+        Snapshot {
+            modal: self.it.m.clone(),
+            exec: self.exec.clone(),
+            plan: self.asm.mark(),
+            diags: (d.len(), d.dropped(), d.first_dropped()),
+        }
     }
 
     /// Goes back to a snapshot taken earlier in the same reading.
     pub fn restore(&mut self, snap: &Snapshot) {
         self.it.m = snap.modal.clone();
+        self.exec = snap.exec.clone();
         self.asm.restore(&snap.plan);
         self.diags.truncate(snap.diags.0, snap.diags.1, snap.diags.2);
     }
@@ -189,18 +217,66 @@ impl Reading {
             if count > 0 && count % every == 0 && !checkpoint(lexer.offset(), lexer.line() + 1, self) {
                 return false;
             }
-            if !lexer.next_block(&mut block, &mut self.diags) {
-                break;
+            let here = At { offset: lexer.offset(), line: lexer.line() + 1 };
+            let more = lexer.next_block(&mut block, &mut self.diags);
+            let next = At { offset: lexer.offset(), line: lexer.line() + 1 };
+            let (flow, jump) = if more {
+                self.flow(lexer.text(), here, next, &mut block)
+            } else {
+                self.step_flow(lexer.text(), here, next, |ex, ctx| ex.at_end(ctx))
+            };
+            if let Some(to) = jump {
+                lexer.jump(to.offset, to.line);
             }
-            self.block(&block);
             count += 1;
-            if self.asm.stopped() {
+            if flow == Flow::Stop || self.asm.stopped() {
                 break;
             }
         }
         self.it.finish(&mut self.events, &mut self.diags);
         self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
         true
+    }
+
+    /// Runs one block through the program flow and the interpreter; where
+    /// to go next when not to the next line.
+    fn flow(&mut self, text: &str, here: At, next: At, block: &mut Block) -> (Flow, Option<At>) {
+        let (flow, jump) = self.step_flow(text, here, next, |ex, ctx| ex.before(ctx, block));
+        if flow != Flow::Run {
+            return (flow, jump);
+        }
+        self.block(block);
+        if jump.is_some() {
+            return (flow, jump);
+        }
+        let ended = self.it.m.ended;
+        self.step_flow(text, here, next, |ex, ctx| ex.after(ctx, block, ended))
+    }
+
+    /// Runs `f` on the program flow with a context for the line at `here`.
+    fn step_flow(
+        &mut self,
+        text: &str,
+        here: At,
+        next: At,
+        f: impl FnOnce(&mut Exec, &mut Ctx) -> Flow,
+    ) -> (Flow, Option<At>) {
+        let mut ctx = Ctx {
+            text,
+            index: &mut self.index,
+            diags: &mut self.diags,
+            modal: &self.it.m,
+            settings: &self.it.s,
+            rules: &self.it.ctl.rules,
+            here,
+            next,
+            jump: None,
+            read_to: 0,
+        };
+        let flow = f(&mut self.exec, &mut ctx);
+        let (jump, read_to) = (ctx.jump, ctx.read_to);
+        self.exec.high = self.exec.high.max(read_to);
+        (flow, jump)
     }
 
     /// The outputs, the reading done.

@@ -51,6 +51,8 @@ pub struct Planner {
     plan: Option<Plan>,
     resumed_at: u32,
     stopped_at: Option<u32>,
+    /// Whether the last reading ever left the order of the text.
+    jumped: bool,
 }
 
 /// What the last reading had after the resume point, kept in case the new
@@ -87,6 +89,7 @@ impl Planner {
             plan: None,
             resumed_at: 1,
             stopped_at: None,
+            jumped: false,
         }
     }
 
@@ -130,7 +133,9 @@ impl Planner {
     pub fn plan(&mut self, text: &str) -> &Plan {
         let changed_at = first_difference(&self.text, text);
         let resume = match self.plan.as_ref() {
-            Some(_) => self.checkpoints.iter().rposition(|c| c.offset <= changed_at),
+            // A checkpoint is good while nothing read before it (lines, jump
+            // targets found) lies at or after the edit.
+            Some(_) => self.checkpoints.iter().rposition(|c| c.offset <= changed_at && c.snap.read_to() <= changed_at),
             None => None,
         };
         let mut r = Reading::new(&self.settings, if resume.is_some() { 0 } else { text.len() });
@@ -154,6 +159,10 @@ impl Planner {
                 kept_threads = cp.snap.threads();
                 lexer.seek(cp.offset, cp.line);
                 self.line_starts.truncate(cp.line as usize - 1);
+                if self.line_starts.len() + 1 != cp.line as usize {
+                    // The lines before the checkpoint were not all read in order: the rest is scanned.
+                    lexer.stop_recording();
+                }
                 self.resumed_at = cp.line;
             }
             None => {
@@ -188,6 +197,7 @@ impl Planner {
         });
         self.line_starts.extend(lexer.take_line_starts());
         let inch_now = r.it.m.inch;
+        self.jumped = r.exec.jumped;
         if let (false, Some(k), Some(t)) = (read_all, meet, tail) {
             self.stopped_at = Some(t.checkpoints[k].line);
             self.splice(&mut r, t, k);
@@ -241,7 +251,9 @@ impl Planner {
         let (old_mid, new_mid) = (&old[changed_at..old.len() - common], &text[changed_at..text.len() - common]);
         let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
             && old_mid.matches('\r').count() == new_mid.matches('\r').count();
-        if !lines_kept || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
+        // After a jump or call the same line is read in other states: the tail is not kept.
+        let flowed = later.iter().any(|c| c.snap.jumped()) || self.jumped;
+        if !lines_kept || flowed || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
             return None;
         }
         let at = (cp.snap.moves(), cp.snap.threads(), cp.snap.diagnostics());

@@ -282,6 +282,18 @@ params! {
     LimitMoves: d("limits.moves", ALL, Kind::Int, 10.0e6, (1.0, 1.0e8), "moves",
         "Most motions a plan may hold before an alarm.",
         "最多运动段数。");
+    LimitBlocks: d("limits.blocks", ALL, Kind::Int, 1.0e6, (1.0, 1.0e8), "blocks",
+        "Most blocks a program may execute, counting each time a loop, jump or subprogram runs a block again (M99 in the main program, WHILE, GOTO): past it an alarm names the line and reading stops.",
+        "程序最多执行的程序段数(循环、跳转、子程序重复执行的段都计入)：超过时报警并停止。");
+    LimitCallDepth: d("limits.call_depth", ALL, Kind::Int, 64.0, (1.0, 10000.0), "levels",
+        "Deepest nesting of subprogram and macro calls the preview follows, whatever the controller allows (the controller's own nesting limit is checked as its alarm).",
+        "预览跟踪的子程序/宏调用最大嵌套层数。");
+    MainRepeats: d("program.main_repeats", CYCLES, Kind::Int, 1.0, (1.0, 1000.0), "runs",
+        "M99 at the end of the main program starts it again, forever (bar feeding): the preview runs the main program this many times, then stops with a note.",
+        "主程序末尾的 M99 使程序无限重复：预览执行主程序的次数。");
+    MainProgram: d("program.main", CYCLES, Kind::Int, 0.0, (0.0, 99999.0), "O number",
+        "The program that runs when the file holds several (each starting with its O number): 0 = the first in the file.",
+        "文件中有多个程序时运行的主程序号：0 表示文件中的第一个程序。");
     LimitBlockChars: d("limits.block_chars", ALL, Kind::Int, 256.0, (8.0, 100000.0), "characters",
         "Longest block accepted.",
         "程序段最大字符数。");
@@ -314,15 +326,25 @@ pub struct TextDef {
 pub enum T {
     /// `thread.designation`.
     Designation,
+    /// `macro.variables`.
+    MacroVariables,
 }
 
 /// The text settings, indexed by `T as usize`.
-pub const TEXT_DEFS: &[TextDef] = &[TextDef {
-    name: "thread.designation",
-    max_len: 200,
-    help: "Thread designation for the thread check when no comment names one before a thread, e.g. M48x2-6g, M30xPh6P2-6H, 1/4-20 UNC-2A, 1/2-14 NPT. Empty: only comments are read.",
-    help_zh: "螺纹标记(如 M48x2-6g)，程序注释中没有时用于螺纹检验。",
-}];
+pub const TEXT_DEFS: &[TextDef] = &[
+    TextDef {
+        name: "thread.designation",
+        max_len: 200,
+        help: "Thread designation for the thread check when no comment names one before a thread, e.g. M48x2-6g, M30xPh6P2-6H, 1/4-20 UNC-2A, 1/2-14 NPT. Empty: only comments are read.",
+        help_zh: "螺纹标记(如 M48x2-6g)，程序注释中没有时用于螺纹检验。",
+    },
+    TextDef {
+        name: "macro.variables",
+        max_len: 4000,
+        help: "Values the common macro variables hold when the program starts (kept at power-off on the controller, #500–#999), e.g. #500=1.5 #501=2. Empty: every variable starts vacant.",
+        help_zh: "程序开始时公共宏变量的值(如 #500=1.5 #501=2)。空：全部为空变量。",
+    },
+];
 
 /// Values of every setting for one dialect.
 #[derive(Clone, Debug, PartialEq)]
@@ -446,6 +468,9 @@ impl Settings {
             if value.len() > TEXT_DEFS[i].max_len {
                 return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
             }
+            if TEXT_DEFS[i].name == "macro.variables" && crate::exec::vars::parse_start(value).is_err() {
+                return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
+            }
             self.texts[i] = value.to_string();
             return Ok(());
         }
@@ -561,6 +586,11 @@ mod tests {
         assert_eq!(s.text(T::Designation), "1/4-20 UNC-2A");
         let long = format!("thread.designation={}", "x".repeat(201));
         assert!(matches!(s.assign(&long), Err(SettingError::BadValue(..))));
-        assert_eq!(s.text_entries().count(), 1);
+        assert_eq!(s.text_entries().count(), 2);
+        // The common variables' start values: #n=value pairs, anything else refused.
+        s.assign("macro.variables=#500=1.5 #501=-2").unwrap();
+        assert_eq!(crate::exec::vars::parse_start(s.text(T::MacroVariables)), Ok(vec![(500, 1.5), (501, -2.0)]));
+        assert!(matches!(s.assign("macro.variables=#500"), Err(SettingError::BadValue(..))));
+        assert!(matches!(s.assign("macro.variables=#500=x"), Err(SettingError::BadValue(..))));
     }
 }

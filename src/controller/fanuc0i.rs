@@ -8,6 +8,8 @@ use super::words::Unit;
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::block::Block;
 use crate::dialect::{Dialect, letters};
+use crate::exec::Macros;
+use crate::exec::expr::Flavor;
 use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::settings::P;
@@ -24,6 +26,19 @@ pub static CONTROLLER: Controller = Controller {
         axis_words: letters(b"XZUW"),
         free_words: 0,
         spindle_word: false,
+        // Custom macro B, M98/M99 and G65 (0i-F operator's manual B-64604EN,
+        // custom macro and subprogram chapters): subprograms nest 10 deep,
+        // macro calls 5 (0i-C B-64124EN §12.3: four levels of M98).
+        macros: Some(Macros {
+            flavor: Flavor::Fanuc,
+            subprograms: true,
+            macro_calls: true,
+            sub_depth: 10,
+            macro_depth: 5,
+            max_loop: 3,
+            h_codes: false,
+            source: "Fanuc 0i nesting",
+        }),
     },
     g_code,
     command,

@@ -13,6 +13,8 @@ use crate::block::{Block, Word};
 use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
 use crate::dialect::{Dialect, letters};
 use crate::event::Event;
+use crate::exec::Macros;
+use crate::exec::expr::Flavor;
 use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::message::{self as msg};
@@ -31,6 +33,19 @@ pub static CONTROLLER: Controller = Controller {
         axis_words: letters(b"XZUW"),
         free_words: 0,
         spindle_word: false,
+        // M98/M99 and macro A: G65 Hm P#i Q#j R#k (GSK980TDi user manual,
+        // G commands, macro command list); #i at addresses. Subprograms
+        // nest four deep.
+        macros: Some(Macros {
+            flavor: Flavor::Fanuc,
+            subprograms: true,
+            macro_calls: false,
+            sub_depth: 4,
+            macro_depth: 4,
+            max_loop: 3,
+            h_codes: true,
+            source: "GSK980TDc nesting",
+        }),
     },
     g_code,
     command,

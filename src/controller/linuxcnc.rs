@@ -18,6 +18,8 @@ use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_co
 use crate::args;
 use crate::block::Block;
 use crate::dialect::{Dialect, letters};
+use crate::exec::Macros;
+use crate::exec::expr::Flavor;
 use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::message::{self as msg, Arg};
@@ -36,6 +38,17 @@ pub static CONTROLLER: Controller = Controller {
         // Every word is checked by `check` before a block runs, with LinuxCNC's messages.
         free_words: letters(b"ABCDEFGHIJKLMNOPQRSTUVWXYZ"),
         spindle_word: true,
+        // o-words, parameters and expressions as rs274ngc runs them.
+        macros: Some(Macros {
+            flavor: Flavor::LinuxCnc,
+            subprograms: false,
+            macro_calls: false,
+            sub_depth: 10,
+            macro_depth: 10,
+            max_loop: 255,
+            h_codes: false,
+            source: "rs274ngc",
+        }),
     },
     g_code,
     command,

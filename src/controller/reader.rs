@@ -34,6 +34,8 @@ pub struct Rules {
     pub free_words: u32,
     /// `$` is the spindle selection word (LinuxCNC).
     pub spindle_word: bool,
+    /// The controller's subprograms and macros (`None`: it has none).
+    pub macros: Option<crate::exec::Macros>,
 }
 
 impl Rules {

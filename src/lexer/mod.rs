@@ -10,6 +10,11 @@ mod source;
 use number::{NumAcc, NumError};
 use source::{Ascii, Ch, OTHER, Src, fold};
 
+/// A full-width or look-alike character's ASCII twin.
+pub fn fold_char(c: char) -> Option<u8> {
+    fold(c)
+}
+
 use crate::args;
 use crate::block::{Block, BlockKind, Word};
 use crate::controller::Rules;
@@ -41,13 +46,16 @@ pub struct Lexer<'a> {
     limits: LexLimits,
     chars: Vec<Ch>,
     starts: Vec<u32>,
+    /// The start of the first line whose start is not recorded yet: line
+    /// starts are recorded only while lines are read in order from it.
+    frontier: usize,
 }
 
 impl<'a> Lexer<'a> {
     /// A lexer over `text` for the words of a controller (its `rules`).
     pub fn new(text: &'a str, rules: &'static Rules, limits: LexLimits) -> Lexer<'a> {
         let pos = if text.starts_with('\u{FEFF}') { 3 } else { 0 };
-        Lexer { text, pos, line: 0, rules, limits, chars: Vec::with_capacity(128), starts: Vec::new() }
+        Lexer { text, pos, line: 0, rules, limits, chars: Vec::with_capacity(128), starts: Vec::new(), frontier: pos }
     }
 
     /// Lines read so far.
@@ -69,6 +77,25 @@ impl<'a> Lexer<'a> {
     pub fn seek(&mut self, offset: usize, line: u32) {
         self.pos = offset.min(self.text.len());
         self.line = line.saturating_sub(1);
+        self.frontier = self.pos;
+    }
+
+    /// Goes on at byte `offset` (a line start), 1-based `line`, as a jump
+    /// does: line starts are not recorded until reading reaches the first
+    /// unrecorded line again.
+    pub fn jump(&mut self, offset: usize, line: u32) {
+        self.pos = offset.min(self.text.len());
+        self.line = line.saturating_sub(1);
+    }
+
+    /// Stops recording line starts (the caller's record no longer leads up to the lines read).
+    pub fn stop_recording(&mut self) {
+        self.frontier = usize::MAX;
+    }
+
+    /// The program text.
+    pub fn text(&self) -> &'a str {
+        self.text
     }
 
     /// Reads the next line into `block`. Returns false at the end of the text.
@@ -81,15 +108,17 @@ impl<'a> Lexer<'a> {
         let start = self.pos;
         let bytes = text.as_bytes();
         let rel = memchr::memchr2(b'\n', b'\r', &bytes[start..]);
-        if self.starts.len() < u32::MAX as usize {
-            self.starts.push(start as u32);
-        }
+        let in_order = start == self.frontier;
         let end = rel.map_or(bytes.len(), |r| start + r);
         self.pos = match rel {
             None => bytes.len() + 1,
             Some(_) if bytes[end] == b'\r' && bytes.get(end + 1) == Some(&b'\n') => end + 2,
             Some(_) => end + 1,
         };
+        if in_order && self.starts.len() < u32::MAX as usize {
+            self.starts.push(start as u32);
+            self.frontier = self.pos;
+        }
         self.line += 1;
         block.reset(self.line, Span::new(start, end));
         self.lex_line(&text[start..end], start, block, diags);
@@ -219,6 +248,10 @@ impl<'c, S: Src> LineLexer<'c, S> {
                         self.bump();
                     }
                 }
+                b'#' | b'[' | b']' | b'=' if self.rules.macros.is_some() => {
+                    block.macro_line();
+                    return;
+                }
                 b'#' | b'[' | b']' | b'=' => {
                     let i = self.i;
                     diags.push(&msg::UNSUPPORTED_MACRO, self.span(i, i + 1), args![c = c as char]);
@@ -243,6 +276,10 @@ impl<'c, S: Src> LineLexer<'c, S> {
                 }
                 b'a'..=b'z' | b'A'..=b'Z' => {
                     let letter = c.to_ascii_uppercase();
+                    if self.macro_start(letter, seen_code) {
+                        block.macro_line();
+                        return;
+                    }
                     if letter == b'O' && !seen_code {
                         seen_code = true;
                         self.program_number(block, diags);
@@ -274,6 +311,51 @@ impl<'c, S: Src> LineLexer<'c, S> {
             let folded: String = original.chars().map(|c| fold(c).map_or(c, |b| b as char)).collect();
             diags.push(&msg::FULL_WIDTH, Span::new(self.at(a), self.after(b)), args![original, folded]);
         }
+    }
+
+    /// Whether the letter at the cursor starts macro syntax: a keyword or
+    /// function (a letter followed by a letter: `IF`, `GOTO`, `END1`, `SIN[`)
+    /// or, on LinuxCNC, an o-word.
+    fn macro_start(&self, letter: u8, seen_code: bool) -> bool {
+        use crate::exec::expr::Flavor;
+        let Some(m) = self.rules.macros.as_ref() else { return false };
+        if letter == b'O' && !seen_code && m.flavor == Flavor::LinuxCnc {
+            return true;
+        }
+        // A value that is a variable or an expression: `X#1`, `Z-[#2+1]`.
+        let mut k = self.i + 1;
+        while matches!(self.src.b(k), b' ' | b'\t' | b'-' | b'+') {
+            k += 1;
+        }
+        if matches!(self.src.b(k), b'#' | b'[') {
+            return true;
+        }
+        let names: &[&str] = match m.flavor {
+            Flavor::Fanuc => &["IF", "WHILE", "GOTO", "END", "DO"],
+            Flavor::LinuxCnc => &[
+                "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN", "EXP",
+                "EXISTS",
+            ],
+        };
+        // The letters from here, blanks skipped (rs274 ignores them), upper-cased.
+        let mut word = [0u8; 8];
+        let (mut j, mut n) = (self.i, 0);
+        while n < word.len() {
+            match self.src.b(j) {
+                b' ' | b'\t' => {}
+                c if c.is_ascii_alphabetic() => {
+                    word[n] = c.to_ascii_uppercase();
+                    n += 1;
+                }
+                _ => break,
+            }
+            j += 1;
+        }
+        let letters = &word[..n];
+        names.iter().any(|k| {
+            letters.starts_with(k.as_bytes())
+                && (m.flavor == Flavor::LinuxCnc || letters.len() == k.len() || k.len() >= 2)
+        })
     }
 
     fn slice(&self, from: usize, to_excl: usize) -> &'c str {

@@ -28,6 +28,7 @@ use crate::block::Word;
 use crate::code::Code;
 
 pub mod cycle;
+pub mod exec;
 pub mod gauge;
 pub mod lex;
 pub mod linuxcnc;
@@ -39,6 +40,7 @@ pub mod tools;
 pub mod words;
 
 pub use cycle::*;
+pub use exec::*;
 pub use gauge::*;
 pub use lex::*;
 pub use linuxcnc::*;
@@ -436,7 +438,7 @@ pub(crate) use templates;
 
 /// Every template of the catalogue.
 pub fn all() -> impl Iterator<Item = &'static Template> {
-    [lex::ALL, read::ALL, renhe::ALL, linuxcnc::ALL, cycle::ALL, shop::ALL, gauge::ALL, standard::ALL]
+    [lex::ALL, exec::ALL, read::ALL, renhe::ALL, linuxcnc::ALL, cycle::ALL, shop::ALL, gauge::ALL, standard::ALL]
         .into_iter()
         .flatten()
         .copied()
@@ -446,6 +448,7 @@ pub fn all() -> impl Iterator<Item = &'static Template> {
 pub fn all_phrases() -> impl Iterator<Item = &'static Phrase> {
     [
         read::PHRASES,
+        exec::PHRASES,
         linuxcnc::PHRASES,
         cycle::PHRASES,
         shop::PHRASES,

@@ -1,0 +1,509 @@
+//! Running a program: which block runs next. Between the lexer and the
+//! interpreter, it follows subprogram and macro calls, jumps and loops,
+//! keeps the macro variables, evaluates expressions and hands the
+//! interpreter plain blocks.
+//!
+//! A line without macro syntax is read by the lexer alone and passes
+//! through untouched; a macro line ([`crate::block::BlockKind::Macro`]) is
+//! parsed here ([`stmt`]), and either changes the flow or the variables, or
+//! becomes a block of plain words. Calls and jumps move the lexer; where
+//! they land is found in the text's [`index::Index`], built once, the first
+//! time a program jumps. The state ([`Exec`]) is one cloneable value, so a
+//! snapshot of a reading holds the variables and the call stack.
+//!
+//! Each controller's forms are data ([`Macros`] in its rules): Fanuc custom
+//! macro B with `M98`/`M99` and `G65` ([`fanuc`]), LinuxCNC's o-words
+//! ([`oword`]). The work is bounded: blocks run again by loops, jumps and
+//! calls count against `limits.blocks`, and calls nest at most as deep as
+//! the controller allows and `limits.call_depth`.
+
+pub mod expr;
+mod fanuc;
+pub mod index;
+mod oword;
+pub mod stmt;
+pub mod vars;
+
+use crate::args;
+use crate::block::{Block, BlockKind, Number, Word};
+use crate::controller::Rules;
+use crate::diagnostic::Diagnostics;
+use crate::message as msg;
+use crate::settings::{P, Settings, T};
+use crate::span::Span;
+use crate::state::Modal;
+use expr::{Env, Fail, Flavor, Val};
+use index::{At, Entry, Index};
+use vars::Vars;
+
+/// A controller's macro and subprogram forms (data in its [`Rules`]).
+#[derive(Debug)]
+pub struct Macros {
+    /// The macro language.
+    pub flavor: Flavor,
+    /// `M98 P… L…` calls and `M99` returns.
+    pub subprograms: bool,
+    /// `G65`/`G66` macro calls with arguments.
+    pub macro_calls: bool,
+    /// Deepest nesting of subprogram calls the controller allows.
+    pub sub_depth: u32,
+    /// Deepest nesting of macro calls (`G65`, LinuxCNC `call`).
+    pub macro_depth: u32,
+    /// Highest `DO`/`END` loop number.
+    pub max_loop: u8,
+    /// Macro A: `G65 Hm P#i Q#j R#k` operations and jumps (GSK).
+    pub h_codes: bool,
+    /// Where the manual says so (for messages).
+    pub source: &'static str,
+}
+
+/// What the reading does with the block just read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flow {
+    /// The interpreter reads it (it may have been rewritten into plain words).
+    Run,
+    /// Nothing more to do: it was a macro statement, a skipped line or a label.
+    Skip,
+    /// The program has ended here.
+    Stop,
+}
+
+/// Why a frame was entered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CallKind {
+    /// `M98`: the caller's local variables stay.
+    Sub,
+    /// `G65`, LinuxCNC `call`: a new level of local variables.
+    Macro,
+}
+
+/// One active call.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// How it was called.
+    pub kind: CallKind,
+    /// Where to go back to.
+    pub ret: At,
+    /// The first line of the called body (for repeats).
+    pub body: At,
+    /// Runs still to make after this one (`L`).
+    pub repeats: u32,
+    /// Line of the calling block.
+    pub call_line: u32,
+    /// The loops open in this frame.
+    pub loops: Vec<Loop>,
+    /// The arguments of a macro call, given again to each repeat.
+    pub args: Option<Box<[Option<f64>; 33]>>,
+}
+
+/// An open loop.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loop {
+    /// Fanuc's loop number, or LinuxCNC's label.
+    pub id: Box<str>,
+    /// The loop's first line (WHILE, DO, repeat).
+    pub head: At,
+    /// Runs left of a LinuxCNC repeat.
+    pub left: Option<u64>,
+}
+
+/// Where a program is in its flow: variables, calls, loops, counters. A
+/// value, cloned into every snapshot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exec {
+    /// The variables.
+    pub vars: Vars,
+    /// Active calls, innermost last.
+    pub frames: Vec<Frame>,
+    /// Loops open in the main program.
+    pub loops: Vec<Loop>,
+    /// Blocks run again (loops, jumps, calls), against `limits.blocks`.
+    pub repeated: u64,
+    /// The furthest byte read so far (a snapshot is valid for a text whose
+    /// edit starts after it).
+    pub high: usize,
+    /// Whether the flow ever left the order of the text.
+    pub jumped: bool,
+    /// The main program's first line, once known.
+    main: Option<At>,
+    /// Runs of the main program made (M99 in the main program).
+    main_runs: u32,
+}
+
+/// What the flow needs besides its own state for one block.
+pub struct Ctx<'a> {
+    /// The program text.
+    pub text: &'a str,
+    /// The labels of the text, built on first use.
+    pub index: &'a mut Option<Index>,
+    /// Diagnostics.
+    pub diags: &'a mut Diagnostics,
+    /// The interpreter's modal state (system variables read it).
+    pub modal: &'a Modal,
+    /// Settings.
+    pub settings: &'a Settings,
+    /// The controller's rules.
+    pub rules: &'static Rules,
+    /// The line just read.
+    pub here: At,
+    /// The line after it.
+    pub next: At,
+    /// Where to go next, when not to `next`.
+    pub jump: Option<At>,
+    /// The furthest byte a lookup depended on (a later edit there could change its answer).
+    pub read_to: usize,
+}
+
+impl Ctx<'_> {
+    /// The labels of the text.
+    fn index(&mut self) -> &Index {
+        let linuxcnc = self.rules.macros.as_ref().is_some_and(|m| m.flavor == Flavor::LinuxCnc);
+        self.index.get_or_insert_with(|| Index::build(self.text, linuxcnc))
+    }
+
+    /// Notes that an answer depended on the text up to the entry found, or
+    /// to its end when nothing was found.
+    fn found(&mut self, e: Option<Entry>) -> Option<Entry> {
+        let to = e.map_or(self.text.len(), |e| e.next.offset);
+        self.read_to = self.read_to.max(to);
+        e
+    }
+
+    /// Program `O(n)`, the first of that number in the text.
+    pub fn program(&mut self, n: u32) -> Option<Entry> {
+        let e = self.index().program(n);
+        self.found(e)
+    }
+
+    /// Sequence number `n` in the program holding `from` (forward first, then from its start).
+    pub fn sequence(&mut self, n: u32, from: usize) -> Option<Entry> {
+        let (_, end) = self.index().program_range(from);
+        self.read_to = self.read_to.max(end);
+        self.index().sequence(n, from)
+    }
+
+    /// The first `END m` after `offset`.
+    pub fn end_of_loop(&mut self, m: u8, offset: usize) -> Option<Entry> {
+        let e = self.index().end_of_loop(m, offset);
+        self.found(e)
+    }
+
+    /// The next o-word line of `label` after `offset` with one of `kws`.
+    pub fn next_oword(&mut self, label: &str, offset: usize, kws: &[stmt::OKw]) -> Option<(stmt::OKw, Entry)> {
+        let e = self.index().next_oword(label, offset, kws);
+        self.found(e.map(|(_, e)| e));
+        e
+    }
+
+    /// The last o-word line of `label` before `offset` with one of `kws`.
+    pub fn prev_oword(&mut self, label: &str, offset: usize, kws: &[stmt::OKw]) -> Option<(stmt::OKw, Entry)> {
+        self.index().prev_oword(label, offset, kws)
+    }
+
+    /// The `sub` line of `label`.
+    pub fn sub(&mut self, label: &str) -> Option<Entry> {
+        let e = self.index().sub(label);
+        self.found(e)
+    }
+
+    /// Records an alarm or note.
+    pub fn diag(&mut self, t: &'static msg::Template, span: Span, a: msg::Args) {
+        self.diags.push(t, span, a);
+    }
+
+    /// Records a failed evaluation.
+    pub fn fail(&mut self, f: Fail) {
+        self.diags.push(f.template, f.span, f.args);
+    }
+}
+
+impl Exec {
+    /// The state a program starts in.
+    pub fn new(settings: &Settings) -> Exec {
+        let start = vars::parse_start(settings.text(T::MacroVariables)).unwrap_or_default();
+        Exec {
+            vars: Vars::new(&start),
+            frames: Vec::new(),
+            loops: Vec::new(),
+            repeated: 0,
+            high: 0,
+            jumped: false,
+            main: None,
+            main_runs: 0,
+        }
+    }
+
+    /// Decides what happens to `block`, the line at `ctx.here`: a macro line
+    /// is executed or rewritten into plain words; a program number ends the
+    /// program being run.
+    pub fn before(&mut self, ctx: &mut Ctx, block: &mut Block) -> Flow {
+        if ctx.here.offset < self.high {
+            self.repeated += 1;
+            let limit = ctx.settings.int(P::LimitBlocks).max(1) as u64;
+            if self.repeated > limit {
+                ctx.diag(&msg::BLOCK_LIMIT, block.span, args![limit, setting = "limits.blocks"]);
+                return Flow::Stop;
+            }
+        }
+        self.high = self.high.max(ctx.next.offset);
+        let Some(macros) = ctx.rules.macros.as_ref() else { return Flow::Run };
+        if self.main.is_none() {
+            if let Some(flow) = self.start(ctx, block, macros) {
+                return flow;
+            }
+        }
+        match block.kind {
+            BlockKind::ProgramNumber(_) if macros.flavor == Flavor::Fanuc => self.program_boundary(ctx, block),
+            BlockKind::Macro => match macros.flavor {
+                Flavor::Fanuc => fanuc::line(self, ctx, block, macros),
+                Flavor::LinuxCnc => oword::line(self, ctx, block, macros),
+            },
+            _ if macros.flavor == Flavor::Fanuc && macros.macro_calls => fanuc::g65(self, ctx, block, macros),
+            _ => Flow::Run,
+        }
+    }
+
+    /// After the interpreter ran `block`: subprogram calls and returns.
+    pub fn after(&mut self, ctx: &mut Ctx, block: &Block, ended: bool) -> Flow {
+        let Some(macros) = ctx.rules.macros.as_ref() else { return Flow::Run };
+        if ended && !self.frames.is_empty() {
+            // M30/M02 in a subprogram ends the program.
+            return Flow::Stop;
+        }
+        if macros.subprograms { fanuc::m98_m99(self, ctx, block, macros) } else { Flow::Run }
+    }
+
+    /// At the end of the text: a call still open returns (with a warning).
+    pub fn at_end(&mut self, ctx: &mut Ctx) -> Flow {
+        if self.frames.is_empty() {
+            return Flow::Stop;
+        }
+        let span = Span::new(ctx.text.len(), ctx.text.len());
+        ctx.diag(&msg::SUB_RUNS_OFF, span, args![]);
+        self.return_from(ctx);
+        Flow::Skip
+    }
+
+    /// The first block: where the main program starts (`program.main`).
+    fn start(&mut self, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Option<Flow> {
+        let wanted = ctx.settings.int(P::MainProgram);
+        if macros.flavor != Flavor::Fanuc || wanted <= 0 {
+            self.main = Some(ctx.here);
+            return None;
+        }
+        let Some(e) = ctx.program(wanted as u32) else {
+            ctx.diag(&msg::PROGRAM_NOT_FOUND, block.span, args![n = wanted, setting = "program.main"]);
+            return Some(Flow::Stop);
+        };
+        self.main = Some(e.next);
+        self.go(ctx, e.next);
+        Some(Flow::Skip)
+    }
+
+    /// A program number after the first: the program being run has ended.
+    fn program_boundary(&mut self, ctx: &mut Ctx, block: &Block) -> Flow {
+        if self.main.is_some_and(|m| m.offset >= ctx.here.offset) || ctx.here.offset == 0 {
+            return Flow::Skip;
+        }
+        if self.main.is_some_and(|m| m.offset < ctx.here.offset) && self.frames.is_empty() {
+            // The main program ends where the next program starts.
+            return Flow::Stop;
+        }
+        ctx.diag(&msg::SUB_RUNS_OFF, block.span, args![]);
+        self.return_from(ctx);
+        Flow::Skip
+    }
+
+    /// Goes on at `to`.
+    pub fn go(&mut self, ctx: &mut Ctx, to: At) {
+        self.jumped = true;
+        ctx.jump = Some(to);
+    }
+
+    /// The loops open at the current call level.
+    pub fn loops(&mut self) -> &mut Vec<Loop> {
+        match self.frames.last_mut() {
+            Some(f) => &mut f.loops,
+            None => &mut self.loops,
+        }
+    }
+
+    /// Enters a call of `body`, returning to `ctx.next`; false (after an
+    /// alarm) when the nesting would be too deep.
+    pub fn call(&mut self, ctx: &mut Ctx, kind: CallKind, body: At, repeats: u32, span: Span, macros: &Macros) -> bool {
+        let depth = |k: CallKind| self.frames.iter().filter(|f| f.kind == k).count() as u32;
+        let (limit, what) = match kind {
+            CallKind::Sub => (macros.sub_depth, "M98"),
+            CallKind::Macro => (macros.macro_depth, "G65"),
+        };
+        let ours = ctx.settings.int(P::LimitCallDepth).max(1) as u32;
+        if depth(kind) >= limit {
+            ctx.diag(&msg::CALL_TOO_DEEP, span, args![what, limit, source = macros.source]);
+            return false;
+        }
+        if self.frames.len() as u32 >= ours {
+            ctx.diag(&msg::CALL_TOO_DEEP, span, args![what, limit = ours, source = "limits.call_depth"]);
+            return false;
+        }
+        self.frames.push(Frame {
+            kind,
+            ret: ctx.next,
+            body,
+            repeats,
+            call_line: ctx.here.line,
+            loops: Vec::new(),
+            args: None,
+        });
+        if kind == CallKind::Macro {
+            self.vars.levels.push(vars::Locals::default());
+        }
+        self.go(ctx, body);
+        true
+    }
+
+    /// Leaves the innermost call, back to its caller.
+    pub fn return_from(&mut self, ctx: &mut Ctx) -> Option<Frame> {
+        let f = self.frames.pop()?;
+        if f.kind == CallKind::Macro && self.vars.levels.len() > 1 {
+            self.vars.levels.pop();
+        }
+        self.go(ctx, f.ret);
+        Some(f)
+    }
+
+    /// The state as reached in a text `bytes` longer before every offset it holds.
+    pub fn shift(&mut self, bytes: isize) {
+        // The main program's start is where reading began, before the edit: it stays.
+        let at = |a: &mut At| a.offset = a.offset.saturating_add_signed(bytes);
+        self.high = self.high.saturating_add_signed(bytes);
+        for f in &mut self.frames {
+            at(&mut f.ret);
+            at(&mut f.body);
+            f.loops.iter_mut().for_each(|l| at(&mut l.head));
+        }
+        self.loops.iter_mut().for_each(|l| at(&mut l.head));
+    }
+
+    /// The line the outermost active call was made from (0: none).
+    pub fn call_line(&self) -> u32 {
+        self.frames.first().map_or(0, |f| f.call_line)
+    }
+}
+
+/// Reads the variables for an expression.
+pub struct Vals<'a> {
+    /// The variables.
+    pub vars: &'a Vars,
+    /// The modal state.
+    pub modal: &'a Modal,
+    /// The language.
+    pub flavor: Flavor,
+    /// The controller's title (for messages).
+    pub title: &'static str,
+}
+
+impl Env for Vals<'_> {
+    fn get(&mut self, n: i64, span: Span) -> Result<Val, Fail> {
+        match self.flavor {
+            Flavor::Fanuc => fanuc::read(self, n, span),
+            Flavor::LinuxCnc => oword::read(self, n, span),
+        }
+    }
+
+    fn named(&mut self, name: &str, span: Span) -> Result<Val, Fail> {
+        oword::named(self, name, span)
+    }
+
+    fn exists(&mut self, name: &str) -> bool {
+        self.vars.named(name).is_some()
+    }
+
+    fn increment(&self) -> f64 {
+        if self.modal.inch { 0.0001 } else { 0.001 }
+    }
+
+    fn flavor(&self) -> Flavor {
+        self.flavor
+    }
+}
+
+/// Evaluates `e` against the current variables.
+pub fn eval(ex: &Exec, ctx: &Ctx, e: &expr::Expr) -> Result<Val, Fail> {
+    let flavor = ctx.rules.macros.as_ref().map_or(Flavor::Fanuc, |m| m.flavor);
+    let mut env = Vals { vars: &ex.vars, modal: ctx.modal, flavor, title: ctx.rules.title() };
+    expr::eval(e, &mut env)
+}
+
+/// Fills `block` with the words of a macro line, their values evaluated;
+/// false after an alarm. A vacant value drops its word (Fanuc).
+pub fn fill(ex: &Exec, ctx: &mut Ctx, block: &mut Block, line: &stmt::Line, words: &[stmt::MWord]) -> bool {
+    block.words.clear();
+    block.deleted = line.deleted;
+    block.n = line.n;
+    block.kind = BlockKind::Normal;
+    let lengths = b"XYZUVWIJKRFECABH";
+    for w in words {
+        let num = match &w.value {
+            stmt::Value::Num(n) => *n,
+            stmt::Value::Expr(e) => match eval(ex, ctx, e) {
+                Ok(None) => continue,
+                Ok(Some(v)) => {
+                    let inc = if ctx.modal.inch { 1e4 } else { 1e3 };
+                    let length = lengths.contains(&w.letter);
+                    let value = if length { (v * inc).round() / inc } else { v };
+                    number(value, length)
+                }
+                Err(f) => {
+                    ctx.fail(f);
+                    return false;
+                }
+            },
+        };
+        let word = Word { letter: w.letter, num, span: w.span };
+        if w.letter == b'N' {
+            block.n = Some(word);
+            continue;
+        }
+        if let Some(first) = block.push(word) {
+            if w.letter != b'G' && w.letter != b'M' {
+                ctx.diag(&msg::REPEATED_ADDRESS, w.span, args![letter = w.letter as char, first, second = word]);
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// A computed value as a number: a length always reads as if written with
+/// a decimal point (in mm or inch), any other address as a whole number
+/// when it is one.
+fn number(value: f64, length: bool) -> Number {
+    let value = if value == 0.0 { 0.0 } else { value };
+    let has_point = length || value.fract() != 0.0;
+    let int = value.abs().trunc();
+    let int_digits = if int < 1.0 { 1 } else { (int.log10().floor() as u8).saturating_add(1) };
+    Number { value, has_point, int_digits, frac_digits: if has_point { 4 } else { 0 } }
+}
+
+/// The text of a line for the macro parser.
+pub fn source_of(ctx: &Ctx, span: Span) -> expr::Src {
+    stmt::source(ctx.text, span)
+}
+
+/// Parses the macro line `block`; `None` after an alarm.
+pub fn parse_line(ctx: &mut Ctx, block: &Block, flavor: Flavor) -> Option<stmt::Line> {
+    let src = source_of(ctx, block.span);
+    let rules = ctx.rules;
+    match stmt::parse(&src, flavor, &|c| rules.has_address(c)) {
+        Ok(l) => Some(l),
+        Err(e) => {
+            ctx.diag(&msg::MACRO_SYNTAX, e.span, e.args());
+            None
+        }
+    }
+}
+
+/// The truth of a condition: not vacant and not zero.
+pub fn truth(v: Val) -> bool {
+    v.is_some_and(|v| v != 0.0)
+}
