@@ -63,13 +63,15 @@ impl Interp {
         block(&mut r, ctl, b);
     }
 
-    /// Reading is over: the continuous thread and the threads being grouped end.
-    pub fn finish(&mut self, events: &mut Vec<Event>, diags: &mut Diagnostics) {
+    /// Reading is over: the continuous thread and the threads being grouped
+    /// end; `checks`: the controller's end-of-program checks run (not after
+    /// an error that stopped the interpreter).
+    pub fn finish(&mut self, events: &mut Vec<Event>, diags: &mut Diagnostics, checks: bool) {
         let ctl = self.ctl;
         let mut r =
             Reader { m: &mut self.m, s: &self.s, rules: &ctl.rules, increments: self.increments, events, diags };
         r.close();
-        if let Some(finish) = ctl.finish {
+        if let Some(finish) = ctl.finish.filter(|_| checks) {
             finish(&mut r);
         }
     }

@@ -213,6 +213,7 @@ impl Reading {
     ) -> bool {
         let mut block = Block::default();
         let mut count = 0usize;
+        let mut aborted = false;
         loop {
             if count > 0 && count % every == 0 && !checkpoint(lexer.offset(), lexer.line() + 1, self) {
                 return false;
@@ -229,11 +230,14 @@ impl Reading {
                 lexer.jump(to.offset, to.line);
             }
             count += 1;
-            if flow == Flow::Stop || self.asm.stopped() {
+            if flow == Flow::Abort {
+                aborted = true;
+            }
+            if matches!(flow, Flow::Stop | Flow::Abort) || self.asm.stopped() {
                 break;
             }
         }
-        self.it.finish(&mut self.events, &mut self.diags);
+        self.it.finish(&mut self.events, &mut self.diags, !aborted);
         self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
         true
     }

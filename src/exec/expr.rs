@@ -601,7 +601,8 @@ fn binary(op: Op, x: Val, y: Val, span: Span, flavor: Flavor) -> Result<Val, Fai
         Op::Sub => Some(a - b),
         Op::Mul => Some(a * b),
         Op::Div | Op::Mod if b == 0.0 => {
-            return Err(Fail { template: &msg::DIVIDED_BY_ZERO, span, args: crate::args![] });
+            let t = if flavor == Flavor::LinuxCnc { &msg::LCNC_DIVIDE_BY_ZERO } else { &msg::DIVIDED_BY_ZERO };
+            return Err(Fail { template: t, span, args: crate::args![] });
         }
         Op::Div => Some(a / b),
         Op::Mod => Some(match flavor {

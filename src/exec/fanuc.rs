@@ -245,7 +245,7 @@ pub fn g65(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> 
 /// The body of program `O(p)`; `None` after an alarm.
 fn program(ctx: &mut Ctx, p: f64, span: Span) -> Option<super::index::At> {
     let n = p.round();
-    if n < 1.0 || n > 99_999_999.0 || n != p {
+    if !(1.0..=99_999_999.0).contains(&n) || n != p {
         ctx.diag(&msg::BAD_PROGRAM_NUMBER, span, args![value = p]);
         return None;
     }

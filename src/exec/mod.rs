@@ -66,6 +66,8 @@ pub enum Flow {
     Skip,
     /// The program has ended here.
     Stop,
+    /// The interpreter stopped at an error (LinuxCNC): nothing after it runs, no end-of-program check.
+    Abort,
 }
 
 /// Why a frame was entered.
@@ -128,6 +130,14 @@ pub struct Exec {
     main: Option<At>,
     /// Runs of the main program made (M99 in the main program).
     main_runs: u32,
+    /// LinuxCNC: the subroutines defined so far (passed over, or found by a call).
+    pub defined: Vec<Box<str>>,
+    /// LinuxCNC: repeat loops by label, with the runs left (kept across a return, as rs274 keeps them).
+    pub repeats: Vec<Loop>,
+    /// LinuxCNC: a break's flag, cleared by the next do/while's condition.
+    pub broke: bool,
+    /// LinuxCNC: a continue's flag (its loop's label), which makes a break of another loop do nothing.
+    pub continued: Option<Box<str>>,
 }
 
 /// What the flow needs besides its own state for one block.
@@ -230,6 +240,10 @@ impl Exec {
             jumped: false,
             main: None,
             main_runs: 0,
+            defined: Vec::new(),
+            repeats: Vec::new(),
+            broke: false,
+            continued: None,
         }
     }
 
@@ -266,8 +280,8 @@ impl Exec {
     /// After the interpreter ran `block`: subprogram calls and returns.
     pub fn after(&mut self, ctx: &mut Ctx, block: &Block, ended: bool) -> Flow {
         let Some(macros) = ctx.rules.macros.as_ref() else { return Flow::Run };
-        if ended && !self.frames.is_empty() {
-            // M30/M02 in a subprogram ends the program.
+        if ended && (!self.frames.is_empty() || macros.flavor == Flavor::LinuxCnc) {
+            // M30/M02 in a subprogram ends the program; rs274 reads nothing after it.
             return Flow::Stop;
         }
         if macros.subprograms { fanuc::m98_m99(self, ctx, block, macros) } else { Flow::Run }
@@ -334,11 +348,13 @@ impl Exec {
         let depth = |k: CallKind| self.frames.iter().filter(|f| f.kind == k).count() as u32;
         let (limit, what) = match kind {
             CallKind::Sub => (macros.sub_depth, "M98"),
+            CallKind::Macro if macros.flavor == Flavor::LinuxCnc => (macros.macro_depth, "call"),
             CallKind::Macro => (macros.macro_depth, "G65"),
         };
         let ours = ctx.settings.int(P::LimitCallDepth).max(1) as u32;
         if depth(kind) >= limit {
-            ctx.diag(&msg::CALL_TOO_DEEP, span, args![what, limit, source = macros.source]);
+            let t = if macros.flavor == Flavor::LinuxCnc { &msg::LCNC_TOO_DEEP } else { &msg::CALL_TOO_DEEP };
+            ctx.diag(t, span, args![what, limit, source = macros.source]);
             return false;
         }
         if self.frames.len() as u32 >= ours {
@@ -448,9 +464,11 @@ pub fn fill(ex: &Exec, ctx: &mut Ctx, block: &mut Block, line: &stmt::Line, word
             stmt::Value::Expr(e) => match eval(ex, ctx, e) {
                 Ok(None) => continue,
                 Ok(Some(v)) => {
+                    // Fanuc rounds a variable at an address to the least input increment; rs274 does not.
                     let inc = if ctx.modal.inch { 1e4 } else { 1e3 };
                     let length = lengths.contains(&w.letter);
-                    let value = if length { (v * inc).round() / inc } else { v };
+                    let fanuc = ctx.rules.macros.as_ref().is_some_and(|m| m.flavor == Flavor::Fanuc);
+                    let value = if length && fanuc { (v * inc).round() / inc } else { v };
                     number(value, length)
                 }
                 Err(f) => {

@@ -27,16 +27,25 @@ pub fn line(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) ->
         return Flow::Skip;
     }
     statement(ex, ctx, block, &line, macros).unwrap_or_else(|f| {
+        // rs274 stops at its first error.
         ctx.fail(f);
         block.has_error = true;
-        Flow::Stop
+        Flow::Abort
     })
 }
 
 fn statement(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, line: &Line, macros: &Macros) -> Result<Flow, Fail> {
     match &line.stmt {
         Stmt::Words(words, sets) => {
-            // Every value on the line is read before any parameter is set.
+            // A named parameter set on the line exists, at 0, while the line
+            // is read; every value is read before any parameter is set.
+            for a in sets {
+                if let Expr::Named(name, _) = &a.target {
+                    if ex.vars.named(name).is_none() {
+                        ex.vars.set_named(name, 0.0);
+                    }
+                }
+            }
             let mut values = Vec::with_capacity(sets.len());
             for a in sets {
                 values.push(eval(ex, ctx, &a.value)?.unwrap_or(0.0));
@@ -119,8 +128,19 @@ fn oword(
         |what: &'static str| Fail { template: &msg::OWORD_UNMATCHED, span, args: args![label = shown(label), what] };
     match kw {
         OKw::Sub => {
-            // Met in the flow: the definition is skipped.
+            // Met in the flow: the definition is skipped and known from now on;
+            // met again after a call found it: rs274 refuses it.
+            if ex.defined.iter().any(|d| &**d == label) {
+                // rs274 writes the name between bars here.
+                let label =
+                    if label.bytes().all(|c| c.is_ascii_digit()) { format!("o{label}") } else { format!("o|{label}|") };
+                return Err(Fail { template: &msg::LCNC_SUB_ILLEGAL, span, args: args![line = here.line, label] });
+            }
             let end = next(ctx, label, here, &[OKw::EndSub]).ok_or_else(|| missing("endsub"))?;
+            ex.defined.push(label.into());
+            // Passing over the endsub, rs274 sets #<_value> as a return without a value does.
+            ex.vars.set_named("_value", 0.0);
+            ex.vars.set_named("_value_returned", 0.0);
             ex.go(ctx, end.next);
         }
         OKw::EndSub | OKw::Return => {
@@ -140,9 +160,16 @@ fn oword(
             for (k, e) in args.iter().enumerate().take(30) {
                 values[k] = Some(eval(ex, ctx, e)?.unwrap_or(0.0));
             }
-            let Some(sub) = ctx.sub(label) else {
-                return Err(Fail { template: &msg::SUB_NOT_FOUND, span, args: args![label = shown(label)] });
+            // A subroutine not yet defined is sought after the call.
+            let known = ex.defined.iter().any(|d| &**d == label);
+            let sub = if known { ctx.sub(label) } else { next(ctx, label, here, &[OKw::Sub]) };
+            let Some(sub) = sub else {
+                let t = if known { &msg::SUB_NOT_FOUND } else { &msg::LCNC_SUB_SOUGHT };
+                return Err(Fail { template: t, span, args: args![label = shown(label), line = here.line] });
             };
+            if !known {
+                ex.defined.push(label.into());
+            }
             if ex.call(ctx, CallKind::Macro, sub.next, 0, span, macros) {
                 ex.vars.top().num = values;
             }
@@ -161,8 +188,11 @@ fn oword(
         OKw::While => {
             let before = ctx.prev_oword(label, here.offset, &[OKw::Do, OKw::While, OKw::EndWhile]);
             if let Some((OKw::Do, d)) = before {
-                // The end of a do … while: again from the do while the condition holds.
-                if truth(eval(ex, ctx, &args[0])?) {
+                // The end of a do … while: again from the do while the condition
+                // holds, unless a break's flag is set (it is cleared here).
+                let again = truth(eval(ex, ctx, &args[0])?) && !ex.broke;
+                ex.broke = false;
+                if again {
                     ex.go(ctx, d.next);
                 }
             } else if !truth(eval(ex, ctx, &args[0])?) {
@@ -175,6 +205,19 @@ fn oword(
             ex.go(ctx, head.1.at);
         }
         OKw::Repeat => {
+            // A count left by a return from inside the loop goes on (rs274 keeps it).
+            // Each run of the body takes one from the count as it starts.
+            if let Some(k) = ex.repeats.iter().rposition(|l| &*l.id == label) {
+                let left = ex.repeats[k].left.unwrap_or(0);
+                if left == 0 {
+                    ex.repeats.remove(k);
+                    let end = next(ctx, label, here, &[OKw::EndRepeat]).ok_or_else(|| missing("endrepeat"))?;
+                    ex.go(ctx, end.next);
+                } else {
+                    ex.repeats[k].left = Some(left - 1);
+                }
+                return Ok(());
+            }
             let n = eval(ex, ctx, &args[0])?.unwrap_or(0.0);
             let times = if n >= 1.0 { n.round().min(1e15) as u64 } else { 0 };
             if times == 0 {
@@ -182,20 +225,31 @@ fn oword(
                 ex.go(ctx, end.next);
             } else {
                 let body = ctx.next;
-                ex.loops().push(Loop { id: label.into(), head: body, left: Some(times) });
+                ex.repeats.push(Loop { id: label.into(), head: body, left: Some(times - 1) });
             }
         }
         OKw::EndRepeat => end_repeat(ex, ctx, label, span)?,
         OKw::Break => {
-            let end = next(ctx, label, here, &[OKw::EndWhile, OKw::EndRepeat, OKw::While])
-                .ok_or_else(|| missing("loop end"))?;
-            drop_loop(ex, label);
+            let head = ctx.prev_oword(label, here.offset, &[OKw::Repeat, OKw::While, OKw::Do]);
+            if let Some((OKw::Repeat, r)) = head {
+                let block = line_text(ctx.text, here);
+                let a = args![line = here.line, block, found = r.at.line];
+                return Err(Fail { template: &msg::LCNC_BREAK_NOT_LOOP, span, args: a });
+            }
+            if ex.continued.as_deref().is_some_and(|c| c != label) {
+                // A continue's flag of another loop still set: rs274 does nothing here.
+                ex.continued = None;
+                return Ok(());
+            }
+            let end = next(ctx, label, here, &[OKw::EndWhile, OKw::While]).ok_or_else(|| missing("endwhile"))?;
+            ex.broke = true;
             ex.go(ctx, end.next);
         }
         OKw::Continue => {
             let end = next(ctx, label, here, &[OKw::EndWhile, OKw::EndRepeat, OKw::While])
                 .ok_or_else(|| missing("loop end"))?;
             // Continue is the loop's end reached early.
+            ex.continued = Some(label.into());
             ex.go(ctx, end.at);
         }
     }
@@ -254,15 +308,15 @@ fn line_span(text: &str, e: Entry) -> Span {
 }
 
 fn end_repeat(ex: &mut Exec, ctx: &mut Ctx, label: &str, span: Span) -> Result<(), Fail> {
-    let loops = ex.loops();
+    let loops = &mut ex.repeats;
     let Some(k) = loops.iter().rposition(|l| &*l.id == label) else {
         return Err(Fail { template: &msg::OWORD_UNMATCHED, span, args: args![label = shown(label), what = "repeat"] });
     };
     loops.truncate(k + 1);
     let l = &mut loops[k];
-    let left = l.left.unwrap_or(1).saturating_sub(1);
+    let left = l.left.unwrap_or(0);
     if left > 0 {
-        l.left = Some(left);
+        l.left = Some(left - 1);
         let body = l.head;
         ex.go(ctx, body);
     } else {
@@ -271,11 +325,10 @@ fn end_repeat(ex: &mut Exec, ctx: &mut Ctx, label: &str, span: Span) -> Result<(
     Ok(())
 }
 
-fn drop_loop(ex: &mut Exec, label: &str) {
-    let loops = ex.loops();
-    if let Some(k) = loops.iter().rposition(|l| &*l.id == label) {
-        loops.truncate(k);
-    }
+/// The text of the line at `at`, as written.
+fn line_text(text: &str, at: At) -> String {
+    let rest = &text[at.offset.min(text.len())..];
+    rest[..rest.find(['\n', '\r']).unwrap_or(rest.len())].to_string()
 }
 
 /// An o-word label as written: `o100`, `o<name>`.

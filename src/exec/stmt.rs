@@ -347,11 +347,7 @@ fn oword(p: &mut Parser) -> Result<Stmt, SyntaxError> {
             }
         }
         OKw::If | OKw::ElseIf | OKw::While | OKw::Repeat => args.push(p.bracketed()?),
-        OKw::Return | OKw::EndSub => {
-            if p.peek() == b'[' {
-                args.push(p.bracketed()?);
-            }
-        }
+        OKw::Return | OKw::EndSub if p.peek() == b'[' => args.push(p.bracketed()?),
         _ => {}
     }
     Ok(Stmt::O(label, k, args, span))

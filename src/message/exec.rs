@@ -63,6 +63,21 @@ templates! {
     RETURN_OUTSIDE_SUB = JumpTarget:
         "{label}: return or endsub outside a subroutine",
         "“{label}”：在子程序之外返回";
+    LCNC_TOO_DEEP = CallDepth:
+        "Too many subroutine levels ({what}: {limit}, {source})",
+        "LinuxCNC 报警“Too many subroutine levels”（“{what}”：{limit} 层，{source}）";
+    LCNC_DIVIDE_BY_ZERO = MacroValue:
+        "Attempt to divide by zero",
+        "LinuxCNC 报警“Attempt to divide by zero”（除数为零）";
+    LCNC_SUB_SOUGHT = JumpTarget:
+        "EOF seeking o-word: {label} from line: {line} (a subroutine is known once reading has passed its definition, or found after the call)",
+        "LinuxCNC 报警“EOF seeking o-word: {label} from line: {line}”（子程序须在调用之前定义，或在调用之后的文本中）";
+    LCNC_SUB_ILLEGAL = JumpTarget:
+        "line:{line} sub: {label} found in illegal location (its definition was already read when it was called)",
+        "LinuxCNC 报警“line:{line} sub: {label} found in illegal location”（调用时已读过该定义）";
+    LCNC_BREAK_NOT_LOOP = JumpTarget:
+        "{line}: no matching while/do label: '{block}' (found 'repeat' in line {found})",
+        "LinuxCNC 报警“{line}: no matching while/do label: '{block}' (found 'repeat' in line {found})”";
     CALL_TOO_DEEP = CallDepth:
         "{what}: calls nested deeper than {limit} ({source})",
         "{what}：调用嵌套超过 {limit} 层（{source}）";

@@ -161,6 +161,16 @@ pub fn available() -> bool {
 /// 0\nG76 …"), or why it could not run. A program must end with M2/M30 or
 /// `%`, else rs274 fails with "File ended with no percent sign or program end".
 pub fn run(program: &str) -> Result<Vec<Call>, String> {
+    match run_keeping(program)? {
+        (calls, None) => Ok(calls),
+        (_, Some(err)) => Err(err),
+    }
+}
+
+/// [`run`], keeping the calls rs274 made before it refused the program:
+/// (the calls, rs274's message and offending block if it refused it).
+/// Err: why rs274 could not run.
+pub fn run_keeping(program: &str) -> Result<(Vec<Call>, Option<String>), String> {
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     static SEQ: AtomicUsize = AtomicUsize::new(0);
     let k = SEQ.fetch_add(1, Ordering::Relaxed);
@@ -190,11 +200,27 @@ pub fn run(program: &str) -> Result<Vec<Call>, String> {
     if out.status.code().is_none() {
         return Err(format!("rs274 was killed ({}) three times", out.status));
     }
+    let calls = parse(&String::from_utf8_lossy(&out.stdout));
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
-        return Err(err.lines().filter(|l| *l != "executing").collect::<Vec<_>>().join("\n"));
+        let err = err.lines().filter(|l| *l != "executing").collect::<Vec<_>>().join("\n");
+        return Ok((calls.unwrap_or_default(), Some(err)));
     }
-    parse(&String::from_utf8_lossy(&out.stdout))
+    Ok((calls?, None))
+}
+
+/// rs274's message without the file name that two of its o-word messages
+/// carry (`EOF in file:NAME seeking o-word: …`, `File:NAME line:N sub: …`),
+/// which is the temporary file when it runs live and the recording's name in
+/// `tests/linuxcnc/`: the text after the name, else the message unchanged.
+pub fn without_file(message: &str) -> &str {
+    for key in ["in file:", "File:"] {
+        if let Some(i) = message.find(key) {
+            let rest = &message[i + key.len()..];
+            return rest.split_once(' ').map_or(rest, |(_, after)| after.trim_start());
+        }
+    }
+    message
 }
 
 #[cfg(test)]
@@ -210,6 +236,19 @@ mod tests {
         assert_eq!(c[2], Call::SyncStop { n: Some(123456) });
         assert_eq!(c[3], Call::Move { kind: Kind::Feed, x: 9.0, z: 1.0, n: Some(7) });
         assert!(parse("executing\n").is_err());
+    }
+
+    #[test]
+    fn drops_file_names() {
+        assert_eq!(
+            without_file("EOF in file:/tmp/x/prog.ngc seeking o-word: o<a> from line: 3"),
+            "seeking o-word: o<a> from line: 3"
+        );
+        assert_eq!(
+            without_file("File:a.ngc line:8 sub: o|a| found in illegal location"),
+            "line:8 sub: o|a| found in illegal location"
+        );
+        assert_eq!(without_file("Attempt to divide by zero"), "Attempt to divide by zero");
     }
 
     #[test]

@@ -1,0 +1,420 @@
+//! The LinuxCNC dialect's o-words, parameters and expressions against
+//! LinuxCNC's own interpreter, `rs274` (Debian `linuxcnc-uspace`
+//! 2.9.0~pre1+git20230208.f1270d6ed7): the programs `tests/linuxcnc/oword-*.ngc`
+//! (what each shows: `tests/linuxcnc/README.md`; the semantics with their
+//! sources: the project note `linuxcnc-owords.md`).
+//!
+//! Learnt from LinuxCNC's G-code manual, chapter "O Codes"
+//! (`docs/src/gcode/o-code.adoc`: sub/endsub/call with up to 30 arguments,
+//! return values in `#<_value>`, while, do, repeat, if/elseif/else, break,
+//! continue, nesting) and "G-code Overview" (`docs/src/gcode/overview.adoc`:
+//! Parameters, Numbered/Subroutine/Named Parameters, Expressions, Binary
+//! Operators and their precedence, Functions, Item order: "A parameter
+//! setting does not take effect until after all parameter values on the
+//! same line have been found"), and from the interpreter itself, read at
+//! the packaged commit in `src/emc/rs274ngc/`: `interp_o_word.cc`
+//! (`convert_control_functions`, `execute_call`, `execute_return`,
+//! `control_back_to`: a call of a sub not yet defined reads ahead for it;
+//! `control_save_offset`; `enter_context`: 10 call levels), `interp_read.cc`
+//! (`read_o`: labels local to the sub, call arguments, return values read
+//! with the line; `read_text`; `read_real_expression`, `read_real_value`,
+//! `read_atan`, `read_parameter_setting`), `interp_internal.cc`
+//! (`precedence`), `interp_execute.cc` (`execute_binary1/2`,
+//! `execute_unary`), `interp_namedparams.cc` (`find_named_param`,
+//! `add_named_param`, `store_named_param`: `#<_name>` global, `#<name>`
+//! local to its call level) and `rs274ngc_pre.cc` (`Interp::_execute`: the
+//! parameter settings of a line are stored after it is read, o-word lines
+//! are not executed as blocks; `Interp::_read`).
+//!
+//! Every program rs274 accepts: no alarm; every synchronised move of the
+//! plan (Thread, ScrewIn, Runout) is rs274's synchronised `STRAIGHT_FEED`,
+//! in order, within 0.001 (rs274's X is a radius, the plan's a diameter),
+//! at the lead rs274 synchronises to, and — when rs274 runs live on the
+//! numbered program — made by the same source line (inside a subroutine,
+//! the subroutine's block, not the call); the rapids and plain feeds are
+//! rs274's traverses and feeds, in order, once the plan knows where the
+//! tool is (rs274 starts at X0 Z0), zero-length moves left out on both
+//! sides. Every program rs274 refuses: an alarm on the line it names whose
+//! message contains rs274's (without the file name rs274 puts in two of
+//! them; whitespace ignored, since rs274 quotes the line as written), no
+//! alarm on an earlier line, and the synchronised moves rs274 made before
+//! refusing are the plan's first ones. The `oword-quirk-*` programs are
+//! accepted programs where rs274 does what its source says rather than what
+//! the manual suggests (a break's or continue's flag left set, a repeat
+//! count left over by a return, `#<_value>` cleared by passing over a
+//! definition, a named parameter created by its own line): their own test.
+//!
+//! rs274 runs live. Without it the test fails when `CI` is set; otherwise it
+//! compares with the recordings in `tests/linuxcnc/` and says so.
+
+mod common;
+#[path = "common/rs274.rs"]
+mod rs274;
+
+use common::plan_with;
+use rs274::{Call, Kind, Segment, synced_runs};
+use screwcut::motion::{Move, MoveKind, Point};
+use screwcut::{Dialect, Plan, Severity};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+const TOL: f64 = 0.001;
+
+fn dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/linuxcnc")
+}
+
+fn read(name: &str) -> String {
+    std::fs::read_to_string(dir().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// Whether rs274 runs here; fails under CI when it does not.
+fn live() -> bool {
+    static LIVE: OnceLock<bool> = OnceLock::new();
+    *LIVE.get_or_init(|| {
+        if rs274::available() {
+            return true;
+        }
+        if std::env::var_os("CI").is_some() {
+            panic!(
+                "rs274 (LinuxCNC's interpreter) is not installed, and CI is set: the LinuxCNC oracle tests need it. Install it with `apt-get install linuxcnc-uspace` (cargo xtask test does)"
+            );
+        }
+        eprintln!(
+            "note: rs274 is not installed (apt-get install linuxcnc-uspace): comparing with the recordings in tests/linuxcnc/ only"
+        );
+        false
+    })
+}
+
+/// The recorded o-word programs whose names start with `prefix`, sorted.
+fn programs(prefix: &str) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir())
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter_map(|f| f.strip_suffix(".ngc").map(str::to_owned))
+        .filter(|n| n.starts_with(prefix))
+        .collect();
+    v.sort();
+    v
+}
+
+/// The programs rs274 runs to the end, quirks aside.
+fn accepted() -> Vec<String> {
+    programs("oword-").into_iter().filter(|n| !n.starts_with("oword-err-") && !n.starts_with("oword-quirk-")).collect()
+}
+
+/// rs274's verdict on one program.
+struct Verdict {
+    /// The calls it made (before the error, if it refused the program).
+    calls: Vec<Call>,
+    /// Its message and the block it names, if it refused the program.
+    refused: Option<(String, String)>,
+    /// Each N word's source line, when rs274 ran the numbered program (live).
+    lines: Option<HashMap<u64, u32>>,
+}
+
+fn split(err: &str) -> (String, String) {
+    let (message, block) = err.split_once('\n').unwrap_or((err, ""));
+    (message.to_string(), block.to_string())
+}
+
+/// The source line of each N word (`rs274::numbered` gives every block one).
+fn lines_of_n(program: &str) -> HashMap<u64, u32> {
+    let mut map = HashMap::new();
+    for (i, l) in program.lines().enumerate() {
+        let t = l.trim_start().trim_start_matches('/').trim_start();
+        if let Some(rest) = t.strip_prefix(['N', 'n']) {
+            let d: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+            if let Ok(n) = d.parse() {
+                map.insert(n, i as u32 + 1);
+            }
+        }
+    }
+    map
+}
+
+/// rs274 on `text` (the recording `name` when rs274 is not installed);
+/// `numbered`: run it with each line's number as its N word.
+fn oracle(name: &str, text: &str, numbered: bool) -> Verdict {
+    if live() {
+        let program = if numbered { rs274::numbered(text) } else { text.to_string() };
+        let (calls, err) = rs274::run_keeping(&program).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let lines = numbered.then(|| lines_of_n(&program));
+        return Verdict { calls, refused: err.as_deref().map(split), lines };
+    }
+    let calls = rs274::parse(&read(&format!("{name}.out"))).unwrap_or_else(|e| panic!("{name}.out: {e}"));
+    let err = read(&format!("{name}.err"));
+    let refused = (err.lines().count() > 1).then(|| split(&err.lines().skip(1).collect::<Vec<_>>().join("\n")));
+    Verdict { calls, refused, lines: None }
+}
+
+fn linuxcnc(program: &str) -> Plan {
+    plan_with(program, Dialect::LinuxCnc, &[])
+}
+
+fn alarms(plan: &Plan) -> Vec<&screwcut::Diagnostic> {
+    plan.diagnostics.iter().filter(|d| d.severity == Severity::Error).collect()
+}
+
+fn is_synced(kind: MoveKind) -> bool {
+    matches!(kind, MoveKind::Thread | MoveKind::ScrewIn | MoveKind::Runout)
+}
+
+/// The plan's synchronised moves, in order, with their index in `plan.moves`.
+fn synced_moves(plan: &Plan) -> Vec<(usize, &Move)> {
+    plan.moves.iter().enumerate().filter(|(_, m)| is_synced(m.kind)).collect()
+}
+
+/// rs274's synchronised moves, in order.
+fn synced_segments(calls: &[Call]) -> Vec<Segment> {
+    synced_runs(calls).into_iter().flatten().collect()
+}
+
+#[track_caller]
+fn same_point(what: &str, (x, z): (f64, f64), ours: Point) {
+    assert!(
+        (ours.x / 2.0 - x).abs() <= TOL && (ours.z - z).abs() <= TOL,
+        "{what}: screwcut ({}, {}) (radius, z), rs274 ({x}, {z})",
+        ours.x / 2.0,
+        ours.z
+    );
+}
+
+/// The first `theirs.len()` synchronised moves of the plan are rs274's:
+/// ends, source lines (`lines`: each N word's line, when rs274 ran live) and leads.
+fn same_synced(name: &str, plan: &Plan, theirs: &[Segment], lines: Option<&HashMap<u64, u32>>) {
+    let ours = synced_moves(plan);
+    assert!(
+        ours.len() >= theirs.len(),
+        "{name}: {} synchronised moves, rs274 {}: {:?}",
+        ours.len(),
+        theirs.len(),
+        theirs.iter().map(|s| s.to).collect::<Vec<_>>()
+    );
+    let mut at = HashMap::new();
+    for (k, ((i, m), s)) in ours.iter().zip(theirs).enumerate() {
+        same_point(&format!("{name}: synchronised move {k} (line {}) start", m.line), s.from, m.from);
+        same_point(&format!("{name}: synchronised move {k} (line {}) end", m.line), s.to, m.to);
+        if let Some(lines) = lines {
+            let theirs = s.n.and_then(|n| lines.get(&n));
+            assert_eq!(
+                Some(&m.line),
+                theirs,
+                "{name}: synchronised move {k} to {:?} is line {}'s, rs274's is line {theirs:?}'s",
+                s.to,
+                m.line
+            );
+        }
+        at.insert(*i, *s);
+    }
+    // The lead: rs274 synchronises each G33 to K along the move, each G76
+    // cut to P (the first cut of a pass; a chain's next blocks have their own).
+    for t in &plan.threads {
+        for p in &t.passes {
+            let first = p.moves.cut.clone().find(|&i| plan.moves[i].kind == MoveKind::Thread);
+            if let Some(s) = first.and_then(|i| at.get(&i)) {
+                let (dx, dz) = (s.to.0 - s.from.0, s.to.1 - s.from.1);
+                let long = dx.abs().max(dz.abs());
+                let lead = s.pitch.abs() * long / dx.hypot(dz);
+                assert!(
+                    (lead - t.lead).abs() < 1e-5,
+                    "{name}: line {} pass {}: lead {}, rs274 synchronises to {} ({lead} along the long axis)",
+                    t.line,
+                    p.index,
+                    t.lead,
+                    s.pitch
+                );
+            }
+        }
+    }
+}
+
+/// A rapid or plain feed: (is a rapid, radius, z).
+type Plain = (bool, f64, f64);
+
+/// rs274's traverses and unsynchronised feeds, without zero-length moves.
+fn plain_theirs(calls: &[Call]) -> Vec<Plain> {
+    let (mut out, mut at) = (Vec::new(), (0.0, 0.0));
+    for c in calls {
+        if let Call::Move { kind, x, z, .. } = *c {
+            let moved = (x - at.0).abs() > 1e-9 || (z - at.1).abs() > 1e-9;
+            match kind {
+                Kind::Traverse if moved => out.push((true, x, z)),
+                Kind::Feed if moved => out.push((false, x, z)),
+                _ => {}
+            }
+            at = (x, z);
+        }
+    }
+    out
+}
+
+/// The plan's rapids and plain feeds, without zero-length moves.
+fn plain_ours(plan: &Plan) -> Vec<Plain> {
+    plan.moves
+        .iter()
+        .filter(|m| matches!(m.kind, MoveKind::Rapid | MoveKind::Feed) && m.from.dist(m.to) > 1e-9)
+        .map(|m| (m.kind == MoveKind::Rapid, m.to.x / 2.0, m.to.z))
+        .collect()
+}
+
+/// The plan's rapids and plain feeds are rs274's, after the (at most two)
+/// moves rs274 makes from its start point before the plan knows X and Z.
+fn same_plain(name: &str, plan: &Plan, calls: &[Call]) {
+    let theirs = plain_theirs(calls);
+    let ours = plain_ours(plan);
+    let skipped = theirs.len().saturating_sub(ours.len());
+    assert!(
+        skipped <= 2 && ours.len() <= theirs.len(),
+        "{name}: {} rapids and feeds, rs274 {}:\nscrewcut {ours:?}\nrs274 {theirs:?}",
+        ours.len(),
+        theirs.len()
+    );
+    for (k, (o, t)) in ours.iter().zip(&theirs[skipped..]).enumerate() {
+        assert!(
+            o.0 == t.0 && (o.1 - t.1).abs() <= TOL && (o.2 - t.2).abs() <= TOL,
+            "{name}: rapid or feed {k}: screwcut {} to ({}, {}) (radius, z), rs274 {} to ({}, {})",
+            if o.0 { "rapid" } else { "feed" },
+            o.1,
+            o.2,
+            if t.0 { "traverse" } else { "feed" },
+            t.1,
+            t.2
+        );
+    }
+}
+
+/// Compares an accepted program with rs274; returns how many synchronised moves were compared.
+fn check_accepted(name: &str) -> usize {
+    let text = read(&format!("{name}.ngc"));
+    let v = oracle(name, &text, true);
+    if let Some((message, block)) = &v.refused {
+        panic!("{name}: rs274 refuses it: {message} ({block})");
+    }
+    let plan = linuxcnc(&text);
+    let a = alarms(&plan);
+    assert!(a.is_empty(), "{name}: rs274 accepts it, screwcut alarms: {a:#?}");
+    let theirs = synced_segments(&v.calls);
+    assert!(!theirs.is_empty(), "{name}: rs274 cuts nothing synchronised");
+    let ours = synced_moves(&plan).len();
+    assert_eq!(ours, theirs.len(), "{name}: {ours} synchronised moves, rs274 {}", theirs.len());
+    same_synced(name, &plan, &theirs, v.lines.as_ref());
+    same_plain(name, &plan, &v.calls);
+    theirs.len()
+}
+
+/// Runs `check` on every program, then fails naming all that failed (each
+/// failure's message is printed as it happens); returns the sum of the results.
+fn each(names: &[String], check: fn(&str) -> usize) -> usize {
+    let mut failed = Vec::new();
+    let mut sum = 0;
+    for n in names {
+        match std::panic::catch_unwind(|| check(n)) {
+            Ok(k) => sum += k,
+            Err(_) => failed.push(n.as_str()),
+        }
+    }
+    assert!(failed.is_empty(), "{} of {} programs differ from rs274: {failed:?}", failed.len(), names.len());
+    sum
+}
+
+#[test]
+fn accepted_programs_cut_what_rs274_cuts() {
+    let names = accepted();
+    assert!(names.len() >= 14, "{names:?}");
+    let compared = each(&names, check_accepted);
+    assert!(compared >= 150, "{compared} synchronised moves compared");
+}
+
+#[test]
+fn quirks_are_rs274s() {
+    let names = programs("oword-quirk-");
+    assert!(names.len() >= 5, "{names:?}");
+    each(&names, check_accepted);
+}
+
+/// The line rs274's message names ("… from line: 14"), if it names one.
+fn line_in_message(message: &str) -> Option<u32> {
+    let (_, rest) = message.split_once("from line: ")?;
+    rest.split(|c: char| !c.is_ascii_digit()).next()?.parse().ok()
+}
+
+fn squash(s: &str) -> String {
+    s.chars().filter(|c| !c.is_whitespace()).collect()
+}
+
+/// Compares a refused program with rs274; returns 1.
+fn check_refused(name: &str) -> usize {
+    let text = read(&format!("{name}.ngc"));
+    let v = oracle(name, &text, false);
+    let (message, block) = v.refused.clone().unwrap_or_else(|| panic!("{name}: rs274 accepts it"));
+    let message = rs274::without_file(&message).to_string();
+    // A sub sought to the end of the file: rs274 names the call's line
+    // in its message and quotes the file's last block.
+    let line = line_in_message(&message).unwrap_or_else(|| {
+        let i = text.lines().position(|l| l.trim() == block.trim());
+        i.unwrap_or_else(|| panic!("{name}: rs274's block {block:?} is not a line")) as u32 + 1
+    });
+    let plan = linuxcnc(&text);
+    let a = alarms(&plan);
+    assert!(
+        a.iter().all(|d| d.line >= line),
+        "{name}: an alarm before line {line}, where rs274 stops ({message:?}): {a:#?}"
+    );
+    assert!(
+        a.iter().any(|d| d.line == line && squash(&d.message).contains(&squash(&message))),
+        "{name}: no alarm on line {line} saying rs274's {message:?}: {a:#?}"
+    );
+    // What rs274 cut before it stopped, the plan cuts first.
+    same_synced(name, &plan, &synced_segments(&v.calls), None);
+    1
+}
+
+#[test]
+fn refused_programs_alarm_where_rs274_stops() {
+    let names = programs("oword-err-");
+    assert!(names.len() >= 6, "{names:?}");
+    each(&names, check_refused);
+}
+
+#[track_caller]
+fn approx(ours: &[f64], want: &[f64]) {
+    assert!(
+        ours.len() == want.len() && ours.iter().zip(want).all(|(a, b)| (a - b).abs() < TOL),
+        "{ours:?} != {want:?}"
+    );
+}
+
+/// A few of the semantics in numbers (rs274's, from the recordings), so
+/// that a failure reads without the oracle.
+#[test]
+fn semantics_in_numbers() {
+    let plan = |name: &str| linuxcnc(&read(&format!("{name}.ngc")));
+    let cut_x =
+        |p: &Plan| -> Vec<f64> { p.moves.iter().filter(|m| m.kind == MoveKind::Thread).map(|m| m.from.x).collect() };
+    // Settings on a line take effect after it is read: X#1 #1=… moves to the old #1.
+    approx(&cut_x(&plan("oword-same-line")), &[11.4, 11.0, 10.7, 10.4, 10.4]);
+    // Arguments not passed are 0 in the sub; #1–#30 come back after the call.
+    let p = plan("oword-args-unpassed");
+    let z: Vec<f64> = p.moves.iter().filter(|m| m.kind == MoveKind::Thread).map(|m| m.from.z).collect();
+    approx(&z, &[3.2, 3.0, 3.5, 3.0]);
+    // M2 inside a subroutine ends the program: the G33 after the call never runs.
+    assert_eq!(cut_x(&plan("oword-m2-in-sub")).len(), 4);
+    // if/elseif/else: M6 1, M8 1.25, M10 1.5, M12 1.75.
+    let mut leads: Vec<f64> = plan("oword-if-elseif").threads.iter().map(|t| t.lead).collect();
+    leads.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    approx(&leads, &[1.0, 1.25, 1.5, 1.75]);
+    // Locals of the subs are not the main program's #<x> (99), and the
+    // subs counted 8 passes in #<_passes>: the last rapid goes to X29 Z38.
+    let p = plan("oword-named-params");
+    let last = p.moves.iter().rev().find(|m| m.kind == MoveKind::Rapid).unwrap();
+    common::pt(last.to, 29.0, 38.0);
+    // continue skips two passes, break ends the loop: 7 passes, then the full depth.
+    assert_eq!(cut_x(&plan("oword-break-continue")).len(), 8);
+    // A break leaves a flag that makes the next do/while run once: one spring pass, not three.
+    approx(&cut_x(&plan("oword-quirk-break-then-do")), &[11.6, 11.2, 10.8, 10.4, 10.16]);
+    // #<_value> is 0 after the reader passes over o<spring>'s endsub: the second pass is at X12.
+    approx(&cut_x(&plan("oword-quirk-endsub-value")), &[10.92655, 12.0, 10.5]);
+}
