@@ -130,6 +130,8 @@ pub struct Exec {
     main: Option<At>,
     /// Runs of the main program made (M99 in the main program).
     main_runs: u32,
+    /// Whether the main program's own number has been read.
+    main_named: bool,
     /// LinuxCNC: the subroutines defined so far (passed over, or found by a call).
     pub defined: Vec<Box<str>>,
     /// LinuxCNC: repeat loops by label, with the runs left (kept across a return, as rs274 keeps them).
@@ -240,6 +242,7 @@ impl Exec {
             jumped: false,
             main: None,
             main_runs: 0,
+            main_named: false,
             defined: Vec::new(),
             repeats: Vec::new(),
             broke: false,
@@ -310,13 +313,16 @@ impl Exec {
             return Some(Flow::Stop);
         };
         self.main = Some(e.next);
+        self.main_named = true;
         self.go(ctx, e.next);
         Some(Flow::Skip)
     }
 
     /// A program number after the first: the program being run has ended.
     fn program_boundary(&mut self, ctx: &mut Ctx, block: &Block) -> Flow {
-        if self.main.is_some_and(|m| m.offset >= ctx.here.offset) || ctx.here.offset == 0 {
+        if !self.main_named && self.frames.is_empty() {
+            // The main program's own number (after a `%` or a comment, perhaps).
+            self.main_named = true;
             return Flow::Skip;
         }
         if self.main.is_some_and(|m| m.offset < ctx.here.offset) && self.frames.is_empty() {
