@@ -61,7 +61,7 @@ pub enum BlockKind {
     /// An `O1234` (or `:1234`) program number line.
     ProgramNumber(u32),
     /// A macro line (variables, expressions, jumps, loops, o-words): the
-    /// lexer leaves it to the program flow ([`crate::exec`]), which parses it.
+    /// lexer leaves it to the program flow, which parses it.
     Macro,
 }
 

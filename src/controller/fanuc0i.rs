@@ -4,12 +4,11 @@
 //! set; Q and the cycle depths are integers in increments. One F register
 //! serves feed and thread lead.
 
+use super::macros::{Flavor, Macros};
 use super::words::Unit;
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::block::Block;
 use crate::dialect::{Dialect, letters};
-use crate::exec::Macros;
-use crate::exec::expr::Flavor;
 use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::settings::P;

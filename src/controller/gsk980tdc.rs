@@ -6,6 +6,7 @@
 //! `G78 P(m)(r)(a) Q(Δdmin) R(d) J K D L E;`
 //! `G78 X(U) Z(W) R(i) P(k) Q(Δd) F(I);`
 
+use super::macros::{Flavor, Macros};
 use super::words::{self, Unit};
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::args;
@@ -13,8 +14,6 @@ use crate::block::{Block, Word};
 use crate::cycle::{Anchor, Geometry, Multi, runout, schedule};
 use crate::dialect::{Dialect, letters};
 use crate::event::Event;
-use crate::exec::Macros;
-use crate::exec::expr::Flavor;
 use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::message::{self as msg};

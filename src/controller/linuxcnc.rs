@@ -14,12 +14,11 @@ mod check;
 mod g33;
 mod g76;
 
+use super::macros::{Flavor, Macros};
 use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code};
 use crate::args;
 use crate::block::Block;
 use crate::dialect::{Dialect, letters};
-use crate::exec::Macros;
-use crate::exec::expr::Flavor;
 use crate::form::Form;
 use crate::gcode::{G, Group};
 use crate::message::{self as msg, Arg};

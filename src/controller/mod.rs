@@ -14,6 +14,7 @@ pub mod g76;
 pub mod g92;
 pub mod gsk980tdc;
 pub mod linuxcnc;
+pub mod macros;
 pub mod reader;
 pub mod renhe;
 pub mod words;

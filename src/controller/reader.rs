@@ -35,7 +35,7 @@ pub struct Rules {
     /// `$` is the spindle selection word (LinuxCNC).
     pub spindle_word: bool,
     /// The controller's subprograms and macros (`None`: it has none).
-    pub macros: Option<crate::exec::Macros>,
+    pub macros: Option<super::macros::Macros>,
 }
 
 impl Rules {

@@ -10,14 +10,7 @@
 use crate::message::{self as msg, Phrase};
 use crate::span::Span;
 
-/// The controller's macro language.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Flavor {
-    /// Fanuc custom macro B (Fanuc 0i, and GSK980TDc's `#` macros).
-    Fanuc,
-    /// LinuxCNC's rs274ngc: o-words, named parameters.
-    LinuxCnc,
-}
+pub use crate::controller::macros::Flavor;
 
 /// A line of code as the macro parser reads it: one folded ASCII byte per
 /// character, with each character's byte offset in the program.

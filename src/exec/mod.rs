@@ -36,26 +36,7 @@ use expr::{Env, Fail, Flavor, Val};
 use index::{At, Entry, Index};
 use vars::Vars;
 
-/// A controller's macro and subprogram forms (data in its [`Rules`]).
-#[derive(Debug)]
-pub struct Macros {
-    /// The macro language.
-    pub flavor: Flavor,
-    /// `M98 P… L…` calls and `M99` returns.
-    pub subprograms: bool,
-    /// `G65`/`G66` macro calls with arguments.
-    pub macro_calls: bool,
-    /// Deepest nesting of subprogram calls the controller allows.
-    pub sub_depth: u32,
-    /// Deepest nesting of macro calls (`G65`, LinuxCNC `call`).
-    pub macro_depth: u32,
-    /// Highest `DO`/`END` loop number.
-    pub max_loop: u8,
-    /// Macro A: `G65 Hm P#i Q#j R#k` operations and jumps (GSK).
-    pub h_codes: bool,
-    /// Where the manual says so (for messages).
-    pub source: &'static str,
-}
+pub use crate::controller::macros::Macros;
 
 /// What the reading does with the block just read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -317,7 +317,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
     /// function (a letter followed by a letter: `IF`, `GOTO`, `END1`, `SIN[`)
     /// or, on LinuxCNC, an o-word.
     fn macro_start(&self, letter: u8, seen_code: bool) -> bool {
-        use crate::exec::expr::Flavor;
+        use crate::controller::macros::Flavor;
         let Some(m) = self.rules.macros.as_ref() else { return false };
         if letter == b'O' && !seen_code && m.flavor == Flavor::LinuxCnc {
             return true;

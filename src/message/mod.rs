@@ -28,7 +28,7 @@ use crate::block::Word;
 use crate::code::Code;
 
 pub mod cycle;
-pub mod exec;
+pub mod flow;
 pub mod gauge;
 pub mod lex;
 pub mod linuxcnc;
@@ -40,7 +40,7 @@ pub mod tools;
 pub mod words;
 
 pub use cycle::*;
-pub use exec::*;
+pub use flow::*;
 pub use gauge::*;
 pub use lex::*;
 pub use linuxcnc::*;
@@ -438,7 +438,7 @@ pub(crate) use templates;
 
 /// Every template of the catalogue.
 pub fn all() -> impl Iterator<Item = &'static Template> {
-    [lex::ALL, exec::ALL, read::ALL, renhe::ALL, linuxcnc::ALL, cycle::ALL, shop::ALL, gauge::ALL, standard::ALL]
+    [lex::ALL, flow::ALL, read::ALL, renhe::ALL, linuxcnc::ALL, cycle::ALL, shop::ALL, gauge::ALL, standard::ALL]
         .into_iter()
         .flatten()
         .copied()
@@ -448,7 +448,7 @@ pub fn all() -> impl Iterator<Item = &'static Template> {
 pub fn all_phrases() -> impl Iterator<Item = &'static Phrase> {
     [
         read::PHRASES,
-        exec::PHRASES,
+        flow::PHRASES,
         linuxcnc::PHRASES,
         cycle::PHRASES,
         shop::PHRASES,
