@@ -15,37 +15,12 @@ mod common;
 mod rs274;
 
 use common::plan_with;
-use rs274::{Call, Kind, Segment, synced_runs};
+use rs274::{Call, Kind, Segment, dir, lines_of_n, live, read, synced_runs};
 use screwcut::motion::{Move, MoveKind};
 use screwcut::thread::{Role, Source};
 use screwcut::{Code, Dialect, Plan};
-use std::path::{Path, PathBuf};
 
 const TOL: f64 = 0.001;
-
-fn dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/linuxcnc")
-}
-
-fn read(name: &str) -> String {
-    std::fs::read_to_string(dir().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
-}
-
-/// Whether rs274 runs here; fails under CI when it does not.
-fn live() -> bool {
-    if rs274::available() {
-        return true;
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!(
-            "rs274 (LinuxCNC's interpreter) is not installed, and CI is set: the LinuxCNC oracle tests need it. Install it with `apt-get install linuxcnc-uspace` (cargo xtask test does)"
-        );
-    }
-    eprintln!(
-        "note: rs274 is not installed (apt-get install linuxcnc-uspace): comparing with the recordings in tests/linuxcnc/ only"
-    );
-    false
-}
 
 /// rs274's verdict on `program`: its calls, or its message and block.
 /// `recorded` names the recording to use when rs274 is not installed.
@@ -79,21 +54,6 @@ fn same_point(what: &str, (x, z): (f64, f64), ours: screwcut::motion::Point) {
         ours.x / 2.0,
         ours.z
     );
-}
-
-/// The source line of each block's N word (the programs number every block).
-fn lines_of_n(program: &str) -> std::collections::HashMap<u64, u32> {
-    let mut map = std::collections::HashMap::new();
-    for (i, l) in program.lines().enumerate() {
-        let t = l.trim_start().trim_start_matches('/').trim_start();
-        if let Some(rest) = t.strip_prefix(['N', 'n']) {
-            let d: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
-            if let Ok(n) = d.parse() {
-                map.insert(n, i as u32 + 1);
-            }
-        }
-    }
-    map
 }
 
 /// rs274's calls with each N word replaced by the source line it names.

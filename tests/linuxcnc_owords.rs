@@ -52,41 +52,12 @@ mod common;
 mod rs274;
 
 use common::plan_with;
-use rs274::{Call, Kind, Segment, synced_runs};
+use rs274::{Call, Kind, Segment, dir, lines_of_n, live, read, synced_runs};
 use screwcut::motion::{Move, MoveKind, Point};
 use screwcut::{Dialect, Plan, Severity};
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
 
 const TOL: f64 = 0.001;
-
-fn dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/linuxcnc")
-}
-
-fn read(name: &str) -> String {
-    std::fs::read_to_string(dir().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
-}
-
-/// Whether rs274 runs here; fails under CI when it does not.
-fn live() -> bool {
-    static LIVE: OnceLock<bool> = OnceLock::new();
-    *LIVE.get_or_init(|| {
-        if rs274::available() {
-            return true;
-        }
-        if std::env::var_os("CI").is_some() {
-            panic!(
-                "rs274 (LinuxCNC's interpreter) is not installed, and CI is set: the LinuxCNC oracle tests need it. Install it with `apt-get install linuxcnc-uspace` (cargo xtask test does)"
-            );
-        }
-        eprintln!(
-            "note: rs274 is not installed (apt-get install linuxcnc-uspace): comparing with the recordings in tests/linuxcnc/ only"
-        );
-        false
-    })
-}
 
 /// The recorded o-word programs whose names start with `prefix`, sorted.
 fn programs(prefix: &str) -> Vec<String> {
@@ -118,21 +89,6 @@ struct Verdict {
 fn split(err: &str) -> (String, String) {
     let (message, block) = err.split_once('\n').unwrap_or((err, ""));
     (message.to_string(), block.to_string())
-}
-
-/// The source line of each N word (`rs274::numbered` gives every block one).
-fn lines_of_n(program: &str) -> HashMap<u64, u32> {
-    let mut map = HashMap::new();
-    for (i, l) in program.lines().enumerate() {
-        let t = l.trim_start().trim_start_matches('/').trim_start();
-        if let Some(rest) = t.strip_prefix(['N', 'n']) {
-            let d: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
-            if let Ok(n) = d.parse() {
-                map.insert(n, i as u32 + 1);
-            }
-        }
-    }
-    map
 }
 
 /// rs274 on `text` (the recording `name` when rs274 is not installed);

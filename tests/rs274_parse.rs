@@ -4,16 +4,7 @@
 #[path = "common/rs274.rs"]
 mod rs274;
 
-use rs274::{Call, Kind, parse, synced_runs};
-use std::path::{Path, PathBuf};
-
-fn dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/linuxcnc")
-}
-
-fn read(name: &str) -> String {
-    std::fs::read_to_string(dir().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
-}
+use rs274::{Call, Kind, dir, parse, read, synced_runs};
 
 fn recorded(name: &str) -> Vec<Call> {
     parse(&read(&format!("{name}.out"))).unwrap_or_else(|e| panic!("{name}: {e}"))

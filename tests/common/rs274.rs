@@ -11,9 +11,11 @@
 //! prints no file line numbers: [`numbered`] makes each block's N its line.
 #![allow(dead_code)]
 
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, OnceLock};
 
 /// How a straight move is made.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -221,6 +223,50 @@ pub fn without_file(message: &str) -> &str {
         }
     }
     message
+}
+
+/// The folder of the recorded programs and outputs (`tests/linuxcnc/`).
+pub fn dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/linuxcnc")
+}
+
+/// A recorded file of [`dir`].
+pub fn read(name: &str) -> String {
+    std::fs::read_to_string(dir().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// Whether rs274 runs here; fails under CI when it does not.
+pub fn live() -> bool {
+    static LIVE: OnceLock<bool> = OnceLock::new();
+    *LIVE.get_or_init(|| {
+        if available() {
+            return true;
+        }
+        if std::env::var_os("CI").is_some() {
+            panic!(
+                "rs274 (LinuxCNC's interpreter) is not installed, and CI is set: the LinuxCNC oracle tests need it. Install it with `apt-get install linuxcnc-uspace` (cargo xtask test does)"
+            );
+        }
+        eprintln!(
+            "note: rs274 is not installed (apt-get install linuxcnc-uspace): comparing with the recordings in tests/linuxcnc/ only"
+        );
+        false
+    })
+}
+
+/// The source line of each N word ([`numbered`] gives every block one).
+pub fn lines_of_n(program: &str) -> HashMap<u64, u32> {
+    let mut map = HashMap::new();
+    for (i, l) in program.lines().enumerate() {
+        let t = l.trim_start().trim_start_matches('/').trim_start();
+        if let Some(rest) = t.strip_prefix(['N', 'n']) {
+            let d: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+            if let Ok(n) = d.parse() {
+                map.insert(n, i as u32 + 1);
+            }
+        }
+    }
+    map
 }
 
 #[cfg(test)]
