@@ -3,33 +3,23 @@
 //! P… L… <arguments>` (argument specification I). GSK980TDc reads the same
 //! forms where its manual has them (its rules say which).
 
-use super::expr::{Fail, Val};
+use super::eval::{Fail, Val};
 use super::stmt::{Assign, Line, Stmt};
-use super::{CallKind, Ctx, Exec, Flow, Loop, Macros, Vals, eval, fill, parse_line, truth};
+use super::{CallKind, Ctx, Exec, Flow, Loop, Macros, Vals, eval, fill, truth};
 use crate::args;
 use crate::block::Block;
 use crate::message as msg;
 use crate::settings::P;
 use crate::span::Span;
 
-/// Runs a macro line.
-pub fn line(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> Flow {
-    let Some(line) = parse_line(ctx, block, macros.flavor) else {
-        block.has_error = true;
-        return Flow::Run;
-    };
-    if line.deleted && ctx.settings.flag(P::BlockDelete) {
-        return Flow::Skip;
-    }
-    let r = statement(ex, ctx, block, &line, macros);
-    r.unwrap_or_else(|f| {
-        ctx.fail(f);
-        block.has_error = true;
-        Flow::Run
-    })
-}
-
-fn statement(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, line: &Line, macros: &Macros) -> Result<Flow, Fail> {
+/// Runs a parsed macro line.
+pub(super) fn statement(
+    ex: &mut Exec,
+    ctx: &mut Ctx,
+    block: &mut Block,
+    line: &Line,
+    macros: &Macros,
+) -> Result<Flow, Fail> {
     match &line.stmt {
         Stmt::Words(words, _) => {
             if !fill(ex, ctx, block, line, words) {
@@ -53,7 +43,7 @@ fn statement(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, line: &Line, macro
         }
         Stmt::Goto(target, span) => goto(ex, ctx, target, *span).map(|()| Flow::Skip),
         Stmt::While(c, m, span) => {
-            check_loop_id(ctx, *m, *span, macros)?;
+            check_loop_id(*m, *span, macros)?;
             if truth(eval(ex, ctx, c)?) {
                 open_loop(ex, ctx, *m);
             } else {
@@ -62,7 +52,7 @@ fn statement(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, line: &Line, macro
             Ok(Flow::Skip)
         }
         Stmt::Do(m, span) => {
-            check_loop_id(ctx, *m, *span, macros)?;
+            check_loop_id(*m, *span, macros)?;
             open_loop(ex, ctx, *m);
             Ok(Flow::Skip)
         }
@@ -81,8 +71,7 @@ fn statement(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, line: &Line, macro
     }
 }
 
-fn check_loop_id(ctx: &mut Ctx, m: u8, span: Span, macros: &Macros) -> Result<(), Fail> {
-    let _ = ctx;
+fn check_loop_id(m: u8, span: Span, macros: &Macros) -> Result<(), Fail> {
     if m == 0 || m > macros.max_loop {
         return Err(Fail { template: &msg::LOOP_NUMBER, span, args: args![m, max = macros.max_loop] });
     }
@@ -164,7 +153,6 @@ fn assign(ex: &mut Exec, ctx: &mut Ctx, a: &Assign) -> Result<(), Fail> {
 /// Reads `#n`: local, common, or the system variables a threading program reads.
 pub fn read(env: &mut Vals, n: i64, span: Span) -> Result<Val, Fail> {
     let m = env.modal;
-    let unit = |v: f64| Some(v);
     Ok(match n {
         0 => None,
         1..=33 => env.vars.local(n as usize),
@@ -176,8 +164,8 @@ pub fn read(env: &mut Vals, n: i64, span: Span) -> Result<Val, Fail> {
         4109 => m.feed,
         4119 => m.spindle,
         // End point of the block before and current position: X (diameter), Z.
-        5001 | 5041 => unit(m.pos.p.x),
-        5002 | 5042 => unit(m.pos.p.z),
+        5001 | 5041 => Some(m.pos.p.x),
+        5002 | 5042 => Some(m.pos.p.z),
         1000.. => {
             let supported = "#4001 #4003 #4006 #4109 #4119 #5001 #5002 #5041 #5042";
             return Err(Fail { template: &msg::SYSTEM_VARIABLE, span, args: args![n, supported] });

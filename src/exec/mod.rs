@@ -17,6 +17,7 @@
 //! calls count against `limits.blocks`, and calls nest at most as deep as
 //! the controller allows and `limits.call_depth`.
 
+pub mod eval;
 pub mod expr;
 mod fanuc;
 pub mod index;
@@ -32,7 +33,8 @@ use crate::message as msg;
 use crate::settings::{P, Settings, T};
 use crate::span::Span;
 use crate::state::Modal;
-use expr::{Env, Fail, Flavor, Val};
+use eval::{Env, Fail, Val};
+use expr::Flavor;
 use index::{At, Entry, Index};
 use vars::Vars;
 
@@ -71,8 +73,6 @@ pub struct Frame {
     pub body: At,
     /// Runs still to make after this one (`L`).
     pub repeats: u32,
-    /// Line of the calling block.
-    pub call_line: u32,
     /// The loops open in this frame.
     pub loops: Vec<Loop>,
     /// The arguments of a macro call, given again to each repeat.
@@ -252,13 +252,33 @@ impl Exec {
         }
         match block.kind {
             BlockKind::ProgramNumber(_) if macros.flavor == Flavor::Fanuc => self.program_boundary(ctx, block),
-            BlockKind::Macro => match macros.flavor {
-                Flavor::Fanuc => fanuc::line(self, ctx, block, macros),
-                Flavor::LinuxCnc => oword::line(self, ctx, block, macros),
-            },
+            BlockKind::Macro => self.macro_line(ctx, block, macros),
             _ if macros.flavor == Flavor::Fanuc && macros.macro_calls => fanuc::g65(self, ctx, block, macros),
             _ => Flow::Run,
         }
+    }
+
+    /// Runs a macro line: parsed, then run by the controller's language. A
+    /// line that does not parse is an alarm and is not run.
+    fn macro_line(&mut self, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> Flow {
+        type Run = fn(&mut Exec, &mut Ctx, &mut Block, &stmt::Line, &Macros) -> Result<Flow, Fail>;
+        let Some(line) = parse_line(ctx, block, macros.flavor) else {
+            block.has_error = true;
+            return Flow::Run;
+        };
+        if line.deleted && ctx.settings.flag(P::BlockDelete) {
+            return Flow::Skip;
+        }
+        let (run, on_error): (Run, Flow) = match macros.flavor {
+            Flavor::Fanuc => (fanuc::statement, Flow::Run),
+            // rs274 stops at its first error.
+            Flavor::LinuxCnc => (oword::statement, Flow::Abort),
+        };
+        run(self, ctx, block, &line, macros).unwrap_or_else(|f| {
+            ctx.fail(f);
+            block.has_error = true;
+            on_error
+        })
     }
 
     /// After the interpreter ran `block`: subprogram calls and returns.
@@ -348,15 +368,7 @@ impl Exec {
             ctx.diag(&msg::CALL_TOO_DEEP, span, args![what, limit = ours, source = "limits.call_depth"]);
             return false;
         }
-        self.frames.push(Frame {
-            kind,
-            ret: ctx.next,
-            body,
-            repeats,
-            call_line: ctx.here.line,
-            loops: Vec::new(),
-            args: None,
-        });
+        self.frames.push(Frame { kind, ret: ctx.next, body, repeats, loops: Vec::new(), args: None });
         if kind == CallKind::Macro {
             self.vars.levels.push(vars::Locals::default());
         }
@@ -385,11 +397,6 @@ impl Exec {
             f.loops.iter_mut().for_each(|l| at(&mut l.head));
         }
         self.loops.iter_mut().for_each(|l| at(&mut l.head));
-    }
-
-    /// The line the outermost active call was made from (0: none).
-    pub fn call_line(&self) -> u32 {
-        self.frames.first().map_or(0, |f| f.call_line)
     }
 }
 
@@ -434,7 +441,7 @@ impl Env for Vals<'_> {
 pub fn eval(ex: &Exec, ctx: &Ctx, e: &expr::Expr) -> Result<Val, Fail> {
     let flavor = ctx.rules.macros.as_ref().map_or(Flavor::Fanuc, |m| m.flavor);
     let mut env = Vals { vars: &ex.vars, modal: ctx.modal, flavor, title: ctx.rules.title() };
-    expr::eval(e, &mut env)
+    eval::eval(e, &mut env)
 }
 
 /// Fills `block` with the words of a macro line, their values evaluated;

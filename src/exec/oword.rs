@@ -5,10 +5,11 @@
 //! `#<_global>` named parameters; the parameters set on a line take their
 //! values when the whole line has been read.
 
-use super::expr::{Expr, Fail, Val};
+use super::eval::{Fail, Val};
+use super::expr::Expr;
 use super::index::{At, Entry};
 use super::stmt::{Line, OKw, Stmt};
-use super::{CallKind, Ctx, Exec, Flow, Loop, Macros, Vals, eval, fill, parse_line, truth};
+use super::{CallKind, Ctx, Exec, Flow, Loop, Macros, Vals, eval, fill, truth};
 use crate::args;
 use crate::block::Block;
 use crate::message as msg;
@@ -17,24 +18,14 @@ use crate::span::Span;
 /// Highest numbered parameter (rs274ngc's RS274NGC_MAX_PARAMETERS − 1).
 const MAX_PARAMETER: i64 = 5601;
 
-/// Runs a LinuxCNC macro line.
-pub fn line(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> Flow {
-    let Some(line) = parse_line(ctx, block, macros.flavor) else {
-        block.has_error = true;
-        return Flow::Run;
-    };
-    if line.deleted && ctx.settings.flag(crate::settings::P::BlockDelete) {
-        return Flow::Skip;
-    }
-    statement(ex, ctx, block, &line, macros).unwrap_or_else(|f| {
-        // rs274 stops at its first error.
-        ctx.fail(f);
-        block.has_error = true;
-        Flow::Abort
-    })
-}
-
-fn statement(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, line: &Line, macros: &Macros) -> Result<Flow, Fail> {
+/// Runs a parsed LinuxCNC macro line.
+pub(super) fn statement(
+    ex: &mut Exec,
+    ctx: &mut Ctx,
+    block: &mut Block,
+    line: &Line,
+    macros: &Macros,
+) -> Result<Flow, Fail> {
     match &line.stmt {
         Stmt::Words(words, sets) => {
             // A named parameter set on the line exists, at 0, while the line

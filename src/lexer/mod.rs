@@ -352,10 +352,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
             j += 1;
         }
         let letters = &word[..n];
-        names.iter().any(|k| {
-            letters.starts_with(k.as_bytes())
-                && (m.flavor == Flavor::LinuxCnc || letters.len() == k.len() || k.len() >= 2)
-        })
+        names.iter().any(|k| letters.starts_with(k.as_bytes()))
     }
 
     fn slice(&self, from: usize, to_excl: usize) -> &'c str {
