@@ -374,3 +374,20 @@ fn semantics_in_numbers() {
     // #<_value> is 0 after the reader passes over o<spring>'s endsub: the second pass is at X12.
     approx(&cut_x(&plan("oword-quirk-endsub-value")), &[10.92655, 12.0, 10.5]);
 }
+
+/// MOD as rs274 computes it (run here on `G0 X[-7 MOD 3] Z[7 MOD -3]`,
+/// `G0 X[7.5 MOD 2]`, `G0 X[1 MOD 0]`: radius 2 and 1.5 at Z1, then
+/// "Calculation resulted in 'not a number'"): the remainder is never negative.
+/// (The first rapid, from where the tool was unknown, is not a move of the plan.)
+#[test]
+fn modulo_as_rs274() {
+    let plan =
+        linuxcnc("G18 G21 G90 G8\nG0 X5 Z5\nG0 X[-7 MOD 3] Z[7 MOD -3]\nG0 X[7.5 MOD 2] Z1\nG0 X[1 MOD 0]\nM2\n");
+    let to: Vec<(f64, f64)> = plan.moves.iter().map(|m| (m.to.x / 2.0, m.to.z)).collect();
+    assert_eq!(to, [(2.0, 1.0), (1.5, 1.0)]);
+    let a = alarms(&plan);
+    assert!(
+        a.len() == 1 && a[0].line == 5 && a[0].message.contains("Calculation resulted in 'not a number'"),
+        "{a:#?}"
+    );
+}

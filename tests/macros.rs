@@ -298,3 +298,13 @@ fn incremental_planning_follows_the_flow() {
         assert_eq!(inc, screwcut::plan(&text, &s), "after {from} → {to}");
     }
 }
+
+/// MOD takes the remainder of whole numbers; a divisor that rounds to 0 is
+/// a division by zero (Fanuc alarm PS0112, "divided by zero").
+#[test]
+fn modulo_of_whole_numbers() {
+    let p = fanuc("G00 X0. Z0.\nG00 X[7 MOD 3] Z[17 MOD 5]\n#1=[5 MOD 0.4]\n");
+    eq(p.moves[0].to.x, 1.0);
+    eq(p.moves[0].to.z, 2.0);
+    at(&p, Code::MacroValue, 3, 5);
+}

@@ -129,18 +129,23 @@ fn binary(op: Op, x: Val, y: Val, span: Span, flavor: Flavor) -> Result<Val, Fai
         Op::Add => Some(a + b),
         Op::Sub => Some(a - b),
         Op::Mul => Some(a * b),
-        Op::Div | Op::Mod if b == 0.0 => {
+        // rs274: x MOD 0 is not a number.
+        Op::Mod if b == 0.0 && flavor == Flavor::LinuxCnc => {
+            return Err(Fail { template: &msg::LCNC_NOT_A_NUMBER, span, args: crate::args![] });
+        }
+        // Fanuc's MOD takes the remainder of whole numbers: a divisor that rounds to 0 divides by zero.
+        Op::Div | Op::Mod if b == 0.0 || (op == Op::Mod && flavor == Flavor::Fanuc && int(b) == 0) => {
             let t = if flavor == Flavor::LinuxCnc { &msg::LCNC_DIVIDE_BY_ZERO } else { &msg::DIVIDED_BY_ZERO };
             return Err(Fail { template: t, span, args: crate::args![] });
         }
         Op::Div => Some(a / b),
         Op::Mod => Some(match flavor {
-            // rs274: the result has the divisor's sign (fmod, then shifted).
+            // rs274: fmod, then a negative remainder raised by |b|: never negative.
             Flavor::LinuxCnc => {
                 let r = a % b;
-                if r != 0.0 && (r < 0.0) != (b < 0.0) { r + b } else { r }
+                if r < 0.0 { r + b.abs() } else { r }
             }
-            Flavor::Fanuc => (int(a) % int(b).max(1)) as f64,
+            Flavor::Fanuc => (int(a) % int(b)) as f64,
         }),
         Op::Pow => {
             let v = a.powf(b);

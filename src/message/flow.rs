@@ -69,6 +69,9 @@ templates! {
     LCNC_DIVIDE_BY_ZERO = MacroValue:
         "Attempt to divide by zero",
         "LinuxCNC 报警“Attempt to divide by zero”（除数为零）";
+    LCNC_NOT_A_NUMBER = MacroValue:
+        "Calculation resulted in 'not a number' (MOD 0)",
+        "LinuxCNC 报警“Calculation resulted in 'not a number'”（对 0 取模）";
     LCNC_SUB_SOUGHT = JumpTarget:
         "EOF seeking o-word: {label} from line: {line} (a subroutine is known once reading has passed its definition, or found after the call)",
         "LinuxCNC 报警“EOF seeking o-word: {label} from line: {line}”（子程序须在调用之前定义，或在调用之后的文本中）";
