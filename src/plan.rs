@@ -154,11 +154,6 @@ impl Snapshot {
     pub fn read_to(&self) -> usize {
         self.exec.high
     }
-
-    /// Whether the reading had left the order of the text (a jump, a call, a loop).
-    pub fn jumped(&self) -> bool {
-        self.exec.jumped
-    }
 }
 
 impl Reading {

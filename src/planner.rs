@@ -252,8 +252,7 @@ impl Planner {
         let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
             && old_mid.matches('\r').count() == new_mid.matches('\r').count();
         // After a jump or call the same line is read in other states: the tail is not kept.
-        let flowed = later.iter().any(|c| c.snap.jumped()) || self.jumped;
-        if !lines_kept || flowed || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
+        if !lines_kept || self.jumped || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
             return None;
         }
         let at = (cp.snap.moves(), cp.snap.threads(), cp.snap.diagnostics());

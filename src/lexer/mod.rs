@@ -10,17 +10,17 @@ mod source;
 use number::{NumAcc, NumError};
 use source::{Ascii, Ch, OTHER, Src, fold};
 
-/// A full-width or look-alike character's ASCII twin.
-pub fn fold_char(c: char) -> Option<u8> {
-    fold(c)
-}
-
 use crate::args;
 use crate::block::{Block, BlockKind, Word};
 use crate::controller::Rules;
 use crate::diagnostic::Diagnostics;
 use crate::message as msg;
 use crate::span::Span;
+
+/// A full-width or look-alike character's ASCII twin.
+pub fn fold_char(c: char) -> Option<u8> {
+    fold(c)
+}
 
 /// Limits the lexer enforces (from the settings).
 #[derive(Clone, Copy, Debug)]
@@ -322,14 +322,18 @@ impl<'c, S: Src> LineLexer<'c, S> {
         if letter == b'O' && !seen_code && m.flavor == Flavor::LinuxCnc {
             return true;
         }
-        // A value that is a variable or an expression: `X#1`, `Z-[#2+1]`.
         let mut k = self.i + 1;
-        while matches!(self.src.b(k), b' ' | b'\t' | b'-' | b'+') {
+        while matches!(self.src.b(k), b' ' | b'\t') {
             k += 1;
         }
-        if matches!(self.src.b(k), b'#' | b'[') {
-            return true;
+        if !self.src.b(k).is_ascii_alphabetic() {
+            // A value that is a variable or an expression: `X#1`, `Z-[#2+1]`.
+            while matches!(self.src.b(k), b' ' | b'\t' | b'-' | b'+') {
+                k += 1;
+            }
+            return matches!(self.src.b(k), b'#' | b'[');
         }
+        // Two letters: a keyword or a function (every name has two or more).
         let names: &[&str] = match m.flavor {
             Flavor::Fanuc => &["IF", "WHILE", "GOTO", "END", "DO"],
             Flavor::LinuxCnc => &[
