@@ -221,6 +221,9 @@ fn command(r: &mut Reader, ctl: &Controller, b: &Block, motion_g: Code1, one_sho
     }
     let has_axes = r.has_axes(b);
     let m_end = b.all(b'M').any(|m| matches!(m.num.integer(), Some(2 | 30)));
+    if b.all(b'M').any(|m| m.num.integer().is_some_and(|c| r.rules.spindle_stops.contains(&c))) {
+        r.m.spindle_on = false;
+    }
     for m in b.all(b'M') {
         match m.num.integer() {
             Some(98 | 99) => r.diag(&msg::SUBPROGRAM_NOT_FOLLOWED, m.span, args![word = m]),

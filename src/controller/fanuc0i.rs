@@ -24,6 +24,7 @@ pub static CONTROLLER: Controller = Controller {
         axis_words: letters(b"XZUW"),
         free_words: 0,
         spindle_word: false,
+        spindle_stops: &[],
     },
     g_code,
     command,

@@ -36,6 +36,8 @@ pub static CONTROLLER: Controller = Controller {
         // Every word is checked by `check` before a block runs, with LinuxCNC's messages.
         free_words: letters(b"ABCDEFGHIJKLMNOPQRSTUVWXYZ"),
         spindle_word: true,
+        // rs274 stops the spindle for a tool change (M6) before it runs M3/M4.
+        spindle_stops: &[6],
     },
     g_code,
     command,

@@ -34,6 +34,9 @@ pub struct Rules {
     pub free_words: u32,
     /// `$` is the spindle selection word (LinuxCNC).
     pub spindle_word: bool,
+    /// M codes besides M5 that stop the spindle, before the block's M3/M4
+    /// start it again (LinuxCNC's M6 tool change).
+    pub spindle_stops: &'static [i64],
 }
 
 impl Rules {
