@@ -43,17 +43,17 @@ struct Piece {
 }
 
 /// Fills depths, crest, roles and areas of the block-by-block threads and
-/// adds the textbook advice. `spans` gives each line's span for diagnostics.
+/// adds the textbook advice, each in its thread's units. `spans` gives each
+/// line's span for diagnostics.
 pub fn finish_manual(
     threads: &mut [Thread],
     moves: &[Move],
     s: &Settings,
-    inch: bool,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
     for i in 0..threads.len() {
-        finish_thread(threads, i, moves, s, inch, diags, spans);
+        finish_thread(threads, i, moves, s, diags, spans);
     }
 }
 
@@ -66,7 +66,6 @@ pub fn finish_thread(
     i: usize,
     moves: &[Move],
     s: &Settings,
-    inch: bool,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
@@ -77,7 +76,7 @@ pub fn finish_thread(
     }
     let end = t.first_move.min(moves.len());
     let window = &moves[window_start.min(end)..end];
-    finish_one(t, window, s, inch, s.flag(P::Advice), diags, spans);
+    finish_one(t, window, s, s.flag(P::Advice), diags, spans);
 }
 
 /// Depths, crest, roles and advice of one block-by-block thread; `moves` is the
@@ -86,7 +85,6 @@ fn finish_one(
     t: &mut Thread,
     moves: &[Move],
     s: &Settings,
-    inch: bool,
     advice: bool,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
@@ -94,7 +92,7 @@ fn finish_one(
     let long = t.long_axis;
     let dir = t.depth_dir;
     let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
-    let mm = if inch { 25.4 } else { 1.0 };
+    let mm = t.units.mm();
     let deepest = deepest_pass(t).cloned().expect("a thread has passes");
     let outline = outline_crest(t, moves, &deepest, h);
     let crest_at = |p: Point| -> f64 {

@@ -15,7 +15,7 @@ use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread, Units};
 
 /// A continuous thread cut: consecutive thread blocks without a wait for
 /// the one-rev signal (or one start of a G92 pass).
@@ -23,6 +23,8 @@ use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Sp
 pub struct Chain {
     /// Command family.
     pub source: Source,
+    /// The units its blocks were written in.
+    pub units: Units,
     /// Lead of the first block.
     pub lead: f64,
     /// The pieces.
@@ -131,9 +133,9 @@ impl Grouper {
         }
     }
 
-    /// A thread piece whose motions are `moves` (the cut, then its run-out):
-    /// it continues the continuous thread being cut, or starts one.
-    pub fn piece(&mut self, p: Piece, moves: Range<usize>) {
+    /// A thread piece whose motions are `moves` (the cut, then its run-out),
+    /// written in `units`: it continues the continuous thread being cut, or starts one.
+    pub fn piece(&mut self, p: Piece, moves: Range<usize>, units: Units) {
         match &mut self.chain {
             Some(c) => {
                 c.segs.push(p.seg);
@@ -145,6 +147,7 @@ impl Grouper {
                 let at = moves.start;
                 self.chain = Some(Chain {
                     source: p.source,
+                    units,
                     lead: p.lead,
                     segs: vec![p.seg],
                     angle: p.angle,
@@ -224,7 +227,7 @@ fn too_many_starts(cuts: &[Chain], starts: u32, limit: usize, diags: &mut Diagno
 
 /// Whether `b` cuts the same helix as `a` (one more pass of it).
 fn same_thread(a: &Chain, b: &Chain, max_infeed: f64) -> bool {
-    if a.source != b.source || !near(a.lead, b.lead) || a.segs.len() != b.segs.len() {
+    if a.source != b.source || a.units != b.units || !near(a.lead, b.lead) || a.segs.len() != b.segs.len() {
         return false;
     }
     for (x, y) in a.segs.iter().zip(&b.segs) {
@@ -316,6 +319,7 @@ fn build(cuts: &[Chain]) -> Thread {
         line,
         end_line,
         source: c0.source,
+        units: c0.units,
         kind: main.kind,
         long_axis: main.long,
         lead: c0.lead,
