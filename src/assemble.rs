@@ -98,12 +98,15 @@ impl Assembler {
                 Event::Piece(p) => {
                     let start = self.moves.len();
                     let mv = |kind, from, to| Move { kind, from, to, line: p.line, span: p.span, arc: None };
-                    self.push(mv(MoveKind::Thread, p.seg.from, p.seg.to), diags);
+                    // A G32 chamfer after the cut is a run-out (drawn and timed as one).
+                    let runout = self.group.is_runout(&p, s);
+                    let kind = if runout { MoveKind::Runout } else { MoveKind::Thread };
+                    self.push(mv(kind, p.seg.from, p.seg.to), diags);
                     if let Some(o) = p.seg.runout_to {
                         self.push(mv(MoveKind::Runout, p.seg.to, o), diags);
                     }
                     let end = self.moves.len();
-                    self.group.piece(p, start..end, units);
+                    self.group.piece(p, start..end, units, runout);
                 }
                 Event::G92(g) => self.g92(&g, s, units, diags),
                 Event::Multi(m) => self.multi(&m, s, units, diags),
@@ -166,6 +169,7 @@ impl Assembler {
                 tool_angle: g.tool_angle,
                 moves,
                 spindle: g.spindle,
+                pending: None,
             };
             self.group.add(chain, s, &mut self.threads, diags);
         }

@@ -21,7 +21,7 @@ use crate::message::{Arg, Remark, tools};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::EPS;
 use crate::plan::{Plan, Units};
-use crate::thread::Thread;
+use crate::thread::{Axis, CrestSource, Thread};
 
 /// A program written for a controller, with what could not be kept.
 #[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
@@ -184,6 +184,20 @@ impl<'p> Writer<'p> {
         }
     }
 
+    /// Before thread `t`: the crest its cycle gave, as a comment the planner
+    /// reads (`(crest X68.)`): a block-by-block program does not say it, and
+    /// without it the crest would be assumed by the 1.3·P rule. A crest the
+    /// program turned or that was assumed comes back by itself.
+    fn crest(&mut self, t: usize) {
+        let th = &self.plan.threads[t];
+        if !matches!(th.crest_source, CrestSource::Cycle | CrestSource::Comment) {
+            return;
+        }
+        let axis = if th.long_axis == Axis::Z { "X" } else { "Z" };
+        let line = format!("(crest {axis}{})", self.len(th.crest));
+        self.line(line);
+    }
+
     /// Before pass `p` of thread `t`: its spindle speed, when it differs from
     /// the last written (`M03 S…`, LinuxCNC `M3 S…`). Constant surface
     /// speed is not written (a note says so): the target's G96 words differ.
@@ -213,6 +227,9 @@ impl<'p> Writer<'p> {
                 && self.plan.threads[t].passes[p].moves.all().start == i
             {
                 self.set_units(self.plan.threads[t].units);
+                if p == 0 {
+                    self.crest(t);
+                }
                 self.spindle(t, p);
             }
             match self.owner[i] {

@@ -250,7 +250,9 @@ pub(crate) fn finish_thread(
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
-    crate::advice::finish_thread(threads, i, moves, settings, diags, spans);
+    let lower = i.checked_sub(1).map(|p| threads[p].end_line);
+    let stated = crate::advice::Stated::of(&threads[i], lower, text, spans);
+    crate::advice::finish_thread(threads, i, moves, settings, stated, diags, spans);
     let inch = threads[i].units.is_inch();
     let ctx = crate::shop::Context { moves, settings, inch, text, spans };
     crate::shop::finish_thread(threads, i, &ctx, diags);

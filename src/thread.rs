@@ -126,6 +126,8 @@ pub enum CrestSource {
     /// Assumed from the deepest pass and the 1.3·P rule.
     #[default]
     Assumed,
+    /// Stated by a comment before the thread (`(crest X68.)`).
+    Comment,
 }
 
 /// The motions of one pass, as index ranges into the plan's `moves`: the

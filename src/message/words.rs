@@ -18,6 +18,7 @@ phrases! {
     CREST_CYCLE: "cycle", "循环给定";
     CREST_OUTLINE: "outline", "车削轮廓";
     CREST_ASSUMED_WORD: "assumed", "假定";
+    CREST_COMMENT: "comment", "注释给定";
     MEASURED: "measured", "实测";
     ASSUMED: "assumed", "假定";
     NOT_KNOWN: "not known", "未知";

@@ -86,6 +86,7 @@ fn thread(out: &mut String, i: usize, t: &Thread, lang: Lang) {
         screwcut::thread::CrestSource::Cycle => &w::CREST_CYCLE,
         screwcut::thread::CrestSource::Outline => &w::CREST_OUTLINE,
         screwcut::thread::CrestSource::Assumed => &w::CREST_ASSUMED_WORD,
+        screwcut::thread::CrestSource::Comment => &w::CREST_COMMENT,
     };
     let a = args![
         i = i + 1,
