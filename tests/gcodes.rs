@@ -16,6 +16,12 @@
 //!   page number is given; the codes and groups are the list's.
 //! - The same manual's alarm list: PS0010 "IMPROPER G-CODE" for a G code
 //!   the controller does not have; the block is not executed.
+//! - GSK980TD-family user manual, §3.1 "G commands": "The system alarms
+//!   when G words do not belong to Table 3-1 or they are optional functions
+//!   without being supplied" (read in the TOMATECH TAC-100XT edition of that
+//!   manual, p.65, easymanua.ls/tomatech/tac-100xt/manual?p=65). The
+//!   GSK980TDc's own Table 3-1 was not found in the stored copies searched:
+//!   its table here is unchanged.
 
 mod common;
 use common::{eq, no_alarm, one, plan_with};
@@ -145,6 +151,15 @@ fn an_inch_program_with_g80_and_g53_is_read_in_inches() {
 #[test]
 fn fanuc_alarms_on_a_code_it_does_not_have() {
     let plan = fanuc("G45 G20\nG00 X30. Z5.\nM30\n");
+    let d = one(&plan, Code::UnsupportedGCode);
+    assert_eq!((d.line, d.column), (1, 1));
+    assert_eq!(plan.units, Units::Mm);
+}
+
+/// GSK alarms for a G word not in its table, and does not run the block.
+#[test]
+fn gsk_alarms_on_a_code_not_in_its_table() {
+    let plan = plan_with("G45 G20\nG00 X30 Z5\nM30\n", Dialect::Gsk980tdc, &[]);
     let d = one(&plan, Code::UnsupportedGCode);
     assert_eq!((d.line, d.column), (1, 1));
     assert_eq!(plan.units, Units::Mm);
