@@ -2,9 +2,10 @@
 //!
 //! A G32/G33 program does not say how deep the thread is, only where each
 //! pass runs. The crest (major diameter of an external thread, minor of an
-//! internal one) comes from the part outline when the program turned it,
-//! otherwise it is assumed from the deepest pass and the 60° rule
-//! d = D − 1.3·P (setting `textbook.depth_factor`). Depths, infeeds, roles
+//! internal one) is what a comment before the thread states (`(crest X68.)`,
+//! as `expand` writes for a cycle's thread), else the part outline when the
+//! program turned it, otherwise it is assumed from the deepest pass and the
+//! 60° rule d = D − 1.3·P (setting `textbook.depth_factor`). Depths, infeeds, roles
 //! and chip areas follow, and the advice of the textbook chapter: total
 //! depth against 1.3·P, infeeds against table 4-3, and the δ1/δ2
 //! acceleration clearances.
@@ -42,31 +43,58 @@ struct Piece {
     to: Point,
 }
 
+/// What the program says of a thread besides its moves: the crest a
+/// comment before it states (in program units, X a diameter; Z for a face
+/// thread), with the comment's line.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stated {
+    /// The stated crest and its line.
+    pub crest: Option<(f64, u32)>,
+}
+
+impl Stated {
+    /// What the comments from the line after `lower` (the previous thread's
+    /// last line) to `t`'s first line state about `t`.
+    pub fn of(t: &Thread, lower: Option<u32>, text: &str, spans: &dyn Fn(u32) -> Span) -> Stated {
+        let first = t.line.max(1);
+        let stop = lower.map_or(1, |l| (l + 1).min(first));
+        let axis = if t.long_axis == Axis::Z { b'X' } else { b'Z' };
+        let crest = crate::comment::find_back(text, spans, stop, first, |line, c| {
+            crate::comment::crest(c, axis).map(|v| (v, line))
+        });
+        Stated { crest }
+    }
+}
+
 /// Fills depths, crest, roles and areas of the block-by-block threads and
-/// adds the textbook advice. `spans` gives each line's span for diagnostics.
+/// adds the textbook advice, each in its thread's units. `spans` gives each
+/// line's span for diagnostics.
 pub fn finish_manual(
     threads: &mut [Thread],
     moves: &[Move],
     s: &Settings,
-    inch: bool,
+    text: &str,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
     for i in 0..threads.len() {
-        finish_thread(threads, i, moves, s, inch, diags, spans);
+        let lower = i.checked_sub(1).map(|p| threads[p].end_line);
+        let stated = Stated::of(&threads[i], lower, text, spans);
+        finish_thread(threads, i, moves, s, stated, diags, spans);
     }
 }
 
-/// Finishes thread `i` of `threads` (see [`finish_manual`]). The outline a
-/// thread is cut on is turned before it: only the moves since the previous
-/// thread are looked at, so the work stays linear in the program and a
-/// thread's result depends on nothing after its first motion.
+/// Finishes thread `i` of `threads` (see [`finish_manual`]), with what the
+/// program `stated` about it. The outline a thread is cut on is turned
+/// before it: only the moves since the previous thread are looked at, so
+/// the work stays linear in the program and a thread's result depends on
+/// nothing after its first motion.
 pub fn finish_thread(
     threads: &mut [Thread],
     i: usize,
     moves: &[Move],
     s: &Settings,
-    inch: bool,
+    stated: Stated,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
@@ -77,7 +105,7 @@ pub fn finish_thread(
     }
     let end = t.first_move.min(moves.len());
     let window = &moves[window_start.min(end)..end];
-    finish_one(t, window, s, inch, s.flag(P::Advice), diags, spans);
+    finish_one(t, window, s, stated, s.flag(P::Advice), diags, spans);
 }
 
 /// Depths, crest, roles and advice of one block-by-block thread; `moves` is the
@@ -86,7 +114,7 @@ fn finish_one(
     t: &mut Thread,
     moves: &[Move],
     s: &Settings,
-    inch: bool,
+    stated: Stated,
     advice: bool,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
@@ -94,17 +122,24 @@ fn finish_one(
     let long = t.long_axis;
     let dir = t.depth_dir;
     let h = s.get(P::DepthFactor) * t.pitch / 2.0; // radial thread depth
-    let mm = if inch { 25.4 } else { 1.0 };
+    let mm = t.units.mm();
     let deepest = deepest_pass(t).cloned().expect("a thread has passes");
-    let outline = outline_crest(t, moves, &deepest, h);
+    // A stated crest is the programmer's word: it comes before the outline.
+    let said = stated.crest.map(|(c, _)| if long == Axis::Z { c / 2.0 } else { c });
+    let outline = if said.is_some() { None } else { outline_crest(t, moves, &deepest, h) };
     let crest_at = |p: Point| -> f64 {
         let l = Frame(long).long(p);
-        match &outline {
-            Some(o) => Frame(long).line_at(o.from, o.to, l),
-            None => Frame(long).line_at(deepest.from, deepest.to, l) - dir * h,
+        match (said, &outline) {
+            (Some(c), _) => c,
+            (None, Some(o)) => Frame(long).line_at(o.from, o.to, l),
+            (None, None) => Frame(long).line_at(deepest.from, deepest.to, l) - dir * h,
         }
     };
-    t.crest_source = if outline.is_some() { CrestSource::Outline } else { CrestSource::Assumed };
+    t.crest_source = match (said, &outline) {
+        (Some(_), _) => CrestSource::Comment,
+        (None, Some(_)) => CrestSource::Outline,
+        (None, None) => CrestSource::Assumed,
+    };
     let c0 = crest_at(t.passes[0].from);
     t.crest = match long {
         Axis::Z => 2.0 * c0,
@@ -141,6 +176,7 @@ fn finish_one(
     let pitch_mm = t.pitch * mm;
     let std_depth = s.get(P::DepthFactor) * pitch_mm; // diameter, mm
     match &outline {
+        None if said.is_some() => {}
         None => diags.push_with(&msg::CREST_ASSUMED, span, || {
             // A face thread's crest is a face (a Z), not a diameter.
             let (what, axis) = match (t.long_axis, t.internal) {

@@ -13,7 +13,7 @@ use crate::event::{Event, G92Pass, Seg};
 use crate::group::{Chain, Grouper};
 use crate::motion::{Move, MoveKind};
 use crate::settings::{P, Settings};
-use crate::thread::{Axis, PassMoves, Source, Thread};
+use crate::thread::{Axis, PassMoves, Source, Thread, Units};
 
 /// The plan's motions and threads as events arrive.
 #[derive(Clone, Debug)]
@@ -83,8 +83,9 @@ impl Assembler {
         self.stopped = false;
     }
 
-    /// Takes the events of one block (leaving `events` empty).
-    pub fn take(&mut self, events: &mut Vec<Event>, s: &Settings, diags: &mut Diagnostics) {
+    /// Takes the events of one block (leaving `events` empty); `units` are
+    /// those its words were read in, and the units of the threads it cuts.
+    pub fn take(&mut self, events: &mut Vec<Event>, s: &Settings, units: Units, diags: &mut Diagnostics) {
         for e in events.drain(..) {
             match e {
                 Event::Rapid { mv, x, z, line } => {
@@ -97,16 +98,19 @@ impl Assembler {
                 Event::Piece(p) => {
                     let start = self.moves.len();
                     let mv = |kind, from, to| Move { kind, from, to, line: p.line, span: p.span, arc: None };
-                    self.push(mv(MoveKind::Thread, p.seg.from, p.seg.to), diags);
+                    // A G32 chamfer after the cut is a run-out (drawn and timed as one).
+                    let runout = self.group.is_runout(&p, s);
+                    let kind = if runout { MoveKind::Runout } else { MoveKind::Thread };
+                    self.push(mv(kind, p.seg.from, p.seg.to), diags);
                     if let Some(o) = p.seg.runout_to {
                         self.push(mv(MoveKind::Runout, p.seg.to, o), diags);
                     }
                     let end = self.moves.len();
-                    self.group.piece(p, start..end);
+                    self.group.piece(p, start..end, units, runout);
                 }
-                Event::G92(g) => self.g92(&g, s, diags),
-                Event::Multi(m) => self.multi(&m, s, diags),
-                Event::LinuxG76(g) => self.linux_g76(&g, s, diags),
+                Event::G92(g) => self.g92(&g, s, units, diags),
+                Event::Multi(m) => self.multi(&m, s, units, diags),
+                Event::LinuxG76(g) => self.linux_g76(&g, s, units, diags),
                 Event::Break => self.group.end_chain(s, &mut self.threads, diags),
                 Event::Close => self.group.close(s, &mut self.threads, diags),
             }
@@ -145,7 +149,7 @@ impl Assembler {
     }
 
     /// A G92 block: one pass of each start, grouped like block-by-block passes.
-    fn g92(&mut self, g: &G92Pass, s: &Settings, diags: &mut Diagnostics) {
+    fn g92(&mut self, g: &G92Pass, s: &Settings, units: Units, diags: &mut Diagnostics) {
         let path = g.geom.path(&g.pts, g.line, g.span);
         for n in 0..g.starts {
             let first_move = self.moves.len();
@@ -154,6 +158,7 @@ impl Assembler {
                 Seg { from: g.pts.from, to: g.pts.to, runout_to: g.pts.runout_to, kind: g.geom.kind, long: Axis::Z };
             let chain = Chain {
                 source: Source::G92,
+                units,
                 lead: g.lead,
                 segs: vec![seg],
                 angle: g.angle + 360.0 * n as f64 / g.starts as f64,
@@ -164,13 +169,14 @@ impl Assembler {
                 tool_angle: g.tool_angle,
                 moves,
                 spindle: g.spindle,
+                pending: None,
             };
             self.group.add(chain, s, &mut self.threads, diags);
         }
     }
 
     /// LinuxCNC's G76: planned, its passes' motions appended, its thread added.
-    fn linux_g76(&mut self, g: &cycle::linuxcnc::G76, s: &Settings, diags: &mut Diagnostics) {
+    fn linux_g76(&mut self, g: &cycle::linuxcnc::G76, s: &Settings, units: Units, diags: &mut Diagnostics) {
         let limit = s.int(P::LimitPasses).max(1) as usize;
         let warn = s.int(P::LinuxPassWarning).max(1) as usize;
         let planned = match cycle::linuxcnc::plan(g, limit, warn) {
@@ -201,6 +207,7 @@ impl Assembler {
                 p.moves = m;
             }
             t.first_move = first_move;
+            t.units = units;
             if !t.passes.is_empty() {
                 self.threads.push(t);
             }
@@ -208,7 +215,7 @@ impl Assembler {
     }
 
     /// A multi-pass cycle: planned, its passes' motions appended, its thread added.
-    fn multi(&mut self, m: &cycle::Multi, s: &Settings, diags: &mut Diagnostics) {
+    fn multi(&mut self, m: &cycle::Multi, s: &Settings, units: Units, diags: &mut Diagnostics) {
         let (plan, warnings) = match cycle::multi::plan(m, s) {
             Ok(p) => p,
             Err(f) => return diags.push_message(f, m.span),
@@ -229,7 +236,9 @@ impl Assembler {
             }
         }
         if !passes.is_empty() {
-            self.threads.push(plan.thread(passes, first_move));
+            let mut t = plan.thread(passes, first_move);
+            t.units = units;
+            self.threads.push(t);
         }
     }
 }

@@ -21,7 +21,7 @@ use crate::message::{Arg, Remark, tools};
 use crate::motion::{Move, MoveKind, Point};
 use crate::num::EPS;
 use crate::plan::{Plan, Units};
-use crate::thread::Thread;
+use crate::thread::{Axis, CrestSource, Thread};
 
 /// A program written for a controller, with what could not be kept.
 #[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
@@ -69,6 +69,8 @@ struct Seg {
 
 struct Writer<'p> {
     plan: &'p Plan,
+    /// The target controller.
+    to: Dialect,
     w: &'static Writing,
     out: String,
     notes: Vec<Remark>,
@@ -82,6 +84,8 @@ struct Writer<'p> {
     owner: Vec<Option<(usize, usize, Part)>>,
     /// The spindle speed last written (rev/min).
     speed: Option<f64>,
+    /// The units last written (G20/G21, or the scale of a millimetre-only controller).
+    units: Option<Units>,
 }
 
 impl<'p> Writer<'p> {
@@ -101,6 +105,7 @@ impl<'p> Writer<'p> {
         }
         Writer {
             plan,
+            to,
             w,
             out: String::new(),
             notes: Vec::new(),
@@ -111,6 +116,7 @@ impl<'p> Writer<'p> {
             last_x: 0.0,
             owner,
             speed: None,
+            units: None,
         }
     }
 
@@ -145,15 +151,9 @@ impl<'p> Writer<'p> {
     fn header(&mut self, to: Dialect) {
         let from = self.plan.dialect.title();
         self.line(format!("(expanded by screwcut from {from} to {}: every pass block by block)", to.title()));
-        match (self.plan.units, self.w.units) {
-            (Units::Inch, Some((inch, _))) => self.line(inch),
-            (Units::Mm, Some((_, mm))) => self.line(mm),
-            (Units::Inch, None) => {
-                self.scale = 25.4;
-                self.note(Remark::new(&tools::EX_MM_ONLY, args![dialect = Arg::lit(to.title())]));
-            }
-            (Units::Mm, None) => {}
-        }
+        // The moves before the first thread were written in its units (or the program's, without one).
+        let first = self.plan.threads.first().map_or(self.plan.units, |t| t.units);
+        self.set_units(first);
         for l in self.w.preamble {
             self.line(l);
         }
@@ -162,6 +162,40 @@ impl<'p> Writer<'p> {
         if let (Some(on), false) = (self.w.spindle_on, speeds) {
             self.line(on);
         }
+    }
+
+    /// Writes the unit code of `u` when it is not the one in force (a
+    /// program may switch G20/G21 between threads); a controller that reads
+    /// millimetres only gets every length scaled instead.
+    fn set_units(&mut self, u: Units) {
+        if self.units == Some(u) {
+            return;
+        }
+        self.units = Some(u);
+        self.scale = 1.0;
+        match (u, self.w.units) {
+            (Units::Inch, Some((inch, _))) => self.line(inch),
+            (Units::Mm, Some((_, mm))) => self.line(mm),
+            (Units::Inch, None) => {
+                self.scale = 25.4;
+                self.note(Remark::new(&tools::EX_MM_ONLY, args![dialect = Arg::lit(self.to.title())]));
+            }
+            (Units::Mm, None) => {}
+        }
+    }
+
+    /// Before thread `t`: the crest its cycle gave, as a comment the planner
+    /// reads (`(crest X68.)`): a block-by-block program does not say it, and
+    /// without it the crest would be assumed by the 1.3·P rule. A crest the
+    /// program turned or that was assumed comes back by itself.
+    fn crest(&mut self, t: usize) {
+        let th = &self.plan.threads[t];
+        if !matches!(th.crest_source, CrestSource::Cycle | CrestSource::Comment) {
+            return;
+        }
+        let axis = if th.long_axis == Axis::Z { "X" } else { "Z" };
+        let line = format!("(crest {axis}{})", self.len(th.crest));
+        self.line(line);
     }
 
     /// Before pass `p` of thread `t`: its spindle speed, when it differs from
@@ -192,6 +226,10 @@ impl<'p> Writer<'p> {
             if let Some((t, p, _)) = self.owner[i]
                 && self.plan.threads[t].passes[p].moves.all().start == i
             {
+                self.set_units(self.plan.threads[t].units);
+                if p == 0 {
+                    self.crest(t);
+                }
                 self.spindle(t, p);
             }
             match self.owner[i] {

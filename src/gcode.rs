@@ -26,6 +26,9 @@ pub enum Group {
     LatheMode,
     /// Plane selection (G17/G18/G19).
     Plane,
+    /// Canned cycles for drilling and their cancel (Fanuc lathe group 10:
+    /// G80, G83–G89), apart from the motion group: G80 leaves G00/G01 as it was.
+    Drilling,
 }
 
 /// What a G code does.
@@ -53,6 +56,10 @@ pub enum G {
     SetCoord,
     /// G28 reference return.
     RefReturn,
+    /// G27 reference position return check: a rapid to the point given.
+    RefCheck,
+    /// G80: cancels the canned cycle for drilling (group [`Group::Drilling`]).
+    CycleCancel,
     /// G20.
     Inch,
     /// G21.

@@ -15,7 +15,7 @@ use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
 use crate::span::Span;
-use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread};
+use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread, Units};
 
 /// A continuous thread cut: consecutive thread blocks without a wait for
 /// the one-rev signal (or one start of a G92 pass).
@@ -23,6 +23,8 @@ use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Sp
 pub struct Chain {
     /// Command family.
     pub source: Source,
+    /// The units its blocks were written in.
+    pub units: Units,
     /// Lead of the first block.
     pub lead: f64,
     /// The pieces.
@@ -43,6 +45,9 @@ pub struct Chain {
     pub moves: PassMoves,
     /// The spindle when it was cut (its first block).
     pub spindle: Spindle,
+    /// The last piece, read as the run-out of the segment before it
+    /// ([`Grouper::is_runout`]), until another piece continues the cut.
+    pub pending: Option<Seg>,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -131,12 +136,51 @@ impl Grouper {
         }
     }
 
-    /// A thread piece whose motions are `moves` (the cut, then its run-out):
-    /// it continues the continuous thread being cut, or starts one.
-    pub fn piece(&mut self, p: Piece, moves: Range<usize>) {
+    /// Whether piece `p` would be the run-out of the continuous thread being
+    /// cut: a G32 block after a cut without a run-out, going on along the
+    /// thread's axis (Z) while it leaves the work (against the infeed) at
+    /// `group.runout_angle` or more to the axis — the chamfer Fanuc programs
+    /// write as a second G32 block, Fanuc's G32 having no run-out word.
+    pub fn is_runout(&self, p: &Piece, s: &Settings) -> bool {
+        let (Some(c), Source::G32) = (&self.chain, p.source) else { return false };
+        let Some(last) = c.segs.last() else { return false };
+        if c.source != Source::G32 || last.runout_to.is_some() || p.seg.runout_to.is_some() {
+            return false;
+        }
+        if last.long != Axis::Z || c.approach == 0.0 {
+            return false;
+        }
+        let f = last.frame();
+        let along = f.travel(p.seg.from, p.seg.to);
+        let out = f.short(p.seg.to) - f.short(p.seg.from);
+        if along * last.long_travel() < 0.0 || out * -c.approach <= EPS {
+            return false;
+        }
+        out.abs().atan2(along.abs()).to_degrees() >= s.get(P::GroupRunoutAngle) - 1e-9
+    }
+
+    /// A thread piece whose motions are `moves` (the cut, then its run-out),
+    /// written in `units`: it continues the continuous thread being cut, or
+    /// starts one. With `runout` ([`Grouper::is_runout`]) it is the run-out
+    /// of the segment before it, unless another piece follows.
+    pub fn piece(&mut self, p: Piece, moves: Range<usize>, units: Units, runout: bool) {
         match &mut self.chain {
             Some(c) => {
-                c.segs.push(p.seg);
+                if let Some(seg) = c.pending.take() {
+                    // The cut goes on: what looked like its run-out is a segment of it.
+                    if let Some(last) = c.segs.last_mut() {
+                        last.runout_to = None;
+                    }
+                    c.segs.push(seg);
+                }
+                if runout {
+                    if let Some(last) = c.segs.last_mut() {
+                        last.runout_to = Some(p.seg.to);
+                    }
+                    c.pending = Some(p.seg);
+                } else {
+                    c.segs.push(p.seg);
+                }
                 c.lines.push(p.line);
                 c.moves.cut.end = moves.end;
                 c.moves.retract = moves.end..moves.end;
@@ -145,6 +189,7 @@ impl Grouper {
                 let at = moves.start;
                 self.chain = Some(Chain {
                     source: p.source,
+                    units,
                     lead: p.lead,
                     segs: vec![p.seg],
                     angle: p.angle,
@@ -155,6 +200,7 @@ impl Grouper {
                     tool_angle: p.tool_angle,
                     moves: PassMoves { approach: at..at, cut: moves.clone(), retract: moves.end..moves.end },
                     spindle: p.spindle,
+                    pending: None,
                 });
             }
         }
@@ -224,7 +270,7 @@ fn too_many_starts(cuts: &[Chain], starts: u32, limit: usize, diags: &mut Diagno
 
 /// Whether `b` cuts the same helix as `a` (one more pass of it).
 fn same_thread(a: &Chain, b: &Chain, max_infeed: f64) -> bool {
-    if a.source != b.source || !near(a.lead, b.lead) || a.segs.len() != b.segs.len() {
+    if a.source != b.source || a.units != b.units || !near(a.lead, b.lead) || a.segs.len() != b.segs.len() {
         return false;
     }
     for (x, y) in a.segs.iter().zip(&b.segs) {
@@ -316,6 +362,7 @@ fn build(cuts: &[Chain]) -> Thread {
         line,
         end_line,
         source: c0.source,
+        units: c0.units,
         kind: main.kind,
         long_axis: main.long,
         lead: c0.lead,

@@ -192,15 +192,24 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
                 }
             }
             G::RenheRunout => one_shot = Some((g, w)),
+            G::CycleCancel => r.m.drilling = false,
             _ => match group {
                 Group::Motion => {
                     r.m.motion_code = Some(code10(w));
+                    // A motion code ends a canned cycle for drilling (Fanuc group 10).
+                    r.m.drilling = false;
                     motion_g = Some((g, w));
                 }
                 Group::OneShot => one_shot = Some((g, w)),
                 Group::Setup => {
                     if let G::NotSimulated { what, .. } = g {
-                        r.diag(&msg::SETUP_NOT_SIMULATED, w.span, args![word = w, what]);
+                        noted(r, &msg::SETUP_NOT_SIMULATED, w, what);
+                    }
+                }
+                Group::Drilling => {
+                    if let G::NotSimulated { what, .. } = g {
+                        r.m.drilling = true;
+                        noted(r, &msg::NOT_DRAWN, w, what);
                     }
                 }
                 _ => {}
@@ -208,6 +217,15 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
         }
     }
     (motion_g, one_shot)
+}
+
+/// Says that `w`'s function is not simulated (or not drawn): once per G code and program.
+fn noted(r: &mut Reader, template: &'static msg::Template, w: &Word, what: &'static msg::Phrase) {
+    let code = code10(w);
+    if !r.m.noted.contains(&code) {
+        r.m.noted.push(code);
+        r.diag(template, w.span, args![word = w, what]);
+    }
 }
 
 /// The block's command: a one-shot code, a motion in the modal mode, or setup.
@@ -218,11 +236,14 @@ fn command(r: &mut Reader, ctl: &Controller, b: &Block, motion_g: Code1, one_sho
             r.m.cycle.g92 = None;
         }
         if let Motion::NotSimulated(what, _) = r.m.motion {
-            r.diag(&msg::NOT_DRAWN, w.span, args![word = w, what]);
+            noted(r, &msg::NOT_DRAWN, w, what);
         }
     }
     let has_axes = r.has_axes(b);
     let m_end = b.all(b'M').any(|m| matches!(m.num.integer(), Some(2 | 30)));
+    if b.all(b'M').any(|m| m.num.integer().is_some_and(|c| r.rules.spindle_stops.contains(&c))) {
+        r.m.spindle_on = false;
+    }
     for m in b.all(b'M') {
         match m.num.integer() {
             Some(98 | 99) if !r.rules.macros.as_ref().is_some_and(|x| x.subprograms) => {
@@ -295,8 +316,17 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
             r.m.pos.kx &= !t.has_x;
             r.m.pos.kz &= !t.has_z;
         }
+        G::RefCheck => {
+            // G27: a rapid to the point, where the controller checks the reference position.
+            if !r.check_words(b, b"XZUW", "G27") {
+                return;
+            }
+            r.m.jk = (None, None);
+            let t = r.target(b);
+            r.rapid(&t, b.line, b.span);
+        }
         G::NotSimulated { what, returns } => {
-            r.diag(&msg::NOT_DRAWN, w.span, args![word = w, what]);
+            noted(r, &msg::NOT_DRAWN, w, what);
             if !returns {
                 // Where the tool ends is unknown.
                 r.m.pos.kx = false;
@@ -339,6 +369,13 @@ fn set_coordinates(r: &mut Reader, b: &Block, w: &Word) {
 
 fn motion_block(r: &mut Reader, ctl: &Controller, b: &Block) {
     r.m.motion_seen = true;
+    if r.m.drilling {
+        // A hole of the canned cycle (noted with its code): where the tool ends is not drawn.
+        r.close();
+        r.m.pos.kx = false;
+        r.m.pos.kz = false;
+        return;
+    }
     match r.m.motion {
         Motion::None | Motion::Rapid | Motion::Linear => {
             let rapid = matches!(r.m.motion, Motion::None | Motion::Rapid);

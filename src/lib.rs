@@ -23,6 +23,7 @@ pub mod assemble;
 pub mod block;
 pub mod chip;
 pub mod code;
+pub mod comment;
 pub mod controller;
 pub mod cycle;
 pub mod diagnostic;

@@ -25,15 +25,7 @@ use crate::span::{LineIndex, Span};
 use crate::state::Modal;
 use crate::thread::Thread;
 
-/// Program units.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Units {
-    /// Millimetres (G21).
-    Mm,
-    /// Inches (G20).
-    Inch,
-}
+pub use crate::thread::Units;
 
 /// Everything screwcut knows about a program.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -191,7 +183,7 @@ impl Reading {
     /// Reads one block.
     pub fn block(&mut self, b: &Block) {
         self.it.step(b, &mut self.events, &mut self.diags);
-        self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
+        self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
     }
 
     /// Reads blocks from `lexer` to the end of the program, calling
@@ -233,7 +225,7 @@ impl Reading {
             }
         }
         self.it.finish(&mut self.events, &mut self.diags, !aborted);
-        self.asm.take(&mut self.events, &self.it.s, &mut self.diags);
+        self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
         true
     }
 
@@ -311,32 +303,32 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    let inch = out.inch;
     finish_with(text, settings, out, starts, |threads, moves, spans, limit| {
         let mut advice = Diagnostics::with_limit(limit);
         for i in 0..threads.len() {
-            finish_thread(threads, i, moves, settings, inch, text, &mut advice, spans);
+            finish_thread(threads, i, moves, settings, text, &mut advice, spans);
         }
         advice
     })
 }
 
 /// Finishes thread `i`: its depths and textbook advice, then its
-/// shop-floor figures and checks. A function of the thread, the motions
-/// before it, the settings and the program text up to it, so a thread
-/// finished once stays finished while later text changes.
-#[allow(clippy::too_many_arguments)]
+/// shop-floor figures and checks, in the thread's own units. A function of
+/// the thread, the motions before it, the settings and the program text up
+/// to it, so a thread finished once stays finished while later text changes.
 pub(crate) fn finish_thread(
     threads: &mut [Thread],
     i: usize,
     moves: &[Move],
     settings: &Settings,
-    inch: bool,
     text: &str,
     diags: &mut Diagnostics,
     spans: &dyn Fn(u32) -> Span,
 ) {
-    crate::advice::finish_thread(threads, i, moves, settings, inch, diags, spans);
+    let lower = i.checked_sub(1).map(|p| threads[p].end_line);
+    let stated = crate::advice::Stated::of(&threads[i], lower, text, spans);
+    crate::advice::finish_thread(threads, i, moves, settings, stated, diags, spans);
+    let inch = threads[i].units.is_inch();
     let ctx = crate::shop::Context { moves, settings, inch, text, spans };
     crate::shop::finish_thread(threads, i, &ctx, diags);
 }

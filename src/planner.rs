@@ -211,8 +211,7 @@ impl Planner {
             out.inch = inch_now;
         }
         self.raw_diags = out.diags.clone();
-        let inch = out.inch;
-        self.inch = inch;
+        self.inch = out.inch;
         // Threads complete before the resume point are finished already and
         // their advice is kept; the rest are finished now, every message
         // formatted so it can be kept for the next edit.
@@ -222,7 +221,7 @@ impl Planner {
         let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
             for i in advice.len()..threads.len() {
                 let mut d = Diagnostics::with_limit(usize::MAX);
-                finish_thread(threads, i, moves, settings, inch, text, &mut d, spans);
+                finish_thread(threads, i, moves, settings, text, &mut d, spans);
                 advice.push(d.into_items());
             }
             let mut all = Diagnostics::with_limit(usize::MAX);

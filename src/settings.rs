@@ -232,6 +232,9 @@ params! {
     GroupMaxInfeed: d("group.max_infeed", ALL, Kind::Float, 1.0, (0.0, 100.0), "leads",
         "Two consecutive G32 cuts belong to the same thread when their starts differ by at most this many leads (radially) and their lengths overlap.",
         "相邻两次 G32 切削起点径向差不超过此值(导程)时视为同一螺纹。");
+    GroupRunoutAngle: d("group.runout_angle", ALL, Kind::Float, 30.0, (1.0, 90.0), "°",
+        "A G32 block that continues a thread, leaves the work (its short-axis move is against the infeed) and makes at least this angle with the thread's axis is its run-out, as Fanuc programs write the chamfer after the cut.",
+        "连续螺纹中的 G32 程序段若离开工件(短轴方向与进刀相反)且与螺纹轴线夹角不小于此值,视为该刀的退尾(如 FANUC 程序在切削后写出的倒角)。");
     // ---- machine and tool ----
     RapidX: d("machine.rapid_x", ALL, Kind::Float, 5000.0, (1.0, 1.0e6), "mm/min",
         "Rapid traverse rate of the X axis (the cross slide's own travel, a radius), for the approach, retract and return time of a thread. The controller keeps it per axis (Fanuc 0i: parameter 1420 of X); set the machine's value.",

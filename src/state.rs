@@ -235,6 +235,11 @@ pub struct Modal {
     pub last_span: crate::span::Span,
     /// Diagnostics said once ([`once`] flags).
     pub said: u32,
+    /// A canned cycle for drilling is in force (Fanuc G83–G89 until G80 or a
+    /// group 01 code): blocks with axis words drill, and are not drawn.
+    pub drilling: bool,
+    /// The G codes (×10) whose "not simulated" note was given: once per code.
+    pub noted: Vec<i64>,
 }
 
 impl Default for Modal {
@@ -270,6 +275,8 @@ impl Default for Modal {
             percent: false,
             last_span: crate::span::Span::default(),
             said: 0,
+            drilling: false,
+            noted: Vec::new(),
         }
     }
 }

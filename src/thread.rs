@@ -8,6 +8,36 @@ use serde::Serialize;
 use crate::motion::Point;
 use crate::num::{ser_round, ser_round_opt};
 
+/// Units of a program's lengths: of the whole program where it is said
+/// (`Plan::units`, in force at its end), of one thread's words and figures
+/// (`Thread::units`, in force where the thread was written).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Units {
+    /// Millimetres (G21).
+    #[default]
+    Mm,
+    /// Inches (G20).
+    Inch,
+}
+
+impl Units {
+    /// The units of a G20 (`inch`) or G21 state.
+    pub fn of(inch: bool) -> Units {
+        if inch { Units::Inch } else { Units::Mm }
+    }
+
+    /// Whether these are inches.
+    pub fn is_inch(self) -> bool {
+        self == Units::Inch
+    }
+
+    /// Millimetres per unit: 25.4 for inches, 1 for millimetres.
+    pub fn mm(self) -> f64 {
+        if self.is_inch() { 25.4 } else { 1.0 }
+    }
+}
+
 /// The shape of a thread.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -96,6 +126,8 @@ pub enum CrestSource {
     /// Assumed from the deepest pass and the 1.3·P rule.
     #[default]
     Assumed,
+    /// Stated by a comment before the thread (`(crest X68.)`).
+    Comment,
 }
 
 /// The motions of one pass, as index ranges into the plan's `moves`: the
@@ -200,6 +232,9 @@ pub struct Thread {
     pub end_line: u32,
     /// Which command cut it.
     pub source: Source,
+    /// The units its words were written in (G20/G21 in force at its
+    /// blocks): its lengths, lead and shop-floor figures are in these.
+    pub units: Units,
     /// Straight, taper or face.
     pub kind: ThreadKind,
     /// Axis along which the lead is measured.

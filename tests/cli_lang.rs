@@ -21,7 +21,7 @@ fn plan_in_chinese() {
         zh.contains("5:1: 提示 [crest-assumed] 程序没有车出这个螺纹的大径：按最深一刀和 d = D − 1.3·P 假定牙顶在 X48"),
         "{zh}"
     );
-    assert!(zh.contains("螺纹 1（第 5-24 行）：直螺纹 G32，导程 2") && zh.contains("精车"), "{zh}");
+    assert!(zh.contains("螺纹 1（第 5-24 行）：直螺纹 G32（mm），导程 2") && zh.contains("精车"), "{zh}");
     assert!(!zh.contains("crest assumed") && !zh.contains("rough"), "{zh}");
 }
 

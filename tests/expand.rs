@@ -84,6 +84,45 @@ fn fanuc_g76_into_fanuc_and_gsk() {
     assert!(gsk.contains("G32 X64.4 Z25 F6 J6 K6\n"), "{gsk}");
 }
 
+/// Fanuc's G32 has no run-out word: a G76 expanded for Fanuc writes each
+/// pass's chamfer (r = 10: one lead, 6 mm of Z at 45°) as a second G32
+/// block, which is read back as the pass's run-out, not as a second piece
+/// of it; and the crest the cycle gave (root X60.64 + 2 × k 3.68 = X68) is
+/// written as `(crest X68.)`, which the planner reads. Planned again: the
+/// same five passes, each cut ending at Z31 and running out to X+12 at Z25,
+/// the same crest, depths (Δd 1.8, 1.8·√2, 1.8·√3, then k − d = 3.48 and
+/// k = 3.68: GSK980TDc manual §3.21.7 steps ①–⑩, the 0i-TF's G76 alike)
+/// and roles. Before, the chamfer made each pass a taper piece: crest
+/// X68.3134 and depths 1.9567 … 3.9.
+#[test]
+fn fanuc_g76_into_fanuc_keeps_crest_depths_and_passes() {
+    let src = include_str!("../examples/g76-fanuc.nc");
+    let before = plan_with(src, F, &[]);
+    let text = round_trip(src, F, F, ALL);
+    assert!(text.contains("(crest X68.)\nG00 X64.4 Z128.9608\nG32 X64.4 Z31. F6.\nG32 X76.4 Z25. F6.\n"), "{text}");
+    let after = plan_with(&text, F, &[]);
+    let (a, b) = (&before.threads[0], &after.threads[0]);
+    let depths =
+        |t: &screwcut::thread::Thread| t.passes.iter().map(|p| (p.depth * 1e4).round() / 1e4).collect::<Vec<_>>();
+    assert_eq!(depths(a), [1.8, 2.5456, 3.1177, 3.48, 3.68]);
+    assert_eq!(depths(b), depths(a));
+    assert_eq!(a.crest, 68.0);
+    assert!((b.crest - 68.0).abs() < 1e-9 && (a.height - 3.68).abs() < 1e-9 && (b.height - 3.68).abs() < 1e-9);
+    assert_eq!(b.crest_source, screwcut::thread::CrestSource::Comment);
+    let roles = |t: &screwcut::thread::Thread| t.passes.iter().map(|p| p.role).collect::<Vec<_>>();
+    assert_eq!(roles(b), roles(a));
+    for (p, q) in a.passes.iter().zip(&b.passes) {
+        near("run-out", p.runout_to.unwrap(), q.runout_to.unwrap());
+        assert!(q.segments.is_empty(), "one piece and its run-out: {:?}", q.segments);
+        // The chamfer block is a run-out motion, drawn and timed as one.
+        assert_eq!(after.moves[q.moves.cut.end - 1].kind, MoveKind::Runout);
+    }
+    // Into GSK the run-out is J/K: the same crest and depths there too.
+    let gsk = plan_with(&expand(&before, G).program, G, &[]);
+    assert!((gsk.threads[0].crest - 68.0).abs() < 1e-9);
+    assert_eq!(depths(&gsk.threads[0]), depths(a));
+}
+
 #[test]
 fn gsk_g78_two_starts_alternating_into_gsk() {
     let src = "G00 X35 Z5\nG78 P0360 Q50 R0.1 D1 L2\nG78 X27.4 Z-30 P1300 Q300 F4\nG00 X100 Z100\nM30\n";

@@ -294,3 +294,60 @@ fn face_thread_passes_group() {
     // Crest assumed 1.3 × 3 / 2 = 1.95 above the deepest pass (Z0): Z1.95.
     eq(t.crest, 1.95);
 }
+
+/// Fanuc's G32 has no run-out word (0i-TF G32: X Z F Q), so a program
+/// writes the chamfer after the cut as a second G32 block. A G32 that
+/// continues a thread, leaves the work (against the infeed, X58 → X47.1
+/// inward here) and makes `group.runout_angle` (30°) or more with the axis
+/// is the pass's run-out: 45° here, 1.5 radius over 1.5 of Z.
+#[test]
+fn a_fanuc_chamfer_block_is_the_passs_run_out() {
+    let pass = "G00 X58. Z70.\nX47.1\nG32 Z13. F2.\nG32 X50.1 Z11.5\nG00 X58.\nZ70.\n";
+    let plan = plan_with(pass, Dialect::Fanuc0i, &[]);
+    no_alarm(&plan);
+    let p = &plan.threads[0].passes[0];
+    pt(p.to, 47.1, 13.0);
+    pt(p.runout_to.unwrap(), 50.1, 11.5);
+    assert!(p.segments.is_empty());
+    assert_eq!(runouts(&plan).len(), 1);
+    assert_eq!(p.lines, [2, 3, 4, 5, 6]);
+    // A steeper setting makes it a segment of a continuous thread again.
+    let seg = plan_with(pass, Dialect::Fanuc0i, &["group.runout_angle=50"]);
+    let q = &seg.threads[0].passes[0];
+    pt(q.to, 50.1, 11.5);
+    assert_eq!((q.runout_to, q.segments.len(), runouts(&seg).len()), (None, 3, 0));
+    // Into the work (X44.1, the way of the infeed) it is a segment.
+    let inward = plan_with(&pass.replace("X50.1 Z11.5", "X44.1 Z11.5"), Dialect::Fanuc0i, &[]);
+    assert_eq!(inward.threads[0].passes[0].segments.len(), 3);
+    // Followed by another G32 it was not the end of the cut: a segment too.
+    let on = plan_with(&pass.replace("Z11.5\n", "Z11.5\nG32 Z5.\n"), Dialect::Fanuc0i, &[]);
+    let r = &on.threads[0].passes[0];
+    pt(r.to, 50.1, 5.0);
+    assert_eq!((r.runout_to, r.segments.len()), (None, 4));
+}
+
+/// A comment `(crest X…)` between the previous thread and a block-by-block
+/// thread states its crest (what `expand` writes for a cycle's thread): the
+/// depths are measured from it, not from the 1.3·P assumption (X48.2 −
+/// X47.1 = 0.55 radial, then X46.2: 1.0), and the next thread, after the
+/// first one's last line, does not take it.
+#[test]
+fn a_crest_comment_states_the_crest() {
+    let pass = |x: &str, z0: &str, z1: &str| format!("G00 X58 Z{z0}\nX{x}\nG32 Z{z1} F2\nG00 X58\nZ{z0}\n");
+    let src = format!(
+        "(crest X48.2)\n{}{}{}M30\n",
+        pass("47.1", "70", "13"),
+        pass("46.2", "70", "13"),
+        pass("47.1", "-20", "-40")
+    );
+    let plan = gsk(&src);
+    no_alarm(&plan);
+    assert_eq!(plan.threads.len(), 2);
+    let t = &plan.threads[0];
+    assert_eq!(t.crest_source, screwcut::thread::CrestSource::Comment);
+    eq(t.crest, 48.2);
+    let depths: Vec<f64> = t.passes.iter().map(|p| (p.depth * 1e9).round() / 1e9).collect();
+    assert_eq!(depths, [0.55, 1.0]);
+    assert_eq!(plan.threads[1].crest_source, screwcut::thread::CrestSource::Assumed);
+    assert_eq!(one(&plan, Code::CrestAssumed).line, 13);
+}

@@ -171,7 +171,7 @@ fn accepted() -> Vec<(String, String, bool)> {
         .filter_map(|e| e.ok()?.file_name().into_string().ok())
         .filter_map(|f| f.strip_suffix(".ngc").map(str::to_owned))
         // The o-word programs have their own test (tests/linuxcnc_owords.rs).
-        .filter(|n| !n.starts_with("err-") && !n.starts_with("oword-"))
+        .filter(|n| !n.starts_with("err-") && !n.starts_with("oword-") && !n.starts_with("words-"))
         .map(|n| {
             let text = read(&format!("{n}.ngc"));
             (n, text, true)
@@ -247,6 +247,7 @@ fn g76_passes_follow_linuxcnc() {
 
 /// Each error program: (name, code screwcut gives).
 const ERRORS: &[(&str, Code)] = &[
+    ("err-g33-after-m6", Code::SpindleNotTurning),
     ("err-g33-f-word", Code::UnexpectedWord),
     ("err-g33-h-word", Code::UnexpectedWord),
     ("err-g33-i-word", Code::UnexpectedWord),
@@ -260,6 +261,10 @@ const ERRORS: &[(&str, Code)] = &[
     ("err-g33-q-word", Code::UnexpectedWord),
     ("err-g33-r-word", Code::UnexpectedWord),
     ("err-g33-spindle-number", Code::ValueOutOfRange),
+    ("err-g70-r-word", Code::UnexpectedWord),
+    ("err-g71-e-word", Code::UnexpectedWord),
+    ("err-g72-j-word", Code::UnexpectedWord),
+    ("err-g76-after-m6", Code::SpindleNotTurning),
     ("err-g76-cutter-comp-radius", Code::CutterCompActive),
     ("err-g76-cutter-comp", Code::CutterCompActive),
     ("err-g76-d-word", Code::UnexpectedWord),
@@ -307,6 +312,52 @@ fn refused_programs_give_linuxcncs_alarm() {
         // Nothing of the refused block is cut.
         assert!(plan.threads.iter().all(|t| !t.passes.iter().any(|p| p.lines.contains(&d.line))), "{name}");
     }
+}
+
+/// rs274 reads D, I, R and Q with the roughing cycles G71/G72 and D, E, P,
+/// Q with G70 (its D message names only G71): `words-g70-g72` runs to its
+/// end in rs274, and none of its profile-cycle blocks is an alarm here. The
+/// words each of them does not take are refused with rs274's message
+/// (`err-g70-r-word`, `err-g71-e-word`, `err-g72-j-word`, in the errors above).
+#[test]
+fn profile_cycles_take_the_words_rs274_takes() {
+    let text = read("words-g70-g72.ngc");
+    if let Some(verdict) = oracle(&text, Some("words-g70-g72")) {
+        let calls = verdict.unwrap_or_else(|e| panic!("rs274 refuses words-g70-g72: {e}"));
+        // Each cycle feeds: rs274 ran the profile, not only the word checks.
+        assert!(calls.iter().filter(|c| matches!(c, Call::Move { kind: Kind::Feed, .. })).count() >= 10);
+    }
+    let plan = linuxcnc(&text);
+    let cycles: Vec<u32> = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| l.starts_with('N') && [" G70 ", " G71 ", " G72 "].iter().any(|g| l.contains(g)))
+        .map(|(i, _)| i as u32 + 1)
+        .collect();
+    assert_eq!(cycles, [10, 12, 14]);
+    for line in cycles {
+        let on_line: Vec<_> = plan.diagnostics.iter().filter(|d| d.line == line).collect();
+        assert!(on_line.iter().all(|d| d.code.severity() != screwcut::Severity::Error), "line {line}: {on_line:#?}");
+        assert!(on_line.iter().any(|d| d.code == Code::NotSimulated), "line {line}: {on_line:#?}");
+    }
+}
+
+/// A tool change (M6) stops the spindle in rs274, before the M3 of its own
+/// block runs: a thread after `T1 M6` with no new M3 is LinuxCNC's alarm
+/// (`err-g76-after-m6`, `err-g33-after-m6` above), and `g76-m6-m3` (M3 in
+/// the tool change's block, then M3 alone after a second M6) cuts both threads.
+#[test]
+fn a_tool_change_stops_the_spindle() {
+    let plan = linuxcnc(&read("g76-m6-m3.ngc"));
+    assert!(!plan.has_alarm(), "{:#?}", plan.diagnostics);
+    let sources: Vec<Source> = plan.threads.iter().map(|t| t.source).collect();
+    assert_eq!(sources, [Source::LinuxG76, Source::LinuxG33]);
+    assert_eq!(plan.threads[0].passes.len(), 5);
+    // Without the M3 after the second tool change the G33 is refused.
+    let without = read("g76-m6-m3.ngc").replace("N40 M3\n", "");
+    let plan = linuxcnc(&without);
+    assert_eq!(common::one(&plan, Code::SpindleNotTurning).line, 8);
+    assert_eq!(plan.threads.len(), 1);
 }
 
 #[test]

@@ -38,6 +38,7 @@ pub static CONTROLLER: Controller = Controller {
             h_codes: false,
             source: "Fanuc 0i nesting",
         }),
+        spindle_stops: &[],
     },
     g_code,
     command,
@@ -79,13 +80,63 @@ static THREADS: ThreadRules = ThreadRules {
     },
 };
 
+/// The G code list of the 0i-TF operator's manual (lathe system, G code
+/// system A), beyond the codes GSK shares ([`lathe_g_code`]). A code the
+/// controller has is never an alarm; what the preview does not draw gets a
+/// note. Option functions (polygon turning, circular threading, automatic
+/// tool offset) are read as the list gives them.
 fn g_code(code10: i64) -> Option<(Group, G)> {
-    let ns = |what| G::NotSimulated { what, returns: true };
-    match code10 {
-        540..=590 => Some((Group::Setup, ns(&crate::message::NS_WORK_OFFSET))),
-        180 => Some((Group::Setup, ns(&crate::message::NS_PLANE))),
-        _ => lathe_g_code(code10),
-    }
+    use crate::message as m;
+    use G::{Accepted, NotSimulated};
+    use Group::{Drilling, Motion, OneShot, Setup};
+    // `returns`: the tool ends where it started (else its position is unknown after the block).
+    let ns = |what, returns| NotSimulated { what, returns };
+    Some(match code10 {
+        // 00: advanced preview control, exact stop, corner circular interpolation
+        // (part of tool-nose compensation, which is not simulated).
+        80 | 90 | 390 => (Setup, Accepted),
+        // 00: programmable data input (offsets, parameters: G10 L50 … G11);
+        // its X/Z words are data, not a motion.
+        100 => (OneShot, ns(&m::NS_G10, true)),
+        106 => (OneShot, ns(&m::NS_G10_6, true)),
+        110 => (Setup, Accepted),
+        // 21/00: polar coordinate and cylindrical interpolation, also as G112, G113, G107.
+        1070 | 1120 | 1130 => (Setup, ns(&m::NS_POLAR, false)),
+        // 16: plane selection.
+        170 | 180 | 190 => (Setup, ns(&m::NS_PLANE, true)),
+        // 09: stored stroke check; G22's X Z I K are the limits, not a motion.
+        220 => (OneShot, ns(&m::NS_G22, true)),
+        230 => (Setup, Accepted),
+        // 08: spindle speed fluctuation detection.
+        250 | 260 => (Setup, Accepted),
+        // 00: reference position return check (a rapid to the point), movement
+        // from the reference position, floating reference position return.
+        270 => (OneShot, G::RefCheck),
+        290 => (OneShot, ns(&m::NS_G29, false)),
+        301 => (OneShot, ns(&m::NS_G30_1, false)),
+        // 01: circular threading CW; 00: automatic tool offset X, Z (G36 is
+        // circular threading CCW only with parameter 3405#3).
+        350 => (Motion, ns(&m::NS_G35, false)),
+        360 | 370 => (OneShot, ns(&m::NS_G36, false)),
+        // 20: polygon turning (also G250/G251); 00: workpiece coordinate system preset.
+        502 | 512 | 2500 | 2510 => (Setup, ns(&m::NS_POLYGON, true)),
+        503 => (OneShot, ns(&m::NS_G50_3, false)),
+        // 00: local and machine coordinate systems; 14: workpiece coordinate systems.
+        520 => (OneShot, ns(&m::NS_G52, false)),
+        530 => (OneShot, ns(&m::NS_G53, false)),
+        540..=590 if code10 % 10 == 0 => (Setup, ns(&m::NS_WORK_OFFSET, true)),
+        // 15: exact stop, tapping and cutting modes.
+        610 | 630 | 640 => (Setup, Accepted),
+        // 12: macro modal call A/B and its cancel (the call's words are arguments).
+        660 | 661 => (OneShot, ns(&m::NS_G66, true)),
+        670 => (Setup, Accepted),
+        // 04: mirror image for double turrets.
+        680 | 690 => (Setup, ns(&m::NS_MIRROR, true)),
+        // 10: canned cycles for drilling (face and side drilling, tapping, boring) and their cancel.
+        800 => (Drilling, G::CycleCancel),
+        830 | 840 | 850 | 870 | 880 | 890 => (Drilling, ns(&m::NS_DRILLING, false)),
+        _ => return lathe_g_code(code10),
+    })
 }
 
 fn command(r: &mut Reader, b: &Block, c: Command) {

@@ -45,6 +45,7 @@ pub static CONTROLLER: Controller = Controller {
             h_codes: true,
             source: "GSK980TDc nesting",
         }),
+        spindle_stops: &[],
     },
     g_code,
     command,

@@ -48,6 +48,8 @@ pub static CONTROLLER: Controller = Controller {
             h_codes: false,
             source: "rs274ngc",
         }),
+        // rs274 stops the spindle for a tool change (M6) before it runs M3/M4.
+        spindle_stops: &[6],
     },
     g_code,
     command,

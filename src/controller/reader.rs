@@ -36,6 +36,9 @@ pub struct Rules {
     pub spindle_word: bool,
     /// The controller's subprograms and macros (`None`: it has none).
     pub macros: Option<super::macros::Macros>,
+    /// M codes besides M5 that stop the spindle, before the block's M3/M4
+    /// start it again (LinuxCNC's M6 tool change).
+    pub spindle_stops: &'static [i64],
 }
 
 impl Rules {

@@ -35,6 +35,7 @@ pub static CONTROLLER: Controller = Controller {
         free_words: 0,
         spindle_word: false,
         macros: None,
+        spindle_stops: &[],
     },
     g_code,
     command,

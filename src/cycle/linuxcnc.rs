@@ -256,6 +256,7 @@ fn thread(g: &G76, passes: Vec<Pass>) -> Thread {
         line: g.line,
         end_line: g.line,
         source: Source::LinuxG76,
+        units: Default::default(),
         kind: ThreadKind::Straight,
         long_axis: Axis::Z,
         lead,

@@ -150,6 +150,7 @@ impl MultiPlan<'_> {
             line: m.lines[0],
             end_line: *m.lines.last().unwrap_or(&0),
             source: m.source,
+            units: Default::default(),
             kind: g.kind,
             long_axis: Axis::Z,
             lead: m.lead,

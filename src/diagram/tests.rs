@@ -199,6 +199,7 @@ fn cycle_plan() -> Plan {
         line: 2,
         end_line: 3,
         source: Source::G78,
+        units: Units::Mm,
         kind: ThreadKind::Straight,
         long_axis: Axis::Z,
         lead: 3.0,

@@ -191,6 +191,16 @@ phrases! {
     NS_DRILLING: "canned drilling cycle", "钻孔固定循环";
     NS_G90_1: "G90.1 absolute arc centres", "G90.1 圆心绝对坐标";
     NS_G92_1: "G92.1-G92.3 coordinate offset reset", "G92.1-G92.3 坐标偏移复位";
+    NS_G10_6: "G10.6 tool retract and recover", "G10.6 刀具退回与复归";
+    NS_G22: "G22 stored stroke check", "G22 存储行程检查";
+    NS_G29: "G29 movement from the reference position", "G29 从参考点返回";
+    NS_G30_1: "G30.1 floating reference position return", "G30.1 返回浮动参考点";
+    NS_G35: "G35/G36 circular threading", "G35/G36 圆弧螺纹切削";
+    NS_G36: "G36/G37 automatic tool offset", "G36/G37 自动刀具补偿";
+    NS_G50_3: "G50.3 workpiece coordinate system preset", "G50.3 工件坐标系预置";
+    NS_POLYGON: "G50.2/G51.2 polygon turning", "G50.2/G51.2 多边形车削";
+    NS_G66: "G66 macro modal call", "G66 宏程序模态调用";
+    NS_MIRROR: "G68/G69 mirror image for double turrets", "G68/G69 双刀架镜像";
 }
 
 /// The unit of lengths in messages.

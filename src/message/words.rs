@@ -18,6 +18,7 @@ phrases! {
     CREST_CYCLE: "cycle", "循环给定";
     CREST_OUTLINE: "outline", "车削轮廓";
     CREST_ASSUMED_WORD: "assumed", "假定";
+    CREST_COMMENT: "comment", "注释给定";
     MEASURED: "measured", "实测";
     ASSUMED: "assumed", "假定";
     NOT_KNOWN: "not known", "未知";
@@ -28,8 +29,8 @@ phrases! {
     SUMMARY: "{file}: {dialect}, {units}; {threads} thread(s), {moves} move(s); {alarms} alarm(s), {warnings} warning(s), {notes} note(s){time}",
         "{file}：{dialect}，{units}；{threads} 个螺纹，{moves} 段运动；{alarms} 个报警，{warnings} 个警告，{notes} 条提示{time}";
     THREADING_TIME: "; threading time {t} s", "；螺纹加工时间 {t} s";
-    THREAD_LINE: "thread {i} (lines {from}-{to}): {kind} {source}, lead {lead}, pitch {pitch}, {starts}, {side}; crest {axis}{crest} ({crest_source}), height {height}",
-        "螺纹 {i}（第 {from}-{to} 行）：{kind} {source}，导程 {lead}，螺距 {pitch}，{starts}，{side}；牙顶 {axis}{crest}（{crest_source}），牙高 {height}";
+    THREAD_LINE: "thread {i} (lines {from}-{to}): {kind} {source} in {units}, lead {lead}, pitch {pitch}, {starts}, {side}; crest {axis}{crest} ({crest_source}), height {height}",
+        "螺纹 {i}（第 {from}-{to} 行）：{kind} {source}（{units}），导程 {lead}，螺距 {pitch}，{starts}，{side}；牙顶 {axis}{crest}（{crest_source}），牙高 {height}";
     COL_START: "start", "头";
     COL_PASS: "pass", "刀";
     COL_X_FROM: "X from", "起点X";

@@ -14,7 +14,7 @@ use crate::figures::Shop;
 use crate::message::Lang;
 use crate::plan::Plan;
 use crate::settings::Settings;
-use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind};
+use crate::thread::{Axis, CrestSource, Infeed, Source, Thread, ThreadKind, Units};
 
 /// A JavaScript `Error` with `msg`.
 pub fn err(msg: impl std::fmt::Display) -> JsValue {
@@ -100,6 +100,8 @@ pub struct ThreadSummary {
     line: u32,
     end_line: u32,
     source: Source,
+    /// The units of the thread's words and figures.
+    units: Units,
     kind: ThreadKind,
     long_axis: Axis,
     lead: f64,
@@ -181,6 +183,7 @@ impl ThreadSummary {
             line: t.line,
             end_line: t.end_line,
             source: t.source,
+            units: t.units,
             kind: t.kind,
             long_axis: t.long_axis,
             lead: r(t.lead),

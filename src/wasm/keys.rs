@@ -130,6 +130,7 @@ pub fn thread_key(t: &Thread) -> u64 {
         line,
         end_line,
         source,
+        units,
         kind,
         long_axis,
         lead,
@@ -151,6 +152,7 @@ pub fn thread_key(t: &Thread) -> u64 {
     h.write_u32(*line);
     h.write_u32(*end_line);
     discriminant(source).hash(&mut h);
+    discriminant(units).hash(&mut h);
     discriminant(kind).hash(&mut h);
     discriminant(long_axis).hash(&mut h);
     f(&mut h, *lead);

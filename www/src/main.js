@@ -206,7 +206,10 @@ function renderLists(r) {
   const shown = stale ? lastGood : r;
   const problem = (r.settingErrors || []).find((e) => e.setting.toLowerCase() === DESIGNATION);
   const strip = { input: $('designation'), verdict: $('check-verdict'), figures: $('check-figures') };
-  renderCheck(strip, shown.threads[shown.thread], shown.units, t, (state.settings[state.dialect] || {})[DESIGNATION], problem && problem.message);
+  const shownThread = shown.threads[shown.thread];
+  // A thread's figures are in the units its words were written in (the program may switch G20/G21).
+  const units = (shownThread && shownThread.units) || shown.units;
+  renderCheck(strip, shownThread, units, t, (state.settings[state.dialect] || {})[DESIGNATION], problem && problem.message);
   labelViews(shown, shown.thread ?? 0, start, t);
   renderDiagnostics(r.diagnostics);
   renderSettingErrors(r.settingErrors);
@@ -245,7 +248,7 @@ function renderThreads(r, stale) {
     s.value = String(Math.min(start, th.starts));
   }
   $('no-threads').hidden = r.threads.length > 0;
-  const head = passHead(t, r.units);
+  const head = passHead(t, (th && th.units) || r.units);
   if ($('passes').tHead.dataset.html !== head) {
     $('passes').tHead.innerHTML = head;
     $('passes').tHead.dataset.html = head;

@@ -27,10 +27,7 @@ pub fn summary(plan: &Plan, file: &str, lang: Lang) -> String {
     let say = |p: &Phrase, a: Args| p.render(&a, lang);
     let mut out = String::new();
     let count = |s: Severity| plan.diagnostics.iter().filter(|d| d.severity == s).count();
-    let units = match plan.units {
-        screwcut::plan::Units::Mm => &w::UNITS_MM,
-        screwcut::plan::Units::Inch => &w::UNITS_INCH,
-    };
+    let units = units_word(plan.units);
     let time = plan.time_s.map_or(String::new(), |t| say(&w::THREADING_TIME, args![t]));
     let a = args![
         file,
@@ -45,7 +42,7 @@ pub fn summary(plan: &Plan, file: &str, lang: Lang) -> String {
     ];
     let _ = writeln!(out, "{}", say(&w::SUMMARY, a));
     for (i, t) in plan.threads.iter().enumerate() {
-        thread(&mut out, i, t, plan.units == screwcut::plan::Units::Inch, lang);
+        thread(&mut out, i, t, lang);
     }
     if !plan.diagnostics.is_empty() {
         let _ = writeln!(out, "\n{}", w::DIAGNOSTICS_HEADING.text(lang));
@@ -61,8 +58,16 @@ pub fn summary(plan: &Plan, file: &str, lang: Lang) -> String {
     out
 }
 
-/// One thread: its line, the pass table and the shop-floor lines.
-fn thread(out: &mut String, i: usize, t: &Thread, inch: bool, lang: Lang) {
+/// The word for `units`.
+fn units_word(units: screwcut::plan::Units) -> &'static Phrase {
+    match units {
+        screwcut::plan::Units::Mm => &w::UNITS_MM,
+        screwcut::plan::Units::Inch => &w::UNITS_INCH,
+    }
+}
+
+/// One thread, in its own units: its line, the pass table and the shop-floor lines.
+fn thread(out: &mut String, i: usize, t: &Thread, lang: Lang) {
     let kind = match t.kind {
         ThreadKind::Straight => &w::STRAIGHT,
         ThreadKind::Taper => &w::TAPER,
@@ -81,6 +86,7 @@ fn thread(out: &mut String, i: usize, t: &Thread, inch: bool, lang: Lang) {
         screwcut::thread::CrestSource::Cycle => &w::CREST_CYCLE,
         screwcut::thread::CrestSource::Outline => &w::CREST_OUTLINE,
         screwcut::thread::CrestSource::Assumed => &w::CREST_ASSUMED_WORD,
+        screwcut::thread::CrestSource::Comment => &w::CREST_COMMENT,
     };
     let a = args![
         i = i + 1,
@@ -88,6 +94,7 @@ fn thread(out: &mut String, i: usize, t: &Thread, inch: bool, lang: Lang) {
         to = t.end_line,
         kind,
         source = Arg::lit(source),
+        units = units_word(t.units),
         lead = t.lead,
         pitch = t.pitch,
         starts = if t.starts == 1 { &w::ONE_START } else { &w::STARTS },
@@ -142,18 +149,18 @@ fn thread(out: &mut String, i: usize, t: &Thread, inch: bool, lang: Lang) {
         let cells: Vec<String> = row.iter().zip(widths).map(|(c, n)| pad(c, n)).collect();
         let _ = writeln!(out, "  {}  {lines}", cells.join(" "));
     }
-    shop_section(out, t, inch, lang);
+    shop_section(out, t, lang);
 }
 
 /// The shop-floor lines of one thread: time, speed, clearances, helix angle, the thread check.
-fn shop_section(out: &mut String, t: &Thread, inch: bool, lang: Lang) {
+fn shop_section(out: &mut String, t: &Thread, lang: Lang) {
     let s = &t.shop;
     let line = |out: &mut String, p: &Phrase, a: Args| {
         let _ = writeln!(out, "  {}", p.render(&a, lang));
     };
     match (s.cut_time_s, s.time_s, s.rpm) {
         (Some(cut), Some(total), Some(n)) => {
-            let u = Arg::lit(if inch { "in" } else { "mm" });
+            let u = Arg::lit(if t.units.is_inch() { "in" } else { "mm" });
             let a = args![cut, total, n, feed = opt(s.thread_feed, "?"), u, limit = opt(s.rpm_limit, "?")];
             line(out, &w::TIME_LINE, a);
         }

@@ -88,23 +88,32 @@ impl Codes {
 fn used(letter: u8, mo: i64, c: &Codes) -> bool {
     let cycle = (810..=890).contains(&mo);
     let comp = [410, 411, 420, 421];
+    // The lathe profile cycles: rs274 reads D, I, R and Q with the roughing
+    // cycles G71/G72 (and their .1/.2 forms), D, E, P and Q with G70, although
+    // its D message names only G71 (recorded: words-g70-g72, err-g72-j-word,
+    // err-g71-e-word, err-g70-r-word).
+    let roughing = c.g(&[710, 711, 712, 720, 721, 722]);
+    let finishing = c.g(&[700]);
     match letter {
         b'$' => [330, 331, 760].contains(&mo) || c.m(&[3, 4, 5, 19, 51]) || c.g(&[950, 960, 970]),
-        b'D' => c.g(&comp) || c.g(&[710, 711, 712, 960]),
+        b'D' => c.g(&comp) || c.g(&[960]) || roughing || finishing,
         // G33 takes an E word and ignores it (recorded: g33-e-word).
-        b'E' => [760, 330].contains(&mo) || c.g(&[700]) || c.m(&[66, 67, 68]),
+        b'E' => [760, 330].contains(&mo) || finishing || c.m(&[66, 67, 68]),
         b'H' => mo == 760 || c.g(&[430, 432]),
-        b'I' => [20, 30, 50, 51, 331, 760, 870].contains(&mo) || c.g(&[100]),
+        b'I' => [20, 30, 50, 51, 331, 760, 870].contains(&mo) || c.g(&[100]) || roughing,
         b'J' => [20, 30, 50, 51, 760, 870].contains(&mo) || c.g(&[100]),
         b'K' => [20, 30, 330, 331, 760, 870].contains(&mo),
         b'L' => cycle || [760, 52, 730].contains(&mo) || c.g(&[100]) || c.g(&comp) || c.m(&[66, 98]),
         b'P' => {
             [20, 30, 50, 52, 760, 820, 860, 880, 890].contains(&mo)
                 || c.g(&[40, 100, 640])
+                || finishing
                 || c.m(&[19, 50, 51, 52, 53, 62, 63, 64, 65, 66, 98])
         }
-        b'Q' => [50, 730, 760, 830].contains(&mo) || c.g(&[100, 640]) || c.m(&[19, 61, 66, 67, 68]),
-        b'R' => [20, 30, 730, 760].contains(&mo) || cycle || c.g(&[100, 411, 421]) || c.m(&[19]),
+        b'Q' => {
+            [50, 730, 760, 830].contains(&mo) || c.g(&[100, 640]) || roughing || finishing || c.m(&[19, 61, 66, 67, 68])
+        }
+        b'R' => [20, 30, 730, 760].contains(&mo) || cycle || c.g(&[100, 411, 421]) || roughing || c.m(&[19]),
         _ => true,
     }
 }

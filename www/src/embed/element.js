@@ -358,7 +358,8 @@ export class ScrewcutPreview extends HTMLElement {
   _renderTable(r, stale) {
     if (!this._table) return;
     const t = (key) => this._t(key);
-    const head = passHead(t, r.units);
+    const shown = r.threads.length > 0 ? r.threads[r.thread ?? 0] : null;
+    const head = passHead(t, (shown && shown.units) || r.units);
     if (this._table.tHead.dataset.html !== head) {
       this._table.tHead.innerHTML = head;
       this._table.tHead.dataset.html = head;
