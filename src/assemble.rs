@@ -170,6 +170,7 @@ impl Assembler {
                 moves,
                 spindle: g.spindle,
                 pending: None,
+                via: self.group.via.clone(),
             };
             self.group.add(chain, s, &mut self.threads, diags);
         }
@@ -208,6 +209,7 @@ impl Assembler {
             }
             t.first_move = first_move;
             t.units = units;
+            self.mark_via(&mut t);
             if !t.passes.is_empty() {
                 self.threads.push(t);
             }
@@ -238,7 +240,15 @@ impl Assembler {
         if !passes.is_empty() {
             let mut t = plan.thread(passes, first_move);
             t.units = units;
+            self.mark_via(&mut t);
             self.threads.push(t);
+        }
+    }
+
+    /// Sets the calls a cycle was read through on each of its passes.
+    fn mark_via(&self, t: &mut Thread) {
+        if let Some(via) = &self.group.via {
+            t.passes.iter_mut().for_each(|p| p.via = via.to_vec());
         }
     }
 }

@@ -13,8 +13,13 @@ pub use crate::code::{Code, Severity};
 /// they belong.
 pub type Finding = Message;
 
+/// The lines of the calls (`M98`, `G65`, LinuxCNC `call`) that led to a
+/// line, innermost first; `None` in the main program. Shared by every
+/// diagnostic of one call.
+pub type Via = Option<std::sync::Arc<[u32]>>;
+
 /// A kept diagnostic before its position is resolved.
-pub type Item = (Message, Span);
+pub type Item = (Message, Span, Via);
 
 /// One finding about the program, positioned at a span of the source.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -40,6 +45,10 @@ pub struct Diagnostic {
     pub template: &'static Template,
     /// The values the message names (numbers, texts kept verbatim).
     pub args: Args,
+    /// Inside a subprogram or macro: the 1-based lines of the calls that
+    /// led here, innermost first (the call chain).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub via: Vec<u32>,
 }
 
 impl Diagnostic {
@@ -59,12 +68,23 @@ pub struct Diagnostics {
     limit: usize,
     dropped: usize,
     first_dropped: Option<Span>,
+    via: Via,
 }
 
 impl Diagnostics {
     /// A collector that keeps at most `limit` diagnostics (the rest are counted).
     pub fn with_limit(limit: usize) -> Diagnostics {
-        Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None }
+        Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None, via: None }
+    }
+
+    /// Sets the call chain the next diagnostics are found in.
+    pub fn set_via(&mut self, via: Via) {
+        self.via = via;
+    }
+
+    /// The call chain diagnostics are found in now.
+    pub fn via(&self) -> &Via {
+        &self.via
     }
 
     /// Records a diagnostic: `template` with `args` at `span`.
@@ -75,7 +95,7 @@ impl Diagnostics {
     /// Records a finding at `span`.
     pub fn push_message(&mut self, message: Message, span: Span) {
         if self.items.len() < self.limit {
-            self.items.push((message, span));
+            self.items.push((message, span, self.via.clone()));
         } else {
             self.drop_one(span);
         }
@@ -91,7 +111,7 @@ impl Diagnostics {
     /// Records a diagnostic whose arguments are only worked out when it will be kept.
     pub fn push_with(&mut self, template: &'static Template, span: Span, args: impl FnOnce() -> Args) {
         if self.items.len() < self.limit {
-            self.items.push((Message::new(template, args()), span));
+            self.items.push((Message::new(template, args()), span, self.via.clone()));
         } else {
             self.drop_one(span);
         }
@@ -99,7 +119,7 @@ impl Diagnostics {
 
     /// Whether an error-level diagnostic was recorded.
     pub fn has_error(&self) -> bool {
-        self.items.iter().any(|(m, _)| m.code().severity() == Severity::Error)
+        self.items.iter().any(|(m, _, _)| m.code().severity() == Severity::Error)
     }
 
     /// Number recorded so far.
@@ -137,8 +157,8 @@ impl Diagnostics {
     /// Appends `items` (kept from another reading of the same text, `bytes`
     /// further along here), keeping this collector's limit.
     pub fn extend_shifted(&mut self, items: Vec<Item>, bytes: isize) {
-        for (message, span) in items {
-            self.push_message(message, span.shifted(bytes));
+        for (message, span, via) in items {
+            self.push_item((message, span.shifted(bytes), via));
         }
     }
 
@@ -150,8 +170,17 @@ impl Diagnostics {
                 self.first_dropped = Some(f);
             }
         }
-        for (message, span) in other.items {
-            self.push_message(message, span);
+        for item in other.items {
+            self.push_item(item);
+        }
+    }
+
+    /// Records a diagnostic with its own call chain.
+    pub fn push_item(&mut self, item: Item) {
+        if self.items.len() < self.limit {
+            self.items.push(item);
+        } else {
+            self.drop_one(item.1);
         }
     }
 
@@ -171,11 +200,11 @@ impl Diagnostics {
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
         let mut items = self.items;
         if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
-            items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span));
+            items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span, None));
         }
         let mut out: Vec<Diagnostic> = items
             .into_iter()
-            .map(|(m, span)| {
+            .map(|(m, span, via)| {
                 let LineCol { line, column } = index.locate(text, span.start as usize);
                 let end = index.locate(text, span.end as usize);
                 let code = m.code();
@@ -190,6 +219,7 @@ impl Diagnostics {
                     end_line: end.line,
                     end_column: end.column,
                     span,
+                    via: via.map_or_else(Vec::new, |v| v.to_vec()),
                 }
             })
             .collect();

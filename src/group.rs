@@ -10,7 +10,7 @@
 
 use std::ops::Range;
 
-use crate::diagnostic::Diagnostics;
+use crate::diagnostic::{Diagnostics, Via};
 use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
@@ -48,6 +48,8 @@ pub struct Chain {
     /// The last piece, read as the run-out of the segment before it
     /// ([`Grouper::is_runout`]), until another piece continues the cut.
     pub pending: Option<Seg>,
+    /// The calls its first block was read in.
+    pub via: Via,
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -70,6 +72,8 @@ pub struct Grouper {
     after: After,
     /// The last rapid that moved X (the infeed of a Z thread) and that moved Z (of a face thread).
     infeed: [Infeed1; 2],
+    /// The calls the block being read was reached through.
+    pub via: Via,
 }
 
 impl Chain {
@@ -93,6 +97,7 @@ impl Grouper {
             cuts: self.cuts.iter().map(|c| c.shifted(moves, bytes)).collect(),
             after: self.after,
             infeed,
+            via: self.via.clone(),
         }
     }
 
@@ -201,6 +206,7 @@ impl Grouper {
                     moves: PassMoves { approach: at..at, cut: moves.clone(), retract: moves.end..moves.end },
                     spindle: p.spindle,
                     pending: None,
+                    via: self.via.clone(),
                 });
             }
         }
@@ -319,6 +325,7 @@ fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
         infeed: 0.0,
         role: Role::Rough,
         lines,
+        via: c.via.as_deref().map_or_else(Vec::new, <[u32]>::to_vec),
         segments,
         runout_to: last.runout_to,
         screw_in_from: None,

@@ -178,6 +178,7 @@ impl Reading {
         self.exec = snap.exec.clone();
         self.asm.restore(&snap.plan);
         self.diags.truncate(snap.diags.0, snap.diags.1, snap.diags.2);
+        self.sync_via();
     }
 
     /// Reads one block.
@@ -267,7 +268,16 @@ impl Reading {
         let flow = f(&mut self.exec, &mut ctx);
         let (jump, read_to) = (ctx.jump, ctx.read_to);
         self.exec.high = self.exec.high.max(read_to);
+        self.sync_via();
         (flow, jump)
+    }
+
+    /// What is found from here on is found through the calls active now.
+    fn sync_via(&mut self) {
+        if self.asm.group.via != self.exec.via || self.diags.via() != &self.exec.via {
+            self.asm.group.via = self.exec.via.clone();
+            self.diags.set_via(self.exec.via.clone());
+        }
     }
 
     /// The outputs, the reading done.

@@ -225,8 +225,8 @@ impl Planner {
                 advice.push(d.into_items());
             }
             let mut all = Diagnostics::with_limit(usize::MAX);
-            for (message, span) in advice.iter().flatten() {
-                all.push_message(message.clone(), *span);
+            for item in advice.iter().flatten() {
+                all.push_item(item.clone());
             }
             all
         });

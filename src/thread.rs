@@ -199,6 +199,9 @@ pub struct Pass {
     pub role: Role,
     /// Source lines whose blocks make this pass (infeed, cut, retract, return).
     pub lines: Vec<u32>,
+    /// Cut in a subprogram or macro: the lines of the calls that led to it, innermost first.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub via: Vec<u32>,
     /// Corner points of a continuous (multi-segment) cut, `from` and `to` included.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub segments: Vec<Point>,
@@ -221,6 +224,13 @@ pub struct Pass {
     pub moves: PassMoves,
     /// The spindle when the pass was cut.
     pub spindle: Spindle,
+}
+
+impl Pass {
+    /// The lines a drawing of the pass stands for: its own, then the calls that cut it.
+    pub fn drawn_lines(&self) -> impl Iterator<Item = u32> + '_ {
+        self.lines.iter().chain(&self.via).copied()
+    }
 }
 
 /// A thread: every pass that cuts the same helix (or helices, when multi-start).

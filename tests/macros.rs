@@ -77,6 +77,9 @@ fn subprogram_called_three_times_is_the_unrolled_program() {
     same_cut(&with_l, &unrolled);
     // The passes point at the subprogram's lines.
     assert_eq!(with_l.threads[0].passes[0].lines, vec![10, 11, 12, 13]);
+    // … and at the call that made them.
+    assert!(with_l.threads[0].passes.iter().all(|p| p.via == [4]));
+    assert!(unrolled.threads[0].passes.iter().all(|p| p.via.is_empty()));
     same_cut(&fanuc(&main("M98 P31000")), &unrolled);
     same_cut(&fanuc(&main("M98 P00031000")), &unrolled);
     // GSK980TDc reads the same M98 forms; its lengths take no decimal point rule.
@@ -307,4 +310,41 @@ fn modulo_of_whole_numbers() {
     eq(p.moves[0].to.x, 1.0);
     eq(p.moves[0].to.z, 2.0);
     at(&p, Code::MacroValue, 3, 5);
+}
+
+/// A diagnostic inside a subprogram names its line there and the chain of
+/// calls that led to it; a cycle's passes carry the chain too.
+#[test]
+fn diagnostics_and_passes_carry_the_call_chain() {
+    let text = "\
+O0001
+G97 S300 M03
+G00 X58. Z70.
+M98 P1000
+M30
+O1000
+G00 X50.
+M98 P2000
+M99
+O2000
+G92 X47.1 Z13. F2.
+X46.5
+G00 X60. Z70. Q7
+M99
+";
+    let plan = fanuc(text);
+    let t = &plan.threads[0];
+    assert_eq!(t.passes.len(), 2);
+    assert!(t.passes.iter().all(|p| p.via == [8, 4]), "{:?}", t.passes.iter().map(|p| &p.via).collect::<Vec<_>>());
+    // The Q word is not Fanuc G00's: an alarm at line 13, reached through line 8 and line 4.
+    let d = plan.diagnostics.iter().find(|d| d.line == 13).expect("a diagnostic at line 13");
+    assert_eq!(d.via, [8, 4], "{d:?}");
+    assert!(plan.to_json().contains("\"via\":[8,4]"));
+    // Found by the lexer on a subprogram's first line: the chain is already the new one.
+    let nested = fanuc("O0001\nM98 P1000\nM30\nO1000\n((X)) G00 X50.\nM99\n");
+    let d = nested.diagnostics.iter().find(|d| d.line == 5).expect("a diagnostic at line 5");
+    assert_eq!(d.via, [2], "{d:?}");
+    // Outside the calls nothing is added.
+    let main_only = fanuc("G00 X58. Z70. Q7\nM30\n");
+    assert!(main_only.diagnostics.iter().all(|d| d.via.is_empty()));
 }

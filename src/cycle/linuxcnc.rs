@@ -222,6 +222,7 @@ pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Findin
             infeed: d - prev,
             role,
             lines: vec![g.line],
+            via: Vec::new(),
             segments: Vec::new(),
             runout_to: p.runout_to.map(pt),
             screw_in_from: p.screw_in_from.map(pt),

@@ -129,6 +129,7 @@ impl MultiPlan<'_> {
             infeed: h - prev,
             role,
             lines: m.lines.clone(),
+            via: Vec::new(),
             segments: Vec::new(),
             runout_to: pts.runout_to,
             screw_in_from: pts.screw_in_from,

@@ -229,7 +229,7 @@ pub fn capped_note(plan: &Plan, drawn: usize) -> Option<Item> {
 pub fn unmatched_item(plan: &Plan, ti: usize, pi: usize) -> Item {
     let p = &plan.threads[ti].passes[pi];
     Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut)
-        .lines(p.lines.clone())
+        .lines(p.drawn_lines())
         .of(ti, Some(pi))
         .role(p.role)
 }
@@ -347,11 +347,11 @@ pub fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
     }
     let mark = |at: Point| Item::new(Shape::Marker { at: world(at), glyph: Glyph::Bar }, Style::Runout);
     if pass.runout_to.is_some() {
-        out.push(mark(pass.to).lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true);
+        out.push(mark(pass.to).lines(pass.drawn_lines()).of(p.thread, Some(p.pass)), true);
     }
     if pass.screw_in_from.is_some() {
         let item = Item { style: Style::ScrewIn, ..mark(pass.from) };
-        out.push(item.lines(pass.lines.clone()).of(p.thread, Some(p.pass)), true);
+        out.push(item.lines(pass.drawn_lines()).of(p.thread, Some(p.pass)), true);
     }
 }
 

@@ -85,7 +85,7 @@ pub fn starts(plan: &Plan, ti: usize) -> Option<Scene> {
     let many = list.len() > 12;
     for s in list.iter().take(MAX_STARTS_DRAWN) {
         let pass = &t.passes[s.pass];
-        let of = |item: Item| item.lines(pass.lines.clone()).of(ti, Some(s.pass));
+        let of = |item: Item| item.lines(pass.drawn_lines()).of(ti, Some(s.pass));
         let th = s.angle.to_radians();
         let dir: Pt = [th.sin(), th.cos()];
         scene.push(of(Item::new(Shape::Polyline { points: vec![[0.0, 0.0], dir] }, Style::Start)), true);

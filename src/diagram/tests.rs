@@ -183,6 +183,7 @@ fn cycle_plan() -> Plan {
                 infeed: d - prev,
                 role: if i + 1 == depths.len() { Role::Finish } else { Role::Rough },
                 lines: vec![2, 3],
+                via: Vec::new(),
                 segments: Vec::new(),
                 runout_to: Some(run),
                 screw_in_from: Some(screw),

@@ -114,7 +114,7 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
             let points = r.iter().map(|q| pt(q.0, q.1)).collect();
             scene.push(
                 Item::new(Shape::Polygon { points }, Style::Area)
-                    .lines(p.lines.clone())
+                    .lines(p.drawn_lines())
                     .of(ti, Some(c.index))
                     .role(p.role),
                 true,
@@ -126,7 +126,7 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
     let label_every = drawn.len().div_ceil(MAX_DEPTH_LABELS).max(1);
     let tick = 0.08 * l;
     for (k, &(index, p)) in drawn.iter().enumerate() {
-        let of = |item: Item| item.lines(p.lines.clone()).of(ti, Some(index)).role(p.role);
+        let of = |item: Item| item.lines(p.drawn_lines()).of(ti, Some(index)).role(p.role);
         let (d, s) = (p.depth, p.shift);
         let rise = d + top;
         let edge = vec![

@@ -28,7 +28,7 @@ pub mod vars;
 use crate::args;
 use crate::block::{Block, BlockKind, Number, Word};
 use crate::controller::Rules;
-use crate::diagnostic::Diagnostics;
+use crate::diagnostic::{Diagnostics, Via};
 use crate::message as msg;
 use crate::settings::{P, Settings, T};
 use crate::span::Span;
@@ -77,6 +77,8 @@ pub struct Frame {
     pub loops: Vec<Loop>,
     /// The arguments of a macro call, given again to each repeat.
     pub args: Option<Box<[Option<f64>; 33]>>,
+    /// The 1-based line of the call.
+    pub site: u32,
 }
 
 /// An open loop.
@@ -107,6 +109,8 @@ pub struct Exec {
     pub high: usize,
     /// Whether the flow ever left the order of the text.
     pub jumped: bool,
+    /// The lines of the active calls, innermost first (`None` in the main program).
+    pub via: Via,
     /// The main program's first line, once known.
     main: Option<At>,
     /// Runs of the main program made (M99 in the main program).
@@ -221,6 +225,7 @@ impl Exec {
             repeated: 0,
             high: 0,
             jumped: false,
+            via: None,
             main: None,
             main_runs: 0,
             main_named: false,
@@ -368,7 +373,9 @@ impl Exec {
             ctx.diag(&msg::CALL_TOO_DEEP, span, args![what, limit = ours, source = "limits.call_depth"]);
             return false;
         }
-        self.frames.push(Frame { kind, ret: ctx.next, body, repeats, loops: Vec::new(), args: None });
+        let site = ctx.here.line;
+        self.frames.push(Frame { kind, ret: ctx.next, body, repeats, loops: Vec::new(), args: None, site });
+        self.set_via();
         if kind == CallKind::Macro {
             self.vars.levels.push(vars::Locals::default());
         }
@@ -379,11 +386,17 @@ impl Exec {
     /// Leaves the innermost call, back to its caller.
     pub fn return_from(&mut self, ctx: &mut Ctx) -> Option<Frame> {
         let f = self.frames.pop()?;
+        self.set_via();
         if f.kind == CallKind::Macro && self.vars.levels.len() > 1 {
             self.vars.levels.pop();
         }
         self.go(ctx, f.ret);
         Some(f)
+    }
+
+    /// Keeps `via` in step with the frames.
+    fn set_via(&mut self) {
+        self.via = if self.frames.is_empty() { None } else { Some(self.frames.iter().rev().map(|f| f.site).collect()) };
     }
 
     /// The state as reached in a text `bytes` longer before every offset it holds.

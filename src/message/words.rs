@@ -62,4 +62,6 @@ phrases! {
     FIX_LINE: "fix: ΔX {dx} on the final pass centres the pitch diameter", "修正：精车刀 ΔX {dx} 可使中径位于公差带中间";
     NOTE_LINE: "note: {note}", "说明：{note}";
     DIAGNOSTICS_HEADING: "diagnostics:", "诊断：";
+    CALLED_FROM: "called from line", "调用自第";
+    CALLED_FROM_AFTER: "", "行";
 }

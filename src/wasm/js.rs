@@ -71,6 +71,9 @@ pub struct EditorDiagnostic<'a> {
     end_column: u32,
     from: u32,
     to: u32,
+    /// Inside a subprogram or macro: the lines of the calls that led here, innermost first.
+    #[serde(skip_serializing_if = "<[u32]>::is_empty")]
+    via: &'a [u32],
 }
 
 /// The plan's diagnostics with their ranges in `text`'s UTF-16 offsets, their messages in `lang`.
@@ -90,6 +93,7 @@ pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan, lang: Lang) -> Vec<Edi
             end_column: d.end_column,
             from: u[0],
             to: u[1].max(u[0]),
+            via: &d.via,
         })
         .collect()
 }
@@ -249,8 +253,10 @@ pub fn pieces_to_js(p: &SidePieces) -> JsValue {
 /// area, shift, angle, runoutX, runoutZ, screwX, screwZ, time (s, with the
 /// rapids), evenArea (the constant-area schedule's): Float64Array (NaN:
 /// none), role: Uint8Array (0 rough, 1 finish, 2 spring), lineStart:
-/// Uint32Array (n + 1), lines: Uint32Array}`; X as a diameter, (x, z) where
-/// the cut starts, (xEnd, zEnd) where it ends.
+/// Uint32Array (n + 1), lines: Uint32Array, viaStart: Uint32Array (n + 1),
+/// via: Uint32Array (the lines of the calls that cut each pass, innermost
+/// first)}`; X as a diameter, (x, z) where the cut starts, (xEnd, zEnd)
+/// where it ends.
 pub fn passes_to_js(thread: &Thread) -> JsValue {
     use crate::num::round_out as r;
     use crate::thread::Role;
@@ -261,6 +267,7 @@ pub fn passes_to_js(thread: &Thread) -> JsValue {
         (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n + 1));
     let mut cols: [Vec<f64>; 15] = std::array::from_fn(|_| Vec::with_capacity(n));
     let (mut role, mut lines) = (Vec::with_capacity(n), Vec::new());
+    let (mut via_start, mut via) = (Vec::with_capacity(n + 1), Vec::new());
     for (i, p) in passes.iter().enumerate() {
         start.push(p.start);
         index.push(p.index);
@@ -293,8 +300,11 @@ pub fn passes_to_js(thread: &Thread) -> JsValue {
         });
         line_start.push(lines.len() as u32);
         lines.extend_from_slice(&p.lines);
+        via_start.push(via.len() as u32);
+        via.extend_from_slice(&p.via);
     }
     line_start.push(lines.len() as u32);
+    via_start.push(via.len() as u32);
     let o = Object::new();
     set(&o, "n", &(n as u32).into());
     set(&o, "start", &Uint32Array::from(&start[..]).into());
@@ -309,5 +319,7 @@ pub fn passes_to_js(thread: &Thread) -> JsValue {
     set(&o, "role", &js_sys::Uint8Array::from(&role[..]).into());
     set(&o, "lineStart", &Uint32Array::from(&line_start[..]).into());
     set(&o, "lines", &Uint32Array::from(&lines[..]).into());
+    set(&o, "viaStart", &Uint32Array::from(&via_start[..]).into());
+    set(&o, "via", &Uint32Array::from(&via[..]).into());
     o.into()
 }

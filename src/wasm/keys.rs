@@ -90,6 +90,7 @@ pub fn hash_pass(h: &mut KeyHasher, p: &Pass) {
         infeed,
         role,
         lines,
+        via,
         segments,
         runout_to,
         screw_in_from,
@@ -109,6 +110,7 @@ pub fn hash_pass(h: &mut KeyHasher, p: &Pass) {
     f(h, *infeed);
     discriminant(role).hash(h);
     lines.hash(h);
+    via.hash(h);
     h.write_usize(segments.len());
     segments.iter().for_each(|s| point(h, s));
     opt_point(h, runout_to);

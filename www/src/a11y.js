@@ -8,7 +8,7 @@
 //   and a label saying what it shows, in numbers, and how to move it.
 
 import { num } from './table.js';
-import { passLines, passText, threadName } from './lists.js';
+import { passLines, passVia, passText, threadName } from './lists.js';
 
 /** A live region for short announcements (created once, visually hidden). */
 function liveRegion() {
@@ -107,7 +107,7 @@ export function bindListKeys(ctx) {
     label: () => t('list_passes'),
     count: () => (ctx.result() && ctx.result().passes ? ctx.rows.order.length : 0),
     text: (k) => passText(ctx.result().passes, pass(k), t),
-    move: (k) => ctx.setHover(k >= 0 ? { thread: ctx.thread(), pass: pass(k), lines: passLines(ctx.result().passes, pass(k)), fromView: true } : null),
+    move: (k) => ctx.setHover(k >= 0 ? { thread: ctx.thread(), pass: pass(k), lines: passLines(ctx.result().passes, pass(k)), via: passVia(ctx.result().passes, pass(k)), fromView: true } : null),
     enter: (k) => ctx.goto(passLines(ctx.result().passes, pass(k))[0]),
   });
   const diag = (k) => ctx.shown()[k][0];

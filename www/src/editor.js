@@ -18,6 +18,7 @@ import { gcode } from './gcode.js';
 
 const setMarked = StateEffect.define();
 const markLine = Decoration.line({ class: 'cm-marked' });
+const markCall = Decoration.line({ class: 'cm-call' });
 
 /** Lines marked from the drawings (hover, table rows). */
 const marked = StateField.define({
@@ -123,11 +124,17 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
       pending = { list, changes: null };
       if (!scheduled) whenIdle(flush);
     },
-    /** Marks 1-based `lines` (an iterable), replacing the previous marks; the same lines again change nothing. */
-    markLines(lines) {
+    /**
+     * Marks 1-based `lines` and, in another colour, the lines of the `calls`
+     * that ran them (iterables), replacing the previous marks; the same
+     * lines again change nothing.
+     */
+    markLines(lines, calls = []) {
       const doc = view.state.doc;
-      const sorted = [...new Set(lines)].filter((l) => l >= 1 && l <= doc.lines).sort((a, b) => a - b);
-      const key = sorted.join(',');
+      const ok = (l) => l >= 1 && l <= doc.lines;
+      const own = new Set([...lines].filter(ok));
+      const sorted = [...new Set([...own, ...[...calls].filter(ok)])].sort((a, b) => a - b);
+      const key = sorted.map((l) => (own.has(l) ? l : `c${l}`)).join(',');
       // Marks move with edits; an edit that joins or splits lines re-marks them.
       if (key === marks && doc === markedDoc) return;
       if (key === '' && marks === '') return;
@@ -136,7 +143,7 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
       const b = new RangeSetBuilder();
       for (const l of sorted) {
         const line = doc.line(l);
-        b.add(line.from, line.from, markLine);
+        b.add(line.from, line.from, own.has(l) ? markLine : markCall);
       }
       view.dispatch({ effects: setMarked.of(b.finish()) });
     },

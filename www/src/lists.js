@@ -92,7 +92,8 @@ export function passHead(t, units) {
 
 /** Row `i` of pass columns `c` (rows `order[i]`), as HTML. */
 export function passRow(c, i, t, hot, stale) {
-  const lines = Array.from(c.lines.subarray(c.lineStart[i], c.lineStart[i + 1])).join(',');
+  const via = passVia(c, i);
+  const lines = Array.from(c.lines.subarray(c.lineStart[i], c.lineStart[i + 1])).join(',') + (via.length ? ` ← ${via.join(' ← ')}` : '');
   const role = ROLE_NAMES[c.role[i]] || 'rough';
   const opt = (col) => (!col || Number.isNaN(col[i]) ? '' : num(col[i]));
   const area = opt(c.area);
@@ -103,7 +104,17 @@ export function passRow(c, i, t, hot, stale) {
 /** Pass `i` of columns `c` in words (what a screen reader reads for the row). */
 export function passText(c, i, t) {
   const role = ROLE_NAMES[c.role[i]] || 'rough';
-  return `${t('col_pass')} ${c.index[i]}, ${t('col_start')} ${c.start[i]}: X${num(c.x[i])}, Z${num(c.z[i])} → ${num(c.zEnd[i])}, ${t('col_depth')} ${num(c.depth[i])}, ${t(role)}, ${t('col_lines')} ${passLines(c, i).join(', ')}`;
+  return `${t('col_pass')} ${c.index[i]}, ${t('col_start')} ${c.start[i]}: X${num(c.x[i])}, Z${num(c.z[i])} → ${num(c.zEnd[i])}, ${t('col_depth')} ${num(c.depth[i])}, ${t(role)}, ${t('col_lines')} ${passLines(c, i).join(', ')}${viaText(passVia(c, i), t)}`;
+}
+
+/** The lines of the calls that cut pass `i` of columns `c`, innermost first (none in the main program). */
+export function passVia(c, i) {
+  return c && c.via ? Array.from(c.via.subarray(c.viaStart[i], c.viaStart[i + 1])) : [];
+}
+
+/** `, called from line 8 ← 4` for a call chain, or nothing. */
+function viaText(via, t) {
+  return via && via.length ? `, ${t('called_from', { lines: via.join(' ← ') })}` : '';
 }
 
 /** The source lines of pass `i` of columns `c`. */
@@ -113,7 +124,7 @@ export function passLines(c, i) {
 
 /** One diagnostic as a list item (`i` its index in the full list). */
 export function diagnosticRow(d, i, t, hot) {
-  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}</span></li>`;
+  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}${d.via ? `<span class="via">${esc(t('called_from', { lines: d.via.join(' ← ') }))}</span>` : ''}</span></li>`;
 }
 
 /** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, evenArea, time, role, lines, shift, angle}`). */
@@ -133,6 +144,7 @@ export function passObjects(c) {
       time: !c.time || Number.isNaN(c.time[i]) ? null : c.time[i],
       role: ROLE_NAMES[c.role[i]] || 'rough',
       lines: passLines(c, i),
+      via: passVia(c, i),
       shift: c.shift[i],
       angle: c.angle[i],
     };
@@ -149,7 +161,7 @@ export function tipText(info, result, thread, t) {
   return (
     `${t('thread')} ${info.thread + 1} · ${t('col_pass')} ${c.index[i]}` +
     (multi ? ` · ${t('col_start')} ${c.start[i]}` : '') +
-    ` · X${num(c.x[i])} Z${num(c.z[i])}→${num(c.zEnd[i])} · ${t('col_depth')} ${num(c.depth[i])} · ${t(ROLE_NAMES[c.role[i]] || 'rough')} · ${t('col_lines')} ${passLines(c, i).join(', ')}`
+    ` · X${num(c.x[i])} Z${num(c.z[i])}→${num(c.zEnd[i])} · ${t('col_depth')} ${num(c.depth[i])} · ${t(ROLE_NAMES[c.role[i]] || 'rough')} · ${t('col_lines')} ${passLines(c, i).join(', ')}${viaText(passVia(c, i), t)}`
   );
 }
 

@@ -11,7 +11,7 @@ import { Library } from './programs.js';
 import { num, esc } from './table.js';
 import { download, toast, shareLink } from './pageutil.js';
 import { startEngine } from './client.js';
-import { VirtualRows, passHead, passRow, passLines, diagnosticRow, tipText, threadName, patchRows } from './lists.js';
+import { VirtualRows, passHead, passRow, passLines, passVia, diagnosticRow, tipText, threadName, patchRows } from './lists.js';
 import { patchList } from './parts.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { DESIGNATION, renderCheck, bindDesignation } from './check.js';
@@ -286,14 +286,14 @@ function renderDiagnostics(list) {
 function refreshHighlight() {
   const lines = hover ? hover.lines : [];
   client.send({ type: 'highlight', hover, cursor: editor.cursorLine() });
-  editor.markLines(lines);
+  editor.markLines(lines, (hover && hover.via) || []);
   const k = hover && hover.pass >= 0 && hover.thread === thread ? passRows.order.indexOf(hover.pass) : -1;
   passRows.mark(k, hover && hover.fromView);
 }
 
 function onViewHover(m) {
   const info = m.info;
-  hover = info && (info.pass >= 0 || info.lines.length) ? { thread: info.thread, pass: info.pass, lines: passLinesOf(info), fromView: true } : null;
+  hover = info && (info.pass >= 0 || info.lines.length) ? { thread: info.thread, pass: info.pass, lines: passLinesOf(info), via: passViaOf(info), fromView: true } : null;
   refreshHighlight();
   tip(info, m.clientX, m.clientY);
 }
@@ -302,6 +302,11 @@ function onViewHover(m) {
 function passLinesOf(info) {
   if (info.pass >= 0 && info.thread === thread && result && result.passes) return passLines(result.passes, info.pass);
   return info.lines;
+}
+
+/** The calls that cut a hovered pass of the chosen thread (marked apart from its own lines). */
+function passViaOf(info) {
+  return info.pass >= 0 && info.thread === thread && result && result.passes ? passVia(result.passes, info.pass) : [];
 }
 
 /** A tooltip for what the pointer is over in a drawing. */
@@ -565,7 +570,7 @@ function finishSetup() {
   tbody.addEventListener('mouseover', (e) => {
     const i = rowPass(e);
     if (i < 0 || !result || !result.passes) return;
-    hover = { thread, pass: i, lines: passLines(result.passes, i) };
+    hover = { thread, pass: i, lines: passLines(result.passes, i), via: passVia(result.passes, i) };
     refreshHighlight();
     $('tip').hidden = true;
   });

@@ -218,8 +218,9 @@ fn passed_count(line: &str) -> Option<u32> {
 /// list and the element's guards (`safety.test.mjs`), the keyboard, a
 /// phone's screen and Chinese (`access.test.mjs`), then the drawings' labels
 /// in the app and in embeds, English and Chinese (`labels.test.mjs`), and
-/// the thread wizard and "Expand to blocks" (`tools.test.mjs`); fails when
-/// any fails.
+/// the thread wizard and "Expand to blocks" (`tools.test.mjs`), and a
+/// program with subprograms: passes and diagnostics with their calls
+/// (`calls.test.mjs`); fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
@@ -237,9 +238,16 @@ pub fn browser_tests() -> Result {
     run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
     let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
     let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
-    let rest =
-        ["engine.test.mjs", "docs.test.mjs", "safety.test.mjs", "access.test.mjs", "labels.test.mjs", "tools.test.mjs"]
-            .map(|t| run("node", &[t, &url], Some(&dir)));
+    let rest = [
+        "engine.test.mjs",
+        "docs.test.mjs",
+        "safety.test.mjs",
+        "access.test.mjs",
+        "labels.test.mjs",
+        "tools.test.mjs",
+        "calls.test.mjs",
+    ]
+    .map(|t| run("node", &[t, &url], Some(&dir)));
     rest.into_iter().fold(app, |all, r| all.and(r))
 }
 

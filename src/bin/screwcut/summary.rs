@@ -52,7 +52,13 @@ pub fn summary(plan: &Plan, file: &str, lang: Lang) -> String {
                 Severity::Warning => &w::WARNING,
                 Severity::Info => &w::NOTE,
             };
-            let _ = writeln!(out, "  {}:{}: {} [{}] {}", d.line, d.column, sev.text(lang), d.code, d.render(lang));
+            let _ = write!(out, "  {}:{}: {} [{}] {}", d.line, d.column, sev.text(lang), d.code, d.render(lang));
+            if !d.via.is_empty() {
+                let lines: Vec<String> = d.via.iter().map(u32::to_string).collect();
+                let (from, after) = (w::CALLED_FROM.text(lang), w::CALLED_FROM_AFTER.text(lang));
+                let _ = write!(out, " ({from} {}{after})", lines.join(" ← "));
+            }
+            out.push('\n');
         }
     }
     out
