@@ -297,6 +297,15 @@ params! {
     MainProgram: d("program.main", CYCLES, Kind::Int, 0.0, (0.0, 99999.0), "O number",
         "The program that runs when the file holds several (each starting with its O number): 0 = the first in the file.",
         "文件中有多个程序时运行的主程序号：0 表示文件中的第一个程序。");
+    FanucSubNesting: d("fanuc.sub_nesting", FANUC, Kind::Int, 10.0, (1.0, 100.0), "levels",
+        "Deepest nesting of M98 subprogram calls before the controller's alarm (PS0077). 0i-D/0i-F: 10; 0i-C: 4 (B-64124EN §12.3 p.136).",
+        "M98 子程序调用的最大嵌套层数(超过时报警 PS0077)。0i-D/0i-F 为 10，0i-C 为 4。");
+    FanucMacroNesting: d("fanuc.macro_nesting", FANUC, Kind::Int, 5.0, (1.0, 100.0), "levels",
+        "Deepest nesting of G65/G66 macro calls before the controller's alarm (PS0077). 0i-D/0i-F: 5; 16i-PB: 4 (B-63684EN ch. 16 p.278).",
+        "G65/G66 宏程序调用的最大嵌套层数。0i-D/0i-F 为 5，16i-PB 为 4。");
+    GskSubNesting: d("gsk.sub_nesting", GSK, Kind::Int, 4.0, (1.0, 100.0), "levels",
+        "Deepest nesting of M98 subprogram calls before the controller's alarm (GSK980TD family: 4).",
+        "M98 子程序调用的最大嵌套层数(GSK980TD 系列为 4)。");
     LimitBlockChars: d("limits.block_chars", ALL, Kind::Int, 256.0, (8.0, 100000.0), "characters",
         "Longest block accepted.",
         "程序段最大字符数。");

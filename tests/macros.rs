@@ -348,3 +348,90 @@ M99
     let main_only = fanuc("G00 X58. Z70. Q7\nM30\n");
     assert!(main_only.diagnostics.iter().all(|d| d.via.is_empty()));
 }
+
+/// `G66 P… <arguments>` calls its macro after every later block that moves
+/// an axis, until `G67`; the macro's own moves do not call it again; the
+/// G66 block itself moves nothing. Each call is a macro level with the
+/// arguments as locals (16i-PB B-63684EN ch. 16 p.278: "Calls can be nested
+/// to a depth of four levels including simple calls (G65) and modal calls
+/// (G66)"; Mitsubishi M700V programming manual §13.5 p.308, a Fanuc-style
+/// macro: "called every time the movement command is executed with modal
+/// call A", not by the moves in the macro; Yaskawa LX3 §2.8.23: G66 modal
+/// call, G67 cancel).
+#[test]
+fn g66_calls_after_each_move_until_g67() {
+    let modal = "\
+O0003
+G97 S300 M03
+G00 X58. Z70.
+G66 P9010 A13. B2.
+X47.1
+X46.5
+X45.9
+G67
+X60.
+G00 X100. Z100.
+M30
+O9010 (ONE PASS FROM HERE TO Z#1)
+G32 Z#1 F#2
+G00 X58.
+Z70.
+M99
+";
+    let unrolled = "\
+O0003
+G97 S300 M03
+G00 X58. Z70.
+X47.1
+G32 Z13. F2.
+G00 X58.
+Z70.
+X46.5
+G32 Z13. F2.
+G00 X58.
+Z70.
+X45.9
+G32 Z13. F2.
+G00 X58.
+Z70.
+X60.
+G00 X100. Z100.
+M30
+";
+    let plan = fanuc(modal);
+    same_cut(&plan, &fanuc(unrolled));
+    assert_eq!(plan.threads[0].passes.len(), 3);
+    // Each pass was cut by the macro, called after the move on line 5, 6 and 7.
+    let via: Vec<&[u32]> = plan.threads[0].passes.iter().map(|p| &p.via[..]).collect();
+    assert_eq!(via, [&[5][..], &[6], &[7]]);
+    // A macro that is not in the file: the controller's alarm at the first call, not at G66.
+    let missing = fanuc("G00 X58. Z70.\nG66 P9999\nG04 X1.\nX50.\nM30\n");
+    let d: Vec<_> = missing.diagnostics.iter().filter(|d| d.code == Code::JumpTarget).collect();
+    assert_eq!(d.len(), 1, "{:?}", missing.diagnostics);
+    assert_eq!(d[0].line, 2);
+}
+
+/// M98 nests ten levels on the 0i-D/0i-F (setting `fanuc.sub_nesting`;
+/// the 0i-C's four, B-64124EN §12.3 p.136, by setting it to 4): the
+/// eleventh call is the controller's alarm, at the call.
+#[test]
+fn subprogram_nesting_is_the_controllers_setting() {
+    let chain = |levels: u32| {
+        let mut s = String::from("O0001\nM98 P1001\nM30\n");
+        for k in 1..=levels {
+            let call = if k < levels { format!("M98 P{}\n", 1001 + k) } else { "G00 X10.\n".to_string() };
+            s += &format!("O{}\n{call}M99\n", 1000 + k);
+        }
+        s
+    };
+    no_alarm(&fanuc(&chain(10)));
+    let deep = fanuc(&chain(11));
+    let d: Vec<_> = deep.diagnostics.iter().filter(|d| d.code == Code::CallDepth).collect();
+    assert_eq!(d.len(), 1);
+    assert!(d[0].message.contains("deeper than 10 (fanuc.sub_nesting)"), "{}", d[0].message);
+    let c = plan_with(&chain(5), Dialect::Fanuc0i, &["fanuc.sub_nesting=4"]);
+    assert_eq!(c.diagnostics.iter().filter(|d| d.code == Code::CallDepth).count(), 1);
+    // GSK980TD family: four.
+    assert_eq!(plan_with(&chain(5), Dialect::Gsk980tdc, &[]).with_code(Code::CallDepth).count(), 1);
+    no_alarm(&plan_with(&chain(4), Dialect::Gsk980tdc, &[]));
+}

@@ -4,7 +4,7 @@
 //! set; Q and the cycle depths are integers in increments. One F register
 //! serves feed and thread lead.
 
-use super::macros::{Flavor, Macros};
+use super::macros::{Depth, Flavor, Macros};
 use super::words::Unit;
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::block::Block;
@@ -32,8 +32,8 @@ pub static CONTROLLER: Controller = Controller {
             flavor: Flavor::Fanuc,
             subprograms: true,
             macro_calls: true,
-            sub_depth: 10,
-            macro_depth: 5,
+            sub_depth: Depth::Setting(P::FanucSubNesting),
+            macro_depth: Depth::Setting(P::FanucMacroNesting),
             max_loop: 3,
             h_codes: false,
             source: "Fanuc 0i nesting",

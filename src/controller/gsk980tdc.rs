@@ -6,7 +6,7 @@
 //! `G78 P(m)(r)(a) Q(Δdmin) R(d) J K D L E;`
 //! `G78 X(U) Z(W) R(i) P(k) Q(Δd) F(I);`
 
-use super::macros::{Flavor, Macros};
+use super::macros::{Depth, Flavor, Macros};
 use super::words::{self, Unit};
 use super::{Command, Controller, Reader, Rules, ThreadRules, ThreadWords, Writing, g32, g76, g92, lathe_g_code};
 use crate::args;
@@ -39,8 +39,8 @@ pub static CONTROLLER: Controller = Controller {
             flavor: Flavor::Fanuc,
             subprograms: true,
             macro_calls: false,
-            sub_depth: 4,
-            macro_depth: 4,
+            sub_depth: Depth::Setting(P::GskSubNesting),
+            macro_depth: Depth::Fixed(4),
             max_loop: 3,
             h_codes: true,
             source: "GSK980TDc nesting",

@@ -14,7 +14,7 @@ mod check;
 mod g33;
 mod g76;
 
-use super::macros::{Flavor, Macros};
+use super::macros::{Depth, Flavor, Macros};
 use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code};
 use crate::args;
 use crate::block::Block;
@@ -42,8 +42,8 @@ pub static CONTROLLER: Controller = Controller {
             flavor: Flavor::LinuxCnc,
             subprograms: false,
             macro_calls: false,
-            sub_depth: 9,
-            macro_depth: 9,
+            sub_depth: Depth::Fixed(9),
+            macro_depth: Depth::Fixed(9),
             max_loop: 255,
             h_codes: false,
             source: "rs274ngc",

@@ -4,6 +4,7 @@
 //! forms where its manual has them (its rules say which).
 
 use super::eval::{Fail, Val};
+use super::index::At;
 use super::stmt::{Assign, Line, Stmt};
 use super::{CallKind, Ctx, Exec, Flow, Loop, Macros, Vals, eval, fill, truth};
 use crate::args;
@@ -202,17 +203,23 @@ const ARGS_I: &[(u8, usize)] = &[
     (b'Z', 26),
 ];
 
-/// `G65 P… L… <arguments>`: a macro call with a new level of locals.
+/// `G65 P… L… <arguments>`: a macro call with a new level of locals;
+/// `G66 P… L… <arguments>`: the same call made after each later block
+/// that moves an axis, until `G67` (which cancels it).
 pub fn g65(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> Flow {
     if block.has_error || !macros.macro_calls {
         return Flow::Run;
     }
-    let Some(g) = block.all(b'G').find(|w| w.num.integer() == Some(65)).copied() else { return Flow::Run };
+    if block.all(b'G').any(|w| w.num.integer() == Some(67)) {
+        ex.modal_call = None;
+    }
+    let Some(g) = block.all(b'G').find(|w| matches!(w.num.integer(), Some(65 | 66))).copied() else {
+        return Flow::Run;
+    };
     let Some(p) = block.get(b'P').copied() else {
         ctx.diag(&msg::CALL_NEEDS_P, g.span, args![word = g]);
         return Flow::Skip;
     };
-    let Some(body) = program(ctx, p.value(), p.span) else { return Flow::Skip };
     let count = block.get(b'L').map_or(1.0, |l| l.value());
     let count = if count >= 1.0 && count.fract() == 0.0 { count as u32 } else { 1 };
     let mut locals = [None; 33];
@@ -221,22 +228,69 @@ pub fn g65(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> 
             locals[slot - 1] = Some(w.value());
         }
     }
-    if ex.call(ctx, CallKind::Macro, body, count - 1, g.span, macros) {
-        ex.vars.top().num = locals;
-        if let Some(f) = ex.frames.last_mut() {
-            f.args = Some(Box::new(locals));
-        }
+    if g.num.integer() == Some(66) {
+        let Some(n) = program_number(ctx, p.value(), p.span) else { return Flow::Skip };
+        let level = macro_level(ex);
+        ex.modal_call =
+            Some(Box::new(super::ModalCall { program: n, span: p.span, count, args: Box::new(locals), level }));
+        // The block's other G words (G20 …) still run; its other words were the arguments.
+        block.words.retain(|w| w.letter == b'G' && w.num.integer() != Some(66));
+        return if block.words.is_empty() { Flow::Skip } else { Flow::Run };
     }
+    let Some(body) = program(ctx, p.value(), p.span) else { return Flow::Skip };
+    enter_macro(ex, ctx, body, count, &locals, g.span, macros);
     Flow::Skip
 }
 
-/// The body of program `O(p)`; `None` after an alarm.
-fn program(ctx: &mut Ctx, p: f64, span: Span) -> Option<super::index::At> {
+/// Calls a macro at `body` with `locals` as its arguments, `count` times.
+fn enter_macro(ex: &mut Exec, ctx: &mut Ctx, body: At, count: u32, locals: &Args, span: Span, macros: &Macros) {
+    if ex.call(ctx, CallKind::Macro, body, count - 1, span, macros) {
+        ex.vars.top().num = *locals;
+        if let Some(f) = ex.frames.last_mut() {
+            f.args = Some(Box::new(*locals));
+        }
+    }
+}
+
+/// The arguments of a macro call, #1–#33.
+type Args = [Option<f64>; 33];
+
+/// How many macro calls are active.
+fn macro_level(ex: &Exec) -> usize {
+    ex.frames.iter().filter(|f| f.kind == CallKind::Macro).count()
+}
+
+/// After a block ran with a `G66` call in force: when it moved an axis,
+/// the macro is called (true). Blocks of the macro itself, and blocks
+/// that name an axis without moving it (G04 dwell, G10, G50), do not call.
+pub fn g66_call(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> bool {
+    let Some(m) = ex.modal_call.as_deref().cloned() else { return false };
+    let moves = block.words.iter().any(|w| matches!(w.letter, b'X' | b'Z' | b'U' | b'W' | b'Y' | b'C'));
+    let not_a_move = block.all(b'G').any(|w| matches!(w.num.integer(), Some(4 | 10 | 50 | 65 | 66)));
+    if block.has_error || !moves || not_a_move || macro_level(ex) != m.level {
+        return false;
+    }
+    let Some(body) = program(ctx, m.program as f64, m.span) else {
+        ex.modal_call = None;
+        return false;
+    };
+    enter_macro(ex, ctx, body, m.count, &m.args, m.span, macros);
+    true
+}
+
+/// A program number `P`; `None` after an alarm.
+fn program_number(ctx: &mut Ctx, p: f64, span: Span) -> Option<u32> {
     let n = p.round();
     if !(1.0..=99_999_999.0).contains(&n) || n != p {
         ctx.diag(&msg::BAD_PROGRAM_NUMBER, span, args![value = p]);
         return None;
     }
+    Some(n as u32)
+}
+
+/// The body of program `O(p)`; `None` after an alarm.
+fn program(ctx: &mut Ctx, p: f64, span: Span) -> Option<At> {
+    let n = program_number(ctx, p, span)? as f64;
     match ctx.program(n as u32) {
         Some(e) => Some(e.next),
         None => {

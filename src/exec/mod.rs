@@ -81,6 +81,22 @@ pub struct Frame {
     pub site: u32,
 }
 
+/// A modal macro call (`G66`) in force: the macro runs after each block
+/// that moves an axis, until `G67`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ModalCall {
+    /// The macro's program number.
+    pub program: u32,
+    /// Where its `P` was written.
+    pub span: Span,
+    /// Runs per call (`L`).
+    pub count: u32,
+    /// The arguments (argument specification I).
+    pub args: Box<[Option<f64>; 33]>,
+    /// The macro level it was given at: blocks of the macro itself do not call it again.
+    pub level: usize,
+}
+
 /// An open loop.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Loop {
@@ -111,6 +127,8 @@ pub struct Exec {
     pub jumped: bool,
     /// The lines of the active calls, innermost first (`None` in the main program).
     pub via: Via,
+    /// The modal macro call in force (`G66`).
+    pub modal_call: Option<Box<ModalCall>>,
     /// The main program's first line, once known.
     main: Option<At>,
     /// Runs of the main program made (M99 in the main program).
@@ -226,6 +244,7 @@ impl Exec {
             high: 0,
             jumped: false,
             via: None,
+            modal_call: None,
             main: None,
             main_runs: 0,
             main_named: false,
@@ -292,6 +311,9 @@ impl Exec {
         if ended && (!self.frames.is_empty() || macros.flavor == Flavor::LinuxCnc) {
             // M30/M02 in a subprogram ends the program; rs274 reads nothing after it.
             return Flow::Stop;
+        }
+        if self.modal_call.is_some() && fanuc::g66_call(self, ctx, block, macros) {
+            return Flow::Run;
         }
         if macros.subprograms { fanuc::m98_m99(self, ctx, block, macros) } else { Flow::Run }
     }
@@ -364,9 +386,10 @@ impl Exec {
             CallKind::Macro => (macros.macro_depth, "G65"),
         };
         let ours = ctx.settings.int(P::LimitCallDepth).max(1) as u32;
+        let (source, limit) = (limit.setting().unwrap_or(macros.source), limit.get(ctx.settings));
         if depth(kind) >= limit {
             let t = if macros.flavor == Flavor::LinuxCnc { &msg::LCNC_TOO_DEEP } else { &msg::CALL_TOO_DEEP };
-            ctx.diag(t, span, args![what, limit, source = macros.source]);
+            ctx.diag(t, span, args![what, limit, source]);
             return false;
         }
         if self.frames.len() as u32 >= ours {
@@ -410,6 +433,9 @@ impl Exec {
             f.loops.iter_mut().for_each(|l| at(&mut l.head));
         }
         self.loops.iter_mut().for_each(|l| at(&mut l.head));
+        if let Some(m) = &mut self.modal_call {
+            m.span = m.span.shifted(bytes);
+        }
     }
 }
 
