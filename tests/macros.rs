@@ -435,3 +435,90 @@ fn subprogram_nesting_is_the_controllers_setting() {
     assert_eq!(plan_with(&chain(5), Dialect::Gsk980tdc, &[]).with_code(Code::CallDepth).count(), 1);
     no_alarm(&plan_with(&chain(4), Dialect::Gsk980tdc, &[]));
 }
+
+/// GSK's macro A: `G65 Hm P#i Q#j R#k` (GSK980TDi user manual ch. 3,
+/// "Macro command list": H01 assignment, H02–H05 arithmetic, H11–H13
+/// OR/AND/XOR, H21 square root, H22 absolute value, H23 remainder, H26
+/// #i×#j÷#k, H27 √(#j²+#k²), H31–H34 trigonometry in degrees, H80 jump,
+/// H81–H86 conditional jumps (=, ≠, >, <, ≥, ≤ in the order of Fanuc's
+/// macro A; the GSK page's symbols are lost in its text), H99 alarm 500+n).
+/// A counting loop written with H codes cuts the passes of the same
+/// program unrolled.
+#[test]
+fn gsk_macro_a_loop_is_the_unrolled_program() {
+    let program = "\
+O0004
+G97 S300 M03
+G00 X58 Z70
+G65 H01 P#101 Q0
+N10 G65 H02 P#101 Q#101 R1
+G65 H04 P#102 Q#101 R0.6
+G65 H03 P#100 Q47.7 R#102
+G00 X#100
+G32 Z13 F2
+G00 X58
+Z70
+G65 H84 P10 Q#101 R3
+G00 X100 Z100
+M30
+";
+    let gsk = |s: &str| plan_with(s, Dialect::Gsk980tdc, &[]);
+    let plan = gsk(program);
+    same_cut(&plan, &gsk(UNROLLED));
+    assert_eq!(plan.threads[0].passes.len(), 3);
+}
+
+/// Each H operation's value, read back through an address (`G00 X#1`).
+#[test]
+fn gsk_macro_a_operations() {
+    let gsk = |s: &str| plan_with(s, Dialect::Gsk980tdc, &[]);
+    let x_of = |h: &str| {
+        let plan = gsk(&format!("G00 X0 Z0\n#2=3.\n{h}\nG00 X#1 Z1\nM30\n"));
+        no_alarm(&plan);
+        plan.moves.last().map(|m| m.to).unwrap()
+    };
+    let at = |x: f64| gsk(&format!("G00 X0 Z0\nG00 X{x:.3} Z1\nM30\n")).moves.last().map(|m| m.to).unwrap();
+    for (h, x) in [
+        ("G65 H01 P#1 Q12.5", 12.5),
+        ("G65 H02 P#1 Q#2 R4.", 7.0),
+        ("G65 H03 P#1 Q#2 R4.", -1.0),
+        ("G65 H04 P#1 Q#2 R4.", 12.0),
+        ("G65 H05 P#1 Q#2 R4.", 0.75),
+        ("G65 H11 P#1 Q5 R2", 7.0),
+        ("G65 H12 P#1 Q6 R3", 2.0),
+        ("G65 H13 P#1 Q6 R3", 5.0),
+        ("G65 H21 P#1 Q16.", 4.0),
+        ("G65 H22 P#1 Q-2.5", 2.5),
+        ("G65 H23 P#1 Q17 R5", 2.0),
+        ("#1=10.\nG65 H26 P#1 Q#2 R4.", 7.5),
+        ("G65 H27 P#1 Q3. R4.", 5.0),
+        ("G65 H31 P#1 Q10. R30.", 5.0),
+        ("G65 H32 P#1 Q10. R60.", 5.0),
+        ("G65 H33 P#1 Q10. R45.", 10.0),
+        ("G65 H34 P#1 Q1. R1.", 45.0),
+    ] {
+        let got = x_of(h);
+        let want = at(x);
+        assert!((got.x - want.x).abs() < 1e-9 && (got.z - want.z).abs() < 1e-9, "{h}: {got:?} != {want:?}");
+    }
+    // Conditional jumps: #2 = 3 against R; the jump skips the X20 move.
+    for (h, jumps) in [(81, false), (82, true), (83, true), (84, false), (85, true), (86, false)] {
+        let plan = gsk(&format!("G00 X0 Z0\n#2=3.\nG65 H{h} P5 Q#2 R2.\nG00 X20 Z1\nN5 G00 X30 Z2\nM30\n"));
+        no_alarm(&plan);
+        let xs: Vec<u32> = plan.moves.iter().map(|m| m.line).collect();
+        assert_eq!(!xs.contains(&4), jumps, "H{h}: {xs:?}");
+    }
+    // H99: the program's own alarm 500 + n; an H the manual does not list; a result that is not a variable.
+    let alarm = gsk("G65 H99 P7\nM30\n");
+    assert!(alarm.diagnostics.iter().any(|d| d.code == Code::MacroAlarm && d.message.contains("alarm 507")));
+    let bad = gsk("G65 H07 P#1 Q1\nM30\n");
+    assert!(
+        bad.diagnostics.iter().any(|d| d.code == Code::MacroSyntax && d.message.contains("H07: not an operation")),
+        "{:?}",
+        bad.diagnostics
+    );
+    let no_var = gsk("G65 H01 P1 Q1\nM30\n");
+    assert!(no_var.diagnostics.iter().any(|d| d.code == Code::MacroSyntax && d.message.contains("P#i")));
+    // Fanuc 0i has no macro A: there G65 is a macro call (P names a program).
+    assert!(fanuc("G65 H01 P#1 Q1\nM30\n").diagnostics.iter().any(|d| d.code == Code::JumpTarget));
+}

@@ -22,6 +22,11 @@ pub(super) fn statement(
     macros: &Macros,
 ) -> Result<Flow, Fail> {
     match &line.stmt {
+        Stmt::Words(words, _) if macros.h_codes && words.iter().any(is_g65) => {
+            let ops: Vec<_> = words.iter().map(operand).collect();
+            let g = words.iter().find(|w| is_g65(w)).map_or(block.span, |w| w.span);
+            Ok(super::gsk::run_or_alarm(ex, ctx, block, &ops, g))
+        }
         Stmt::Words(words, _) => {
             if !fill(ex, ctx, block, line, words) {
                 block.has_error = true;
@@ -72,6 +77,20 @@ pub(super) fn statement(
     }
 }
 
+/// Whether a macro line's word is `G65`.
+fn is_g65(w: &super::stmt::MWord) -> bool {
+    w.letter == b'G' && matches!(&w.value, super::stmt::Value::Num(n) if n.integer() == Some(65))
+}
+
+/// A macro line's word as an operand of GSK's `G65 H`.
+fn operand(w: &super::stmt::MWord) -> super::gsk::Operand {
+    let value = match &w.value {
+        super::stmt::Value::Num(n) => super::expr::Expr::Num(n.value),
+        super::stmt::Value::Expr(e) => e.clone(),
+    };
+    super::gsk::Operand { letter: w.letter, value, span: w.span }
+}
+
 fn check_loop_id(m: u8, span: Span, macros: &Macros) -> Result<(), Fail> {
     if m == 0 || m > macros.max_loop {
         return Err(Fail { template: &msg::LOOP_NUMBER, span, args: args![m, max = macros.max_loop] });
@@ -104,7 +123,8 @@ fn close_loop(ex: &mut Exec, ctx: &mut Ctx, m: u8, span: Span) -> Result<(), Fai
     Ok(())
 }
 
-fn goto(ex: &mut Exec, ctx: &mut Ctx, target: &super::expr::Expr, span: Span) -> Result<(), Fail> {
+/// Jumps to the sequence number `target` gives, in the program being run.
+pub(super) fn goto(ex: &mut Exec, ctx: &mut Ctx, target: &super::expr::Expr, span: Span) -> Result<(), Fail> {
     let v = eval(ex, ctx, target)?.unwrap_or(f64::NAN);
     let n = v.round();
     if !(1.0..=99999.0).contains(&n) || (v - n).abs() > 1e-6 {
@@ -126,9 +146,22 @@ fn assign(ex: &mut Exec, ctx: &mut Ctx, a: &Assign) -> Result<(), Fail> {
             args: args![found = "#<", expected = &msg::X_VAR],
         });
     };
+    store(ex, ctx, n, v, *span, a.span)
+}
+
+/// Writes `v` to the variable whose number `n` gives (written at `span`,
+/// in the statement at `whole`).
+pub(super) fn store(
+    ex: &mut Exec,
+    ctx: &mut Ctx,
+    n: &super::expr::Expr,
+    v: Val,
+    span: Span,
+    whole: Span,
+) -> Result<(), Fail> {
     let n = eval(ex, ctx, n)?.unwrap_or(f64::NAN);
     if n.fract() != 0.0 || !n.is_finite() {
-        return Err(Fail { template: &msg::BAD_VARIABLE_NUMBER, span: *span, args: args![value = n] });
+        return Err(Fail { template: &msg::BAD_VARIABLE_NUMBER, span, args: args![value = n] });
     }
     let n = n as i64;
     match n {
@@ -137,15 +170,11 @@ fn assign(ex: &mut Exec, ctx: &mut Ctx, a: &Assign) -> Result<(), Fail> {
         3000 => {
             // The program raises its own alarm: the controller stops here.
             let value = v.unwrap_or(0.0);
-            return Err(Fail { template: &msg::MACRO_ALARM, span: a.span, args: args![value] });
+            return Err(Fail { template: &msg::MACRO_ALARM, span: whole, args: args![value] });
         }
         _ => {
             let title = crate::message::Arg::lit(ctx.rules.title());
-            return Err(Fail {
-                template: &msg::VARIABLE_NOT_WRITABLE,
-                span: *span,
-                args: args![n, controller = title],
-            });
+            return Err(Fail { template: &msg::VARIABLE_NOT_WRITABLE, span, args: args![n, controller = title] });
         }
     }
     Ok(())

@@ -20,6 +20,7 @@
 pub mod eval;
 pub mod expr;
 mod fanuc;
+mod gsk;
 pub mod index;
 mod oword;
 pub mod stmt;
@@ -278,6 +279,7 @@ impl Exec {
             BlockKind::ProgramNumber(_) if macros.flavor == Flavor::Fanuc => self.program_boundary(ctx, block),
             BlockKind::Macro => self.macro_line(ctx, block, macros),
             _ if macros.flavor == Flavor::Fanuc && macros.macro_calls => fanuc::g65(self, ctx, block, macros),
+            _ if macros.h_codes && gsk::is_g65(block) => gsk::plain(self, ctx, block),
             _ => Flow::Run,
         }
     }

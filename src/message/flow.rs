@@ -90,6 +90,15 @@ templates! {
     MACRO_ALARM = MacroAlarm:
         "#3000 = {value}: the program raises its own alarm {value} and stops",
         "#3000 = {value}：程序发出自定义报警 {value} 并停止";
+    H_ALARM = MacroAlarm:
+        "G65 H99 P{n}: the program raises alarm {value} (500 + P) and stops",
+        "G65 H99 P{n}：程序发出报警 {value}（500 + P）并停止";
+    H_UNKNOWN = MacroSyntax:
+        "G65 H{h}: not an operation of the {controller} (H01–H05, H11–H13, H21–H27, H31–H34, H80–H86, H99)",
+        "G65 H{h}：{controller} 没有此运算（H01–H05、H11–H13、H21–H27、H31–H34、H80–H86、H99）";
+    H_NEEDS = MacroSyntax:
+        "G65 H{h} needs {what}",
+        "G65 H{h} 需要 {what}";
     MAIN_REPEATS = MainRepeats:
         "M99 in the main program starts it again forever: previewed {runs} time(s) ({setting})",
         "主程序中的 M99 使程序无限重复：预览执行 {runs} 次（{setting}）";
@@ -116,6 +125,10 @@ phrases! {
     X_OWORD_NUMBER: "an o-word number", "o 字编号";
     X_OWORD_KEYWORD: "an o-word keyword (sub, call, if, while …)", "o 字关键字";
     X_VAR: "#n", "#n";
+    X_H_RESULT: "its result variable P#i", "结果变量 P#i";
+    X_H_SEQUENCE: "the sequence number P of its jump", "跳转目标顺序号 P";
+    X_H_OPERANDS: "its operands Q and R", "运算数 Q 和 R";
+    X_H_ALARM: "the alarm number P", "报警号 P";
     X_OPEN: "[", "[";
     X_CLOSE: "]", "]";
     X_EQUALS: "=", "=";
