@@ -522,3 +522,25 @@ fn gsk_macro_a_operations() {
     // Fanuc 0i has no macro A: there G65 is a macro call (P names a program).
     assert!(fanuc("G65 H01 P#1 Q1\nM30\n").diagnostics.iter().any(|d| d.code == Code::JumpTarget));
 }
+
+/// `expand` writes what ran: the passes a subprogram cut three times and a
+/// macro loop cut are written out as plain blocks, for the program's own
+/// controller and for LinuxCNC, and those blocks plan the same passes.
+#[test]
+fn expand_writes_the_executed_passes() {
+    let sub = "O1000\n#1=#1+1\nG00 X[47.7-0.6*#1]\nG32 Z13. F2.\nG00 X58.\nZ70.\nM99\n";
+    let program = format!("O0001\nG97 S300 M03\nG00 X58. Z70.\nM98 P1000 L3\nG00 X100. Z100.\nM30\n{sub}");
+    let plan = fanuc(&program);
+    for to in [Dialect::Fanuc0i, Dialect::LinuxCnc] {
+        let out = screwcut::expand::expand(&plan, to).program;
+        assert!(!out.contains("M98") && !out.contains('#') && !out.contains("o1"), "{to:?}:\n{out}");
+        let again = plan_with(&out, to, &[]);
+        no_alarm(&again);
+        let t = &again.threads[0];
+        let xs: Vec<f64> = t.passes.iter().map(|p| p.from.x).collect();
+        assert_eq!(xs.len(), 3, "{to:?}:\n{out}");
+        for (x, want) in xs.iter().zip([47.1, 46.5, 45.9]) {
+            eq(*x, want);
+        }
+    }
+}
