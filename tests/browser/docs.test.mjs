@@ -124,6 +124,9 @@ try {
   check('one wasm download served every embed', wasmRequests.length === 1, JSON.stringify(wasmRequests));
 
   // ---- what the page says each example does ----
+  const loop = seen['macro-loop'];
+  const lx = loop.result.passes.map((p) => p.x);
+  check('the G65 macro loop: eleven passes, X29.4 … X28.05', lx.length === 11 && lx[0] === 29.4 && lx[10] === 28.05 && loop.rows.length === 11, JSON.stringify(lx));
   const o1006 = seen.o1006;
   check('O1006: five passes, the first at X47.1', o1006.rows.length === 5 && o1006.rows[0][2] === '47.1', JSON.stringify(o1006.rows[0]));
   check('the tooth-only O1006 embed has the same program, not listed', seen['o1006-tooth'].program === o1006.program && seen['o1006-tooth'].listing === '', seen['o1006-tooth'].listing);
