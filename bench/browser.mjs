@@ -2,14 +2,17 @@
 // person typing feels, measured by the browser itself:
 // - Event Timing: keystroke to the next paint (`PerformanceEventTiming`, the
 //   interaction's longest entry), p50 and p95, typing and deleting a digit in
-//   the first pass of a 5,000- and a 50,000-line program;
+//   the first pass of a 5,000- and a 50,000-line program, and in a 5,000-line
+//   Fanuc 0i program of subprograms and macro loops (LOOPS_5000, written by
+//   `cargo bench --bench throughput`): in its main program's first thread
+//   and in the body of its common threading macro O9010;
 // - the app's marks: keystroke to the committed drawing that includes it
 //   (`performance.mark('screwcut:frame', {detail: {input}})`);
-// - long tasks on the page's thread while typing;
+// - long tasks on the page's thread while typing; the worker's re-plan time;
 // - the 3-line L99 program (334,125 motions) opened from a link: the page
 //   ready, a click answered, a keystroke's Event Timing;
 // - the wasm planner's rate on the 20 MB program, on the page.
-// Usage: node browser.mjs SITE_DIR PKG_DIR PROGRAM_20MB
+// Usage: node browser.mjs SITE_DIR PKG_DIR PROGRAM_20MB LOOPS_5000
 // Prints figures, and `FIG name value` lines for `cargo xtask bench`;
 // asserts nothing.
 import { chromium } from 'playwright-core';
@@ -19,7 +22,7 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 
-const [site, pkg, big] = process.argv.slice(2);
+const [site, pkg, big, loops] = process.argv.slice(2);
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.css': 'text/css', '.json': 'application/json', '.svg': 'image/svg+xml', '.nc': 'text/plain' };
 /** The site, the wasm-bindgen glue under /pkg/, the 20 MB program as /bench-20mb.nc. */
 const server = http.createServer((req, res) => {
@@ -85,18 +88,27 @@ const ctx = await chromium.launchPersistentContext(dir, {
 await ctx.addInitScript(observe);
 
 /**
- * Opens the `lines`-line program from a link, types and deletes a digit at
- * the end of the first pass's X line `keys` times, 150 ms apart (a quick
- * typist), and prints what the browser measured.
+ * Opens `text` from a link (and waits for its plan: more than 100 threads,
+ * which both 5,000-line programs have), puts the cursor at the end of its line `line`
+ * (0-based; from the top with ArrowDown, or from the end with ArrowUp when
+ * nearer the end, as a person would), types and deletes a digit there `keys`
+ * times, 150 ms apart (a quick typist), and prints what the browser measured.
  */
-async function typing(lines, keys, tag) {
+async function typing({ text, dialect, line, keys, tag, what }) {
   const page = await ctx.newPage();
-  await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: {}, program: program(lines) }));
+  await page.goto(url + fragment({ dialect, settings: {}, program: text }));
   await page.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
   await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
   await page.locator('.cm-line').first().click();
-  for (let i = 0; i < 8; i++) await page.keyboard.press('ArrowDown');
+  const last = text.split('\n').length - 1;
+  if (line <= last / 2) for (let i = 0; i < line; i++) await page.keyboard.press('ArrowDown');
+  else {
+    await page.keyboard.press('Control+End');
+    for (let i = last; i > line; i--) await page.keyboard.press('ArrowUp');
+  }
   await page.keyboard.press('End');
+  const at = await page.evaluate(() => document.querySelector('.cm-activeLineGutter')?.textContent);
+  if (Number(at) !== line + 1) throw new Error(`${tag}: the cursor is on line ${at}, not ${line + 1}`);
   await page.waitForTimeout(1000);
   const t0 = await page.evaluate(() => performance.now());
   for (let i = 0; i < keys; i++) {
@@ -110,7 +122,7 @@ async function typing(lines, keys, tag) {
       events: self.__events.filter((e) => e.start > t0),
       long: self.__long.filter((e) => e.start > t0),
       marks: marks.map((e) => e.startTime - e.detail.input),
-      lines: window.__screwcut.updates.at(-1)?.lines,
+      plans: window.__screwcut.updates.filter((u) => u.sent > t0).map((u) => ({ plan: u.plan, views: u.views })),
     };
   }, t0);
   await page.close();
@@ -126,10 +138,12 @@ async function typing(lines, keys, tag) {
   const longSum = m.long.reduce((s, e) => s + e.d, 0);
   const longMax = Math.max(0, ...m.long.map((e) => e.d));
   console.log(
-    `  ${lines} lines, ${keys} keystrokes typing and deleting a digit in the first pass: keystroke to next paint (Event Timing) ` +
+    `  ${what}, ${keys} keystrokes typing and deleting a digit: keystroke to next paint (Event Timing) ` +
       `p50 ${show(p50)} ms, p95 ${show(p95)} ms, max ${show(Math.max(...durations))} ms (${byId.size} of ${keys} keystrokes took 16 ms or more); ` +
       `keystroke to the committed drawing (marks, ${m.marks.length}) p50 ${quantile(m.marks, 0.5).toFixed(1)} ms, p95 ${quantile(m.marks, 0.95).toFixed(1)} ms; ` +
-      `page long tasks: ${m.long.length} (${longSum.toFixed(0)} ms in all, longest ${longMax.toFixed(0)} ms)`,
+      `page long tasks: ${m.long.length} (${longSum.toFixed(0)} ms in all, longest ${longMax.toFixed(0)} ms); ` +
+      `in the worker (${m.plans.length} plans) re-plan p50 ${quantile(m.plans.map((u) => u.plan), 0.5).toFixed(1)} ms, ` +
+      `drawing p50 ${quantile(m.plans.map((u) => u.views), 0.5).toFixed(1)} ms`,
   );
   fig(`${tag}_event_p50`, p50);
   fig(`${tag}_event_p95`, p95);
@@ -202,8 +216,16 @@ async function wasmRate() {
 }
 
 try {
-  await typing(5000, 20, 'k5');
-  await typing(50000, 20, 'k50');
+  const gsk = { dialect: 'gsk980tdc', line: 8, keys: 20 };
+  await typing({ ...gsk, text: program(5000), tag: 'k5', what: '5000 lines, in the first pass' });
+  // The same 20 keystrokes in the Fanuc program with subprograms and loops: at the end of the
+  // main program's first `#1=` (the first thread's diameter) and of the macro O9010's `#10=#2*1.227`.
+  const text = fs.readFileSync(loops, 'utf8');
+  const lines = text.split('\n');
+  const fanuc = { dialect: 'fanuc0i', keys: 20, text };
+  await typing({ ...fanuc, line: lines.findIndex((l) => l.startsWith('#1=')), tag: 'k5loop', what: '5000 lines with loops and subprograms, in the main program' });
+  await typing({ ...fanuc, line: lines.indexOf('#10=#2*1.227'), tag: 'k5loopsub', what: '5000 lines with loops and subprograms, in the macro O9010' });
+  await typing({ ...gsk, text: program(50000), tag: 'k50', what: '50000 lines, in the first pass' });
   await l99();
   await wasmRate();
 } finally {

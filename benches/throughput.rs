@@ -1,12 +1,16 @@
 //! Native throughput of lex + interpret + plan on generated programs, and
-//! peak memory. Run with `cargo bench --bench throughput`; figures are rates
-//! and ratios measured in one run, never asserted.
+//! peak memory; then the 5,000-line Fanuc program with subprograms and
+//! macro loops: a full plan, and the incremental planner's re-plan after a
+//! one-character edit in a subprogram and in the main program. Run with
+//! `cargo bench --bench throughput`; figures are rates, times and ratios
+//! measured in one run, never asserted.
 
 mod programs;
 
 use std::time::Instant;
 
-use screwcut::{Dialect, Settings};
+use screwcut::planner::Planner;
+use screwcut::{Dialect, Settings, Severity};
 
 fn peak_rss_kib() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
@@ -49,6 +53,11 @@ fn main() {
     }
     let out_dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/bench");
     let _ = std::fs::create_dir_all(&out_dir);
+    // The loop program alone: `--loops`.
+    if args.iter().any(|a| a == "--loops") {
+        loops(&out_dir);
+        return;
+    }
     let settings = Settings::new(Dialect::Gsk980tdc);
     println!("screwcut native throughput (lex + interpret + plan), release build");
     for (name, mb) in [("mixed", 1usize), ("mixed", 20), ("thread-dense", 1), ("g01", 10)] {
@@ -94,5 +103,70 @@ fn main() {
                 (peak as f64 * 1024.0) / text.len() as f64
             );
         }
+    }
+    loops(&out_dir);
+}
+
+/// The best of `runs` timings of `f`, in milliseconds, and its last result.
+fn best_ms<R>(runs: usize, mut f: impl FnMut() -> (f64, R)) -> (f64, R) {
+    let mut best = f64::INFINITY;
+    let mut last = None;
+    for _ in 0..runs {
+        let (ms, r) = f();
+        best = best.min(ms);
+        last = Some(r);
+    }
+    (best, last.expect("at least one run"))
+}
+
+/// The 5,000-line Fanuc 0i program with subprograms, `M98 P… L3`, `G65`
+/// and `WHILE` loops (written to `loops-5000.nc` for the browser bench):
+/// a full plan, and re-plans by the incremental planner (the app's) after
+/// typing one digit at the end of a line in the common macro O9010, in the
+/// first job's thread and in the last job's thread of the main program.
+fn loops(out_dir: &std::path::Path) {
+    let text = programs::fanuc_loops(5000);
+    let _ = std::fs::write(out_dir.join("loops-5000.nc"), &text);
+    let settings = Settings::new(Dialect::Fanuc0i);
+    let (full, plan) = best_ms(20, || {
+        let t = Instant::now();
+        let plan = screwcut::plan(&text, &settings);
+        (t.elapsed().as_secs_f64() * 1e3, plan)
+    });
+    let alarms = plan.diagnostics.iter().filter(|d| d.severity == Severity::Error).count();
+    println!(
+        "  fanuc loops 5,000 lines ({} bytes, {} lines; subprograms, M98 L3, G65, WHILE): full plan best of 20 {full:.2} ms; \
+         {} moves, {} threads, {} diagnostics, {alarms} alarms",
+        text.len(),
+        text.lines().count(),
+        plan.moves.len(),
+        plan.threads.len(),
+        plan.diagnostics.len(),
+    );
+    println!("FIG loops5k_full_ms {full:.3}");
+    let line_end = |at: usize| at + text[at..].find('\n').unwrap_or(text.len() - at);
+    let edits = [
+        ("sub", "in the macro O9010 (#10=#2*1.227)", line_end(text.find("#10=#2*1.227").expect("the macro"))),
+        ("main", "in the main program, first job's #1", line_end(text.find("\n#1=").expect("a #1 line") + 1)),
+        ("main_end", "in the main program, last job's #1", line_end(text.rfind("\n#1=").expect("a #1 line") + 1)),
+    ];
+    for (key, what, at) in edits {
+        let edited = format!("{}1{}", &text[..at], &text[at..]);
+        let (ms, (resumed, stopped, inc)) = best_ms(10, || {
+            let mut p = Planner::new(settings.clone());
+            p.plan(&text);
+            let t = Instant::now();
+            p.plan(&edited);
+            let ms = t.elapsed().as_secs_f64() * 1e3;
+            (ms, (p.resumed_at(), p.stopped_at(), p.last().cloned()))
+        });
+        let line = text[..at].matches('\n').count() + 1;
+        let stop = stopped.map_or("read to the end".to_string(), |l| format!("stopped at line {l}"));
+        println!(
+            "  one digit typed {what}, line {line}: incremental re-plan best of 10 {ms:.2} ms \
+             (resumed at line {resumed}, {stop}; the same plan as a full plan: {})",
+            inc.as_ref() == Some(&screwcut::plan(&edited, &settings))
+        );
+        println!("FIG loops5k_edit_{key}_ms {ms:.3}");
     }
 }

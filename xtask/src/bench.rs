@@ -1,9 +1,12 @@
 //! `cargo xtask bench`: the performance figures, measured in one run and
 //! printed (never asserted): native throughput and memory, the wasm size,
 //! gcode-toolpath side by side, and in headless Chromium what a person
-//! typing feels (Event Timing, the app's frame marks, long tasks), the L99
-//! program and the wasm planner's rate. Ends with a table of each figure
-//! beside the one measured when the work to reach it began, and its target.
+//! typing feels (Event Timing, the app's frame marks, long tasks) in a plain
+//! 5,000-line program, in a 5,000-line Fanuc program of subprograms and macro
+//! loops and in a 50,000-line one, the L99 program and the wasm planner's
+//! rate. Ends with a table of each figure beside the one measured when the
+//! work to reach it began (for the loop program: the plain 5,000-line figure
+//! of the same run), and its target.
 
 use std::collections::BTreeMap;
 use std::process::{Command, Stdio};
@@ -96,6 +99,88 @@ const FIGURES: &[Figure] = &[
         unit: "MB/s",
     },
     Figure { key: "wasm_gz_kib", what: "wasm, gzip -9", before: "—", target: "≤ 195 (200 KB)", unit: "KiB" },
+    Figure {
+        key: "native_loops5k_full_ms",
+        what: "native planner, 5,000-line Fanuc program with loops: full plan",
+        before: "—",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
+        key: "native_loops5k_edit_sub_ms",
+        what: "the same, re-plan after a digit typed in a subprogram",
+        before: "—",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
+        key: "native_loops5k_edit_main_ms",
+        what: "the same, re-plan after a digit typed in the main program",
+        before: "—",
+        target: "—",
+        unit: "ms",
+    },
+];
+
+/// A figure of the Fanuc program with subprograms and macro loops (issue
+/// #19), whose "before" is the plain 5,000-line program's figure `plain`
+/// measured in the same run; its target is to be no worse.
+struct Versus {
+    key: &'static str,
+    plain: &'static str,
+    what: &'static str,
+    unit: &'static str,
+}
+
+const VERSUS: &[Versus] = &[
+    Versus {
+        key: "k5loop_event_p50",
+        plain: "k5_event_p50",
+        what: "loop program, main program: keystroke to next paint, p50 (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loop_event_p95",
+        plain: "k5_event_p95",
+        what: "loop program, main program: keystroke to next paint, p95 (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loop_mark_p50",
+        plain: "k5_mark_p50",
+        what: "loop program, main program: keystroke to committed drawing, p50 (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loop_long_max",
+        plain: "k5_long_max",
+        what: "loop program, main program: longest page task while typing (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loopsub_event_p50",
+        plain: "k5_event_p50",
+        what: "loop program, subprogram: keystroke to next paint, p50 (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loopsub_event_p95",
+        plain: "k5_event_p95",
+        what: "loop program, subprogram: keystroke to next paint, p95 (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loopsub_mark_p50",
+        plain: "k5_mark_p50",
+        what: "loop program, subprogram: keystroke to committed drawing, p50 (before: plain, this run)",
+        unit: "ms",
+    },
+    Versus {
+        key: "k5loopsub_long_max",
+        plain: "k5_long_max",
+        what: "loop program, subprogram: longest page task while typing (before: plain, this run)",
+        unit: "ms",
+    },
 ];
 
 /// Runs `program args` in `dir`, printing its output but for `FIG name value`
@@ -155,7 +240,8 @@ pub fn bench(args: &[String]) -> Result {
     let mut figs: BTreeMap<String, f64> = BTreeMap::new();
     eprintln!("\n== native throughput and memory");
     let native = figures_of("cargo", &["bench", "--bench", "throughput"], &root, &[])?;
-    let rates: Vec<String> = native.iter().map(|(k, v)| format!("{k}={v}")).collect();
+    let rates: Vec<String> =
+        native.iter().filter(|(k, _)| k.ends_with(".nc")).map(|(k, v)| format!("{k}={v}")).collect();
     for (k, v) in &native {
         figs.insert(format!("native_{}", k.trim_end_matches(".nc").replace('-', "_")), *v);
     }
@@ -190,8 +276,12 @@ pub fn bench(args: &[String]) -> Result {
     install::ensure_chromium()?;
     let chromium = install::output("chromium", &["--version"]).unwrap_or_default();
     println!("headless Chromium ({}):", chromium.trim());
-    let browser =
-        figures_of("node", &["browser.mjs", &site.display().to_string(), &pkg, &p("mixed-20mb.nc")], &bench, &[])?;
+    let browser = figures_of(
+        "node",
+        &["browser.mjs", &site.display().to_string(), &pkg, &p("mixed-20mb.nc"), &p("loops-5000.nc")],
+        &bench,
+        &[],
+    )?;
     figs.extend(browser);
     summary(&figs, chromium.trim());
     Ok(())
@@ -203,19 +293,27 @@ fn summary(figs: &BTreeMap<String, f64>, chromium: &str) {
     t.load_style(UTF8_FULL_CONDENSED);
     t.set_header(["figure", "before (2026-11)", "now", "target", "unit"]);
     for f in FIGURES {
-        let now = figs.get(f.key).map_or("not measured".to_string(), |v| {
-            if v.is_nan() {
-                "n/a".into()
-            } else if f.unit == "ms" && *v < 16.0 && f.key.contains("event") {
-                "< 16".into()
-            } else {
-                format!("{v:.1}")
-            }
-        });
-        t.add_row([f.what, f.before, &now, f.target, f.unit]);
+        t.add_row([f.what, f.before, &shown(figs, f.key, f.unit), f.target, f.unit]);
+    }
+    for f in VERSUS {
+        let before = shown(figs, f.plain, f.unit);
+        t.add_row([f.what, &before, &shown(figs, f.key, f.unit), "≤ plain 5,000 lines", f.unit]);
     }
     println!("\n{}  ({chromium})\n{t}", machine());
     println!(
         "(Event Timing reports only events of 16 ms and more: \"< 16\" is a keystroke painted within one 60 Hz frame.)"
     );
+}
+
+/// Figure `key` as the table shows it.
+fn shown(figs: &BTreeMap<String, f64>, key: &str, unit: &str) -> String {
+    figs.get(key).map_or("not measured".to_string(), |v| {
+        if v.is_nan() {
+            "n/a".into()
+        } else if unit == "ms" && *v < 16.0 && key.contains("event") {
+            "< 16".into()
+        } else {
+            format!("{v:.1}")
+        }
+    })
 }
