@@ -40,10 +40,10 @@ pub struct Mark {
 }
 
 impl Mark {
-    /// The mark as reached in a text `bytes` longer before it, with `moves` more motions and `threads` more threads.
-    pub fn shifted(&self, moves: isize, threads: isize, bytes: isize) -> Mark {
+    /// The mark as reached in a text edited as `s` says, with `moves` more motions and `threads` more threads.
+    pub fn shifted(&self, moves: isize, threads: isize, s: crate::span::Shift) -> Mark {
         Mark {
-            group: self.group.shifted(moves, bytes),
+            group: self.group.shifted(moves, s),
             moves: self.moves.saturating_add_signed(moves),
             threads: self.threads.saturating_add_signed(threads),
         }

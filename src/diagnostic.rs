@@ -154,11 +154,11 @@ impl Diagnostics {
         self.items.split_off(len.min(self.items.len()))
     }
 
-    /// Appends `items` (kept from another reading of the same text, `bytes`
-    /// further along here), keeping this collector's limit.
-    pub fn extend_shifted(&mut self, items: Vec<Item>, bytes: isize) {
+    /// Appends `items` (kept from a reading of the text before an edit that
+    /// moved positions as `s` says), keeping this collector's limit.
+    pub fn extend_shifted(&mut self, items: Vec<Item>, s: crate::span::Shift) {
         for (message, span, via) in items {
-            self.push_item((message, span.shifted(bytes), via));
+            self.push_item((message, s.span(span), via));
         }
     }
 

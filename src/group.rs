@@ -14,7 +14,7 @@ use crate::diagnostic::{Diagnostics, Via};
 use crate::event::{Piece, Seg};
 use crate::num::{EPS, close as near};
 use crate::settings::{P, Settings};
-use crate::span::Span;
+use crate::span::{Shift, Span};
 use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread, Units};
 
 /// A continuous thread cut: consecutive thread blocks without a wait for
@@ -77,10 +77,10 @@ pub struct Grouper {
 }
 
 impl Chain {
-    /// The chain as read from a text `bytes` longer before it, with `moves` more motions before it.
-    pub fn shifted(&self, moves: isize, bytes: isize) -> Chain {
+    /// The chain as read from a text edited as `s` says, with `moves` more motions before it.
+    pub fn shifted(&self, moves: isize, s: Shift) -> Chain {
         let mut c = self.clone();
-        c.span = c.span.shifted(bytes);
+        c.span = s.span(c.span);
         c.first_move = c.first_move.saturating_add_signed(moves);
         c.moves = c.moves.shifted(moves);
         c
@@ -88,13 +88,13 @@ impl Chain {
 }
 
 impl Grouper {
-    /// The state as reached in a text `bytes` longer before this point, with
-    /// `moves` more motions before it (to compare with a reading of an edited text).
-    pub fn shifted(&self, moves: isize, bytes: isize) -> Grouper {
+    /// The state as reached in a text edited as `s` says, with `moves` more
+    /// motions before it (to compare with a reading of an edited text).
+    pub fn shifted(&self, moves: isize, s: Shift) -> Grouper {
         let infeed = self.infeed.map(|i| i.map(|(line, mv)| (line, mv.map(|m| m.saturating_add_signed(moves)))));
         Grouper {
-            chain: self.chain.as_ref().map(|c| c.shifted(moves, bytes)),
-            cuts: self.cuts.iter().map(|c| c.shifted(moves, bytes)).collect(),
+            chain: self.chain.as_ref().map(|c| c.shifted(moves, s)),
+            cuts: self.cuts.iter().map(|c| c.shifted(moves, s)).collect(),
             after: self.after,
             infeed,
             via: self.via.clone(),

@@ -15,13 +15,14 @@ use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
 use crate::dialect::Dialect;
 use crate::event::Event;
 use crate::exec::index::{At, Index};
+use crate::exec::reads::Reads;
 use crate::exec::{Ctx, Exec, Flow};
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
 use crate::motion::Move;
 use crate::num::ser_round_opt;
 use crate::settings::{P, Settings};
-use crate::span::{LineIndex, Span};
+use crate::span::{LineIndex, Shift, Span};
 use crate::state::Modal;
 use crate::thread::Thread;
 
@@ -68,7 +69,7 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
     let mut r = Reading::new(settings, text.len());
     let starts = match lexer_for(text, settings, &mut r.diags) {
         Some(mut lexer) => {
-            r.run(&mut lexer, usize::MAX, |_, _, _| true);
+            r.run(&mut lexer, usize::MAX, |_, _, _, _| true);
             lexer.take_line_starts()
         }
         None => Vec::new(),
@@ -87,6 +88,8 @@ pub(crate) struct Reading {
     /// The labels of the text being read, built on first use.
     index: Option<Index>,
     events: Vec<Event>,
+    /// What the reading depended on since the planner last took it.
+    pub reads: Reads,
 }
 
 /// Where a reading was at a block boundary: the modal state (a clone) and
@@ -120,19 +123,19 @@ impl Snapshot {
         self.diags.1 > 0
     }
 
-    /// The snapshot as reached in a text `bytes` longer before it, with
-    /// `moves`, `threads` and `diags` more motions, threads and diagnostics.
-    pub fn shifted(&self, moves: isize, threads: isize, diags: isize, bytes: isize) -> Snapshot {
+    /// The snapshot as reached in a text edited as `s` says, with `moves`,
+    /// `threads` and `diags` more motions, threads and diagnostics.
+    pub fn shifted(&self, moves: isize, threads: isize, diags: isize, s: Shift) -> Snapshot {
         let mut modal = self.modal.clone();
         // The one byte position the modal state holds (where an end-of-program finding goes).
-        modal.last_span = modal.last_span.shifted(bytes);
+        modal.last_span = s.span(modal.last_span);
         let mut exec = self.exec.clone();
-        exec.shift(bytes);
+        exec.shift(s);
         Snapshot {
             modal,
             exec,
-            plan: self.plan.shifted(moves, threads, bytes),
-            diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|s| s.shifted(bytes))),
+            plan: self.plan.shifted(moves, threads, s),
+            diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|d| s.span(d))),
         }
     }
 
@@ -140,6 +143,18 @@ impl Snapshot {
     /// modal and grouping state, whatever the outputs before it).
     pub fn same_state(&self, other: &Snapshot) -> bool {
         self.modal == other.modal && self.plan.group == other.plan.group && self.exec == other.exec
+    }
+
+    /// Blocks run again so far (counted against `limits.blocks`).
+    pub fn repeated(&self) -> u64 {
+        self.exec.repeated
+    }
+
+    /// The same snapshot with `d` more blocks run again before it (a reading
+    /// whose loops ran a different number of times before it joined this one).
+    pub fn recounted(mut self, d: i64) -> Snapshot {
+        self.exec.repeated = self.exec.repeated.saturating_add_signed(d);
+        self
     }
 
     /// The furthest byte of the text the reading depended on up to here.
@@ -158,6 +173,7 @@ impl Reading {
             exec: Exec::new(settings),
             index: None,
             events: Vec::new(),
+            reads: Reads::default(),
         }
     }
 
@@ -188,28 +204,29 @@ impl Reading {
     }
 
     /// Reads blocks from `lexer` to the end of the program, calling
-    /// `checkpoint(offset, line, reading)` before every `every`-th block
-    /// (the byte offset and 1-based line of the block about to be read),
-    /// then closes what is still open. A checkpoint that answers `false`
+    /// `checkpoint(offset, line, due, reading)` before every block but the
+    /// first (the byte offset and 1-based line of the block about to be
+    /// read; `due` every `every`-th block), then closes what is still open. A checkpoint that answers `false`
     /// stops the reading there, nothing closed (the caller keeps the rest
     /// of an earlier reading); `run` then answers `false`.
     pub fn run(
         &mut self,
         lexer: &mut Lexer,
         every: usize,
-        mut checkpoint: impl FnMut(usize, u32, &Reading) -> bool,
+        mut checkpoint: impl FnMut(usize, u32, bool, &mut Reading) -> bool,
     ) -> bool {
         let mut block = Block::default();
         let mut count = 0usize;
         let mut aborted = false;
         loop {
-            if count > 0 && count % every == 0 && !checkpoint(lexer.offset(), lexer.line() + 1, self) {
+            if count > 0 && !checkpoint(lexer.offset(), lexer.line() + 1, count % every == 0, self) {
                 return false;
             }
             let here = At { offset: lexer.offset(), line: lexer.line() + 1 };
             let more = lexer.next_block(&mut block, &mut self.diags);
             let next = At { offset: lexer.offset(), line: lexer.line() + 1 };
             let (flow, jump) = if more {
+                self.reads.read(here.offset, next.offset);
                 self.flow(lexer.text(), here, next, &mut block)
             } else {
                 self.step_flow(lexer.text(), here, next, |ex, ctx| ex.at_end(ctx))
@@ -264,9 +281,11 @@ impl Reading {
             next,
             jump: None,
             read_to: 0,
+            looked: false,
         };
         let flow = f(&mut self.exec, &mut ctx);
         let (jump, read_to) = (ctx.jump, ctx.read_to);
+        self.reads.looked |= ctx.looked;
         self.exec.high = self.exec.high.max(read_to);
         self.sync_via();
         (flow, jump)

@@ -8,20 +8,27 @@
 //! and reads on from that block.
 //!
 //! It also stops early: when the edit leaves the number of lines as it was,
-//! the first snapshot past the edited bytes whose modal and grouping state
-//! equal the last reading's at the same line shows that reading on would
-//! repeat the last reading; the rest of it is kept, its motions' and
-//! diagnostics' byte spans and the motion indices moved by the edit's
-//! lengths. Depths, advice and shop-floor figures of the threads completed
+//! the first block past the edited bytes where the last reading took a
+//! snapshot, reached in the same modal, grouping and flow state, shows that
+//! reading on would repeat the last reading — provided the last reading
+//! never read the edited lines after that snapshot (a subprogram called
+//! again, a loop run again), nor looked a label up if the edit changed one
+//! (each snapshot keeps what the reading read since the one before:
+//! [`Reads`]). The rest of it is kept, its motions' and diagnostics' byte
+//! spans after the edit moved by the edit's length, the motion indices by
+//! the motions before, and its count of blocks run again by the loops that
+//! ran another number of times before the join. Depths, advice and shop-floor figures of the threads completed
 //! before the resume point are kept (with their diagnostics); the threads
 //! from there on are finished anew (they depend on the outline before each
 //! thread). The result is the plan a full re-plan would give; the tests
 //! check that for random edits.
 
 use crate::diagnostic::{Diagnostics, Item};
+use crate::exec::reads::Reads;
 use crate::motion::Move;
 use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
+use crate::span::Shift;
 use crate::thread::Thread;
 
 /// Blocks between two snapshots.
@@ -34,6 +41,8 @@ struct Checkpoint {
     line: u32,
     /// The reading before it.
     snap: Snapshot,
+    /// What the reading depended on since the checkpoint before.
+    reads: Reads,
 }
 
 /// Plans successive versions of a program, reusing the work before each edit.
@@ -51,8 +60,10 @@ pub struct Planner {
     plan: Option<Plan>,
     resumed_at: u32,
     stopped_at: Option<u32>,
-    /// Whether the last reading ever left the order of the text.
-    jumped: bool,
+    /// What the last reading depended on after its last checkpoint.
+    last_reads: Reads,
+    /// Blocks the last reading ran again in all (against `limits.blocks`).
+    last_repeated: u64,
 }
 
 /// What the last reading had after the resume point, kept in case the new
@@ -70,8 +81,18 @@ struct Tail {
     line_starts: Vec<u32>,
     /// Where the bytes common to both texts' ends begin, in the new text.
     common_from: usize,
-    /// New length minus old length.
-    delta: isize,
+    /// How the edit moved the old positions.
+    shift: Shift,
+    /// The first of `checkpoints` after which the last reading never read
+    /// the edited lines (nor, if the edit changed a label, looked one up):
+    /// the new reading may join it there.
+    joinable_from: usize,
+    /// Where (new offsets) the checkpoints from `joinable_from` on are.
+    places: std::collections::HashSet<usize>,
+    /// What the last reading depended on after its last checkpoint.
+    last_reads: Reads,
+    /// Blocks the last reading ran again in all, and the most allowed.
+    repeated: (u64, u64),
     inch: bool,
 }
 
@@ -89,7 +110,8 @@ impl Planner {
             plan: None,
             resumed_at: 1,
             stopped_at: None,
-            jumped: false,
+            last_reads: Reads::default(),
+            last_repeated: 0,
         }
     }
 
@@ -167,7 +189,7 @@ impl Planner {
             }
             None => {
                 // From the top; the last reading's tail may still be kept.
-                let top = Checkpoint { offset: 0, line: 1, snap: r.snapshot() };
+                let top = Checkpoint { offset: 0, line: 1, snap: r.snapshot(), reads: Reads::default() };
                 if let Some(old) = self.plan.take() {
                     r.asm.moves = old.moves;
                     r.asm.threads = old.threads;
@@ -184,23 +206,32 @@ impl Planner {
         }
         let checkpoints = &mut self.checkpoints;
         let mut meet = None;
-        let read_all = r.run(&mut lexer, CHECKPOINT_EVERY, |offset, line, r| {
-            let snap = r.snapshot();
-            if let Some(t) = tail.as_ref().filter(|t| offset >= t.common_from) {
-                if let Some(k) = t.meets(offset, line, &snap) {
-                    meet = Some(k);
-                    return false;
-                }
+        let read_all = r.run(&mut lexer, CHECKPOINT_EVERY, |offset, line, due, r| {
+            // The last reading may be joined where it had a checkpoint (loops
+            // that ran other numbers of times put the new ones elsewhere).
+            let join = tail.as_ref().filter(|t| offset >= t.common_from && t.places.contains(&offset));
+            if !due && join.is_none() {
+                return true;
             }
-            checkpoints.push(Checkpoint { offset, line, snap });
+            let snap = r.snapshot();
+            if let Some(k) = join.and_then(|t| t.meets(offset, line, &snap)) {
+                meet = Some(k);
+                return false;
+            }
+            if due {
+                let reads = std::mem::take(&mut r.reads);
+                checkpoints.push(Checkpoint { offset, line, snap, reads });
+            }
             true
         });
         self.line_starts.extend(lexer.take_line_starts());
         let inch_now = r.it.m.inch;
-        self.jumped = r.exec.jumped;
         if let (false, Some(k), Some(t)) = (read_all, meet, tail) {
             self.stopped_at = Some(t.checkpoints[k].line);
             self.splice(&mut r, t, k);
+        } else {
+            self.last_reads = std::mem::take(&mut r.reads);
+            self.last_repeated = r.exec.repeated;
         }
         self.text.clear();
         self.text.push_str(text);
@@ -250,11 +281,16 @@ impl Planner {
         let (old_mid, new_mid) = (&old[changed_at..old.len() - common], &text[changed_at..text.len() - common]);
         let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
             && old_mid.matches('\r').count() == new_mid.matches('\r').count();
-        // After a jump or call the same line is read in other states: the tail is not kept.
-        if !lines_kept || self.jumped || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
+        if !lines_kept || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
             return None;
         }
+        let edited = (changed_at, old.len() - common);
+        let linuxcnc = self.settings.dialect() == crate::dialect::Dialect::LinuxCnc;
+        let labels = || labels_changed(old, text, changed_at, common, linuxcnc);
+        let joinable_from = joinable_from(&later, &self.last_reads, edited, labels)?;
         let at = (cp.snap.moves(), cp.snap.threads(), cp.snap.diagnostics());
+        let shift = Shift { at: old.len() - common, by: text.len() as isize - old.len() as isize };
+        let places = later[joinable_from..].iter().map(|c| shift.pos(c.offset)).collect();
         Some(Tail {
             checkpoints: later,
             moves: r.asm.moves.split_off(at.0.min(r.asm.moves.len())),
@@ -263,7 +299,11 @@ impl Planner {
             at,
             line_starts: self.line_starts.clone(),
             common_from: text.len() - common,
-            delta: text.len() as isize - old.len() as isize,
+            shift,
+            joinable_from,
+            places,
+            last_reads: self.last_reads.clone(),
+            repeated: (self.last_repeated, self.settings.int(crate::settings::P::LimitBlocks).max(1) as u64),
             inch,
         })
     }
@@ -277,9 +317,9 @@ impl Planner {
             r.diags.len() as isize - cp.diagnostics() as isize,
         );
         let (skip_m, skip_t, skip_d) = (cp.moves() - t.at.0, cp.threads() - t.at.1, cp.diagnostics() - t.at.2);
-        let bytes = t.delta;
+        let s = t.shift;
         for mut m in t.moves.drain(skip_m.min(t.moves.len())..) {
-            m.span = m.span.shifted(bytes);
+            m.span = s.span(m.span);
             r.asm.moves.push(m);
         }
         for mut th in t.threads.drain(skip_t.min(t.threads.len())..) {
@@ -290,15 +330,26 @@ impl Planner {
             r.asm.threads.push(th);
         }
         let diags = t.diags.split_off(skip_d.min(t.diags.len()));
-        r.diags.extend_shifted(diags, bytes);
+        r.diags.extend_shifted(diags, s);
         let line = t.checkpoints[k].line;
+        // Loops before the joined checkpoint may have run other numbers of times.
+        let recount = r.exec.repeated as i64 - cp.repeated() as i64;
+        self.last_repeated = t.repeated.0.saturating_add_signed(recount);
+        // The reads up to the joined checkpoint are the new reading's; after it, the last reading's.
+        let mut reads = Some(std::mem::take(&mut r.reads));
         for c in t.checkpoints.drain(k..) {
-            let snap = c.snap.shifted(dm, dt, dd, bytes);
-            self.checkpoints.push(Checkpoint { offset: c.offset.saturating_add_signed(bytes), line: c.line, snap });
+            let snap = c.snap.shifted(dm, dt, dd, s).recounted(recount);
+            let reads = reads.take().unwrap_or_else(|| c.reads.shifted(s));
+            self.checkpoints.push(Checkpoint { offset: s.pos(c.offset), line: c.line, snap, reads });
         }
-        self.line_starts.truncate(line as usize - 1);
-        let from = (line as usize - 1).min(t.line_starts.len());
-        self.line_starts.extend(t.line_starts[from..].iter().map(|&s| (s as isize + bytes) as u32));
+        self.last_reads = t.last_reads.shifted(s);
+        // The line starts before the joined line are the new reading's when it
+        // recorded them all (in order); else the rest is scanned when finishing.
+        if self.line_starts.len() + 1 >= line as usize {
+            self.line_starts.truncate(line as usize - 1);
+            let from = (line as usize - 1).min(t.line_starts.len());
+            self.line_starts.extend(t.line_starts[from..].iter().map(|&p| s.pos(p as usize) as u32));
+        }
         self.inch = t.inch;
     }
     fn reset(&mut self, text: &str) {
@@ -318,19 +369,74 @@ impl Tail {
     /// at byte `offset`, line `line` with state `snap`: at the same line, the
     /// same place in the common end of both texts, and the same state.
     fn meets(&self, offset: usize, line: u32, snap: &Snapshot) -> Option<usize> {
-        let k = self.checkpoints.iter().position(|c| c.line == line)?;
-        let c = &self.checkpoints[k];
-        let same_place = c.offset as isize + self.delta == offset as isize;
-        (same_place
-            && !snap.dropped()
-            && snap.same_state(&c.snap.shifted(
-                snap.moves() as isize - c.snap.moves() as isize,
-                snap.threads() as isize - c.snap.threads() as isize,
-                0,
-                self.delta,
-            )))
-        .then_some(k)
+        if snap.dropped() {
+            return None;
+        }
+        let (total, limit) = self.repeated;
+        (self.joinable_from..self.checkpoints.len()).find(|&k| {
+            let c = &self.checkpoints[k];
+            // Blocks run again are counted on from the new reading's count: the
+            // last reading's rest must stay within the limit with it.
+            let recount = snap.repeated() as i64 - c.snap.repeated() as i64;
+            c.line == line
+                && self.shift.pos(c.offset) == offset
+                && total <= limit
+                && total.saturating_add_signed(recount) <= limit
+                && snap.same_state(
+                    &c.snap
+                        .shifted(
+                            snap.moves() as isize - c.snap.moves() as isize,
+                            snap.threads() as isize - c.snap.threads() as isize,
+                            0,
+                            self.shift,
+                        )
+                        .recounted(recount),
+                )
+        })
     }
+}
+
+/// The first of the last reading's checkpoints `later` after which it
+/// never read the `edited` bytes `[from, to)` of the old text, nor looked
+/// a label up if the edit changed one (`labels`, asked only when needed);
+/// `None` when even its last stretch did.
+fn joinable_from(
+    later: &[Checkpoint],
+    last: &Reads,
+    edited: (usize, usize),
+    labels: impl FnOnce() -> bool,
+) -> Option<usize> {
+    let mut labels = Some(labels);
+    let mut changed = None;
+    let mut dirty = |r: &Reads| {
+        r.touches(edited.0, edited.1)
+            || (r.looked && *changed.get_or_insert_with(|| labels.take().is_some_and(|f| f())))
+    };
+    if dirty(last) {
+        return None;
+    }
+    // Reads after checkpoint j are those of the checkpoints after it and the last stretch.
+    let mut from = later.len();
+    for j in (0..later.len()).rev() {
+        from = j;
+        if dirty(&later[j].reads) {
+            break;
+        }
+    }
+    (from < later.len()).then_some(from)
+}
+
+/// Whether an edit changed a label a jump or call looks up: the program,
+/// sequence, loop-end and o-word lines among the edited lines, old and new
+/// (`linuxcnc` reads `o` lines as o-words).
+fn labels_changed(old: &str, new: &str, changed_at: usize, common: usize, linuxcnc: bool) -> bool {
+    let labels = |t: &str| {
+        let end = t.len() - common;
+        let from = t[..changed_at].rfind(['\n', '\r']).map_or(0, |i| i + 1);
+        let to = t[end..].find(['\n', '\r']).map_or(t.len(), |i| end + i);
+        crate::exec::index::Index::build(&t[from..to], linuxcnc).labels()
+    };
+    labels(old) != labels(new)
 }
 
 /// How many bytes `a` and `b` have in common at their ends.

@@ -28,6 +28,34 @@ impl Span {
     }
 }
 
+/// How an edit moves byte positions: every position at or after `at`
+/// (where the edited bytes end, in the old text) moves by `by` bytes; the
+/// positions before the edit stay.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Shift {
+    /// First old position that moves.
+    pub at: usize,
+    /// How far it moves (new length minus old length).
+    pub by: isize,
+}
+
+impl Shift {
+    /// Every position moves by `by`.
+    pub fn all(by: isize) -> Shift {
+        Shift { at: 0, by }
+    }
+
+    /// Where old position `p` is in the new text.
+    pub fn pos(self, p: usize) -> usize {
+        if p >= self.at { p.saturating_add_signed(self.by) } else { p }
+    }
+
+    /// Where old span `s` is in the new text.
+    pub fn span(self, s: Span) -> Span {
+        Span::new(self.pos(s.start as usize), self.pos(s.end as usize))
+    }
+}
+
 /// A 1-based line and column; the column counts Unicode characters.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct LineCol {

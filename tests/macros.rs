@@ -302,6 +302,36 @@ fn incremental_planning_follows_the_flow() {
     }
 }
 
+/// A program that calls its subprograms (written after M30) from all over
+/// the main program: an edit in the main program reads on only until the
+/// reading is back in the last reading's state, and keeps the rest — the
+/// subprograms it calls later were not edited; an edit in a subprogram, or
+/// one that changes a label, reads on to the end. Each gives the full plan.
+#[test]
+fn an_edit_between_calls_keeps_the_rest() {
+    let s = Settings::new(Dialect::Fanuc0i);
+    let mut text = String::from("O0001\nG97 S300 M03\n");
+    for k in 0..120 {
+        text.push_str(&format!("(JOB {k})\nG00 X58. Z70.\n#1=0\nM98 P1000 L3\nG00 X80. Z90.\nG04 X0.5\n"));
+    }
+    text.push_str("M30\nO1000\n#1=#1+1\nG00 X[47.7-0.6*#1]\nG32 Z13. F2.\nG00 X58.\nZ70.\nM99\n");
+    let mut p = Planner::new(s.clone());
+    p.plan(&text);
+    let edits: [(&str, &str, bool); 5] = [
+        ("(JOB 3)", "(JOB 3 OF MANY)", true),
+        ("G04 X0.5\n(JOB 7)", "G04 X0.7\n(JOB 7)", true),
+        ("Z13. F2.", "Z14. F2.", false),
+        ("(JOB 9)", "N5 (JOB 9)", false),
+        ("N5 (JOB 9)", "(JOB 9)", false),
+    ];
+    for (from, to, kept) in edits {
+        text = text.replacen(from, to, 1);
+        let inc = p.plan(&text).clone();
+        assert_eq!(inc, screwcut::plan(&text, &s), "after {from} → {to}");
+        assert_eq!(p.stopped_at().is_some(), kept, "{from} → {to}: stopped at {:?}", p.stopped_at());
+    }
+}
+
 /// MOD takes the remainder of whole numbers; a divisor that rounds to 0 is
 /// a division by zero (Fanuc alarm PS0112, "divided by zero").
 #[test]

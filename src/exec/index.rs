@@ -24,6 +24,10 @@ pub struct Entry {
     pub next: At,
 }
 
+/// What the lookups of a text can find, positions aside: program numbers,
+/// sequence numbers, loop ends, and each o-word label's keywords.
+pub type Labels = (Vec<u32>, Vec<u32>, Vec<u8>, Vec<(Box<str>, Vec<OKw>)>);
+
 /// The labels of a text.
 #[derive(Debug, Default)]
 pub struct Index {
@@ -40,6 +44,20 @@ pub struct Index {
 }
 
 impl Index {
+    /// What a lookup can find, without where: the program numbers, sequence
+    /// numbers and loop ends in order, and each o-word label's keywords.
+    pub fn labels(&self) -> Labels {
+        let mut owords: Vec<(Box<str>, Vec<OKw>)> =
+            self.owords.iter().map(|(k, v)| (k.clone(), v.iter().map(|(kw, _)| *kw).collect())).collect();
+        owords.sort_by(|a, b| a.0.cmp(&b.0));
+        (
+            self.programs.iter().map(|p| p.0).collect(),
+            self.sequences.iter().map(|p| p.0).collect(),
+            self.ends.iter().map(|p| p.0).collect(),
+            owords,
+        )
+    }
+
     /// Scans `text`; `linuxcnc` reads `o` lines as o-words instead of program numbers.
     pub fn build(text: &str, linuxcnc: bool) -> Index {
         let mut ix = Index::default();

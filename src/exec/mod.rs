@@ -23,6 +23,7 @@ mod fanuc;
 mod gsk;
 pub mod index;
 mod oword;
+pub mod reads;
 pub mod stmt;
 pub mod vars;
 
@@ -32,7 +33,7 @@ use crate::controller::Rules;
 use crate::diagnostic::{Diagnostics, Via};
 use crate::message as msg;
 use crate::settings::{P, Settings, T};
-use crate::span::Span;
+use crate::span::{Shift, Span};
 use crate::state::Modal;
 use eval::{Env, Fail, Val};
 use expr::Flavor;
@@ -168,11 +169,14 @@ pub struct Ctx<'a> {
     pub jump: Option<At>,
     /// The furthest byte a lookup depended on (a later edit there could change its answer).
     pub read_to: usize,
+    /// Whether a label was looked up.
+    pub looked: bool,
 }
 
 impl Ctx<'_> {
     /// The labels of the text.
     fn index(&mut self) -> &Index {
+        self.looked = true;
         let linuxcnc = self.rules.macros.as_ref().is_some_and(|m| m.flavor == Flavor::LinuxCnc);
         self.index.get_or_insert_with(|| Index::build(self.text, linuxcnc))
     }
@@ -424,19 +428,23 @@ impl Exec {
         self.via = if self.frames.is_empty() { None } else { Some(self.frames.iter().rev().map(|f| f.site).collect()) };
     }
 
-    /// The state as reached in a text `bytes` longer before every offset it holds.
-    pub fn shift(&mut self, bytes: isize) {
-        // The main program's start is where reading began, before the edit: it stays.
-        let at = |a: &mut At| a.offset = a.offset.saturating_add_signed(bytes);
-        self.high = self.high.saturating_add_signed(bytes);
+    /// The state as reached in a text edited as `s` says (the edit kept the
+    /// number of lines).
+    pub fn shift(&mut self, s: Shift) {
+        let at = |a: &mut At| a.offset = s.pos(a.offset);
+        self.high = s.pos(self.high);
         for f in &mut self.frames {
             at(&mut f.ret);
             at(&mut f.body);
             f.loops.iter_mut().for_each(|l| at(&mut l.head));
         }
         self.loops.iter_mut().for_each(|l| at(&mut l.head));
+        self.repeats.iter_mut().for_each(|l| at(&mut l.head));
+        if let Some(m) = &mut self.main {
+            at(m);
+        }
         if let Some(m) = &mut self.modal_call {
-            m.span = m.span.shifted(bytes);
+            m.span = s.span(m.span);
         }
     }
 }
