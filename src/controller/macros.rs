@@ -39,7 +39,7 @@ impl Depth {
     }
 }
 
-/// A controller's macro and subprogram forms (data in its [`Rules`]).
+/// A controller's macro and subprogram forms (data in its [`Rules`](super::Rules)).
 #[derive(Debug)]
 pub struct Macros {
     /// The macro language.

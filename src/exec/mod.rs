@@ -12,8 +12,8 @@
 //! snapshot of a reading holds the variables and the call stack.
 //!
 //! Each controller's forms are data ([`Macros`] in its rules): Fanuc custom
-//! macro B with `M98`/`M99` and `G65` ([`fanuc`]), LinuxCNC's o-words
-//! ([`oword`]). The work is bounded: blocks run again by loops, jumps and
+//! macro B with `M98`/`M99`, `G65` and `G66` (`fanuc`), GSK's macro A
+//! `G65 Hm` (`gsk`), LinuxCNC's o-words (`oword`). The work is bounded: blocks run again by loops, jumps and
 //! calls count against `limits.blocks`, and calls nest at most as deep as
 //! the controller allows and `limits.call_depth`.
 
