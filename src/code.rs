@@ -168,6 +168,8 @@ codes! {
     E18_05 = "E18-05", Error;
     /// Spindle speed above the controller's advice for the pitch (Renhe n ≤ 2300/t − 60).
     SpindleSpeed = "spindle-speed", Warning;
+    /// A pass on the same surface as others cuts another helix (lead, start angle or axial start).
+    CrossThread = "cross-thread", Warning;
     // ---- LinuxCNC ----
     /// LinuxCNC: G33 or G76 while the spindle is not turning (no M3/M4, or after M5).
     SpindleNotTurning = "spindle-not-turning", Error;

@@ -38,6 +38,7 @@ pub mod gcode;
 pub mod geom;
 pub mod group;
 pub mod hash;
+pub mod helix;
 pub mod interp;
 pub mod lexer;
 pub mod message;

@@ -249,6 +249,15 @@ const CASES: &[Case] = &[
     (Code::E18_03, R, &[], "G00 X40 Z5\nG00 U-10\nG33 Z-40 F1.5\n", 3, 5, "incremental"),
     (Code::E18_04, R, &[], "G00 X40 Z5\nG00 U-10\nG33 W-3 F1\n", 3, 5, "4 mm"),
     (Code::E18_05, R, &[], "G00 X40 Z5\nG33 W-40 F1.5\n", 2, 1, "X feed"),
+    (
+        Code::CrossThread,
+        G,
+        &[],
+        "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13 F2.5\nG00 X58\nZ70\nX45.9\nG32 Z13 F2\nG00 X58\nZ70\nX45.5\nG32 Z13 F2\n",
+        7,
+        1,
+        "a lead of 2.5",
+    ),
     (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
     (Code::SpindleNotTurning, L, &[], "G18\nG0 X10 Z5\nG33 Z-20 K1.5\nM2\n", 3, 1, "Spindle not turning in G33"),
     (

@@ -46,6 +46,12 @@ templates! {
     CHIP_OVER_TOOL = ChipHeavyFirst:
         "pass {n} removes {area} mm², more than the tool's {max} mm² (setting tool.max_chip_area)",
         "第 {n} 刀切除 {area} mm²，超过刀具允许的 {max} mm²（设置 tool.max_chip_area）";
+    CROSS_LEAD = CrossThread:
+        "this pass cuts a lead of {lead} where the other {n} passes on this surface (lines {from}–{to}) cut {other}: it cuts a second helix across the thread",
+        "这一刀的导程是 {lead}，而同一表面上的其他 {n} 刀（第 {from}–{to} 行）导程是 {other}：它切出第二条螺旋线，会把螺纹切乱";
+    CROSS_PHASE = CrossThread:
+        "this pass starts {turn}° off the helix of the other {n} passes on this surface (lines {from}–{to}): its {why} is not a whole number of leads from theirs, so it cuts a second helix across the thread",
+        "这一刀的起点与同一表面上其他 {n} 刀（第 {from}–{to} 行）的螺旋线相差 {turn}°：它的{why}与它们相差的不是导程的整数倍，会切出第二条螺旋线，把螺纹切乱";
     CHIP_NONE = ChipNone:
         "pass {n} removes nothing: it is no deeper than the passes before it (depth {depth}), so it only rubs; drop it or make it deeper",
         "第 {n} 刀没有切除材料：它不比前面各刀深（切深 {depth}），只会摩擦；请删去这一刀或加大切深";
@@ -68,4 +74,6 @@ phrases! {
     ASSUMED_RUN_OUT: "the assumed run-out (the program does not turn the work, so setting shop.assumed_run_out, the textbook's O1006 value, stands in for it)",
         "假定的降速退刀段：程序没有车出工件，因此用设置 shop.assumed_run_out（教材 O1006 的值）代替";
     SLOWER: " or lower the speed to S{fits}", "，或把转速降到 S{fits}";
+    START_Z: "start Z {z} (the others start at Z{at})", "起点 Z{z}（其他各刀起点 Z{at}）";
+    START_ANGLE: "start angle Q {q}° (the others {at}°)", "起始角 Q {q}°（其他各刀 {at}°）";
 }

@@ -1,0 +1,167 @@
+//! Passes that cut another helix on the surface the others thread: a
+//! different lead, or a start (angle or axial position) that is not a whole
+//! number of leads from theirs. On the machine that pass cross-threads the
+//! part.
+//!
+//! A pass's helix is its lead and its phase, the fraction of a turn
+//! `Q/360 + z/lead` (a pass that starts one lead further along, or at the
+//! same place one turn later, cuts the same helix). Threads the grouper
+//! made one after another on the same stretch of the same diameter are one
+//! surface. Where the passes of a surface cut several helices, the few that
+//! differ from the most are warned about; helices cut by equal numbers of
+//! passes are the starts of a multi-start thread and are not.
+
+use crate::args;
+use crate::diagnostic::Diagnostics;
+use crate::message as msg;
+use crate::motion::Move;
+use crate::num::{close, round_out};
+use crate::span::Span;
+use crate::thread::{Axis, Pass, Thread};
+
+/// One pass as a helix: its thread, lead and phase (turns, 0 ≤ φ < 1).
+struct Helix<'a> {
+    pass: &'a Pass,
+    lead: f64,
+    phase: f64,
+    start: f64,
+}
+
+/// Adds a `cross-thread` warning to each pass of `threads` that cuts
+/// another helix than most passes on its surface. `max_infeed` (leads) is
+/// how far apart two passes may start across the axis and still be on the
+/// same surface (setting `group.max_infeed`); `spans` gives each line's span.
+pub fn check(
+    threads: &[Thread],
+    moves: &[Move],
+    max_infeed: f64,
+    spans: &dyn Fn(u32) -> Span,
+    diags: &mut Diagnostics,
+) {
+    let mut i = 0;
+    while i < threads.len() {
+        let mut j = i + 1;
+        while j < threads.len() && same_surface(&threads[j - 1], &threads[j], max_infeed) {
+            j += 1;
+        }
+        surface(&threads[i..j], moves, spans, diags);
+        i = j;
+    }
+}
+
+/// Whether `b` threads the same stretch of the same diameter as `a`.
+fn same_surface(a: &Thread, b: &Thread, max_infeed: f64) -> bool {
+    if a.long_axis != b.long_axis || a.units != b.units || a.passes.is_empty() || b.passes.is_empty() {
+        return false;
+    }
+    let (long, short) = axes(a.long_axis);
+    let range = |t: &Thread| {
+        let p = &t.passes[0];
+        let (x, y) = (long(p.from), long(p.to));
+        (x.min(y), x.max(y))
+    };
+    let ((a0, a1), (b0, b1)) = (range(a), range(b));
+    let overlap = a1.min(b1) - a0.max(b0);
+    let shorter = (a1 - a0).min(b1 - b0);
+    let across = (short(a.passes[0].from) - short(b.passes[0].from)).abs();
+    overlap >= 0.5 * shorter && across <= max_infeed * a.lead.max(b.lead)
+}
+
+/// A coordinate of a point.
+type Coord = fn(crate::motion::Point) -> f64;
+
+/// The coordinate along the thread and across it (radius) for `long`.
+fn axes(long: Axis) -> (Coord, Coord) {
+    match long {
+        Axis::Z => (|p| p.z, |p| p.r()),
+        Axis::X => (|p| p.r(), |p| p.z),
+    }
+}
+
+/// Warns about the passes of one surface that cut a minority helix.
+fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diags: &mut Diagnostics) {
+    let (long, _) = axes(threads[0].long_axis);
+    let helices: Vec<Helix> = threads
+        .iter()
+        .flat_map(|t| {
+            t.passes.iter().map(move |p| {
+                let start = long(p.from);
+                // Moving the other way along the axis turns the phase the other way.
+                let sense = if long(p.to) < start { 1.0 } else { -1.0 };
+                // A cycle's flank infeed moves each pass along the axis on purpose (its shift).
+                let phase = (p.angle / 360.0 + sense * (start - p.shift) / t.lead).rem_euclid(1.0);
+                Helix { pass: p, lead: t.lead, phase, start }
+            })
+        })
+        .collect();
+    if helices.len() < 3 {
+        return;
+    }
+    let same = |a: &Helix, b: &Helix| close(a.lead, b.lead) && phase_gap(a.phase, b.phase) < 1e-3;
+    // Each helix with how many passes cut it.
+    let mut kinds: Vec<(usize, usize)> = Vec::new(); // (first pass index, count)
+    for (k, h) in helices.iter().enumerate() {
+        match kinds.iter_mut().find(|(f, _)| same(&helices[*f], h)) {
+            Some(kind) => kind.1 += 1,
+            None => kinds.push((k, 1)),
+        }
+    }
+    let most = kinds.iter().map(|k| k.1).max().unwrap_or(0);
+    if kinds.len() < 2 || kinds.iter().all(|k| k.1 == most) {
+        return;
+    }
+    let main = kinds.iter().find(|k| k.1 == most).map_or(0, |k| k.0);
+    let m = &helices[main];
+    let lines = helices.iter().filter(|h| same(m, h)).flat_map(|h| h.pass.lines.iter().copied());
+    let (from, to) = lines.fold((u32::MAX, 0), |(a, b), l| (a.min(l), b.max(l)));
+    for &(first, count) in &kinds {
+        // A helix cut by at most half as many passes as the main one is a mistake, not a start.
+        if 2 * count > most {
+            continue;
+        }
+        for h in helices.iter().filter(|h| same(&helices[first], h)) {
+            let span = cut_span(h.pass, moves, spans);
+            if !close(h.lead, m.lead) {
+                diags.push(&msg::CROSS_LEAD, span, args![lead = h.lead, n = most, from, to, other = m.lead]);
+                continue;
+            }
+            let turn = round_out(360.0 * signed_gap(h.phase, m.phase).abs());
+            let a = args![turn, n = most, from, to];
+            let a = if close(h.pass.angle, m.pass.angle) {
+                a.with("why", &msg::START_Z).with("z", h.start).with("at", m.start)
+            } else {
+                a.with("why", &msg::START_ANGLE).with("q", h.pass.angle).with("at", m.pass.angle)
+            };
+            diags.push(&msg::CROSS_PHASE, span, a);
+        }
+    }
+}
+
+/// The span of the block that cuts `p` (its synchronised move), else of its first line.
+fn cut_span(p: &Pass, moves: &[Move], spans: &dyn Fn(u32) -> Span) -> Span {
+    moves.get(p.moves.cut.start).map_or_else(|| spans(p.lines.first().copied().unwrap_or(1)), |m| m.span)
+}
+
+/// How far apart two phases are, either way round (turns, 0 … 0.5).
+fn phase_gap(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(1.0);
+    d.min(1.0 - d)
+}
+
+/// `a − b` in turns, in −0.5 … 0.5.
+fn signed_gap(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(1.0);
+    if d > 0.5 { d - 1.0 } else { d }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn phases_wrap() {
+        assert!((phase_gap(0.95, 0.05) - 0.1).abs() < 1e-12);
+        assert!((signed_gap(0.05, 0.95) - 0.1).abs() < 1e-12);
+        assert!((signed_gap(0.95, 0.05) + 0.1).abs() < 1e-12);
+    }
+}

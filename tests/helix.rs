@@ -1,0 +1,95 @@
+//! A pass that cuts another helix on the surface the other passes thread:
+//! another lead, a start angle Q or a start Z that is not a whole number of
+//! leads from theirs. The controller cuts what it is told, so the part is
+//! cross-threaded; the preview warns on that pass (`cross-thread`). Passes
+//! split evenly between helices are a multi-start thread and are not
+//! warned about.
+//!
+//! The helix a block-by-block pass cuts is fixed by where and at which
+//! spindle angle the synchronised move starts (the one-revolution signal,
+//! threading.md §1: "the spindle encoder's one-rev signal starts every
+//! pass, so each pass follows the same helix"; GSK980TDc manual §3.21.1,
+//! seed 001: Q is the start angle, 0.001°).
+
+mod common;
+use common::*;
+use screwcut::{Code, Dialect, Plan};
+
+const O1006: &str = include_str!("../examples/o1006.nc");
+
+fn gsk(src: &str) -> Plan {
+    plan_with(src, Dialect::Gsk980tdc, &[])
+}
+
+fn cross(plan: &Plan) -> Vec<(u32, String)> {
+    plan.with_code(Code::CrossThread).map(|d| (d.line, d.message.clone())).collect()
+}
+
+/// O1006 with the third pass at F2.5: three threads, and that pass warned
+/// about (line 14, N120), naming both leads.
+#[test]
+fn another_lead_on_the_same_surface() {
+    let plan = gsk(&O1006.replace("N120 G32 Z13.0 F2.0;", "N120 G32 Z13.0 F2.5;"));
+    assert_eq!(plan.threads.len(), 3);
+    let c = cross(&plan);
+    assert_eq!(c.len(), 1, "{c:?}");
+    assert_eq!(c[0].0, 14);
+    assert!(c[0].1.contains("lead of 2.5") && c[0].1.contains("cut 2:"), "{}", c[0].1);
+    // The textbook program as written: no warning.
+    assert!(cross(&gsk(O1006)).is_empty());
+}
+
+/// The third pass starts 0.7 mm nearer (Z69.3): 0.35 of a lead of 2, a
+/// helix 126° off; a start two leads further (Z74) is the same helix.
+#[test]
+fn another_axial_start() {
+    let plan = gsk(&O1006.replace("N100 Z70.0;", "N100 Z69.3;"));
+    let c = cross(&plan);
+    assert_eq!(c.len(), 1, "{c:?}");
+    assert_eq!(c[0].0, 14);
+    assert!(c[0].1.contains("126°") && c[0].1.contains("Z 69.3"), "{}", c[0].1);
+    assert!(cross(&gsk(&O1006.replace("N100 Z70.0;", "N100 Z74.0;"))).is_empty());
+}
+
+/// One pass with a start angle among passes without: a second helix. Two
+/// starts with a pass each per depth (the example program): none.
+#[test]
+fn a_lone_start_angle_but_not_a_two_start_thread() {
+    let lone = O1006.replace("N120 G32 Z13.0 F2.0;", "N120 G32 Z13.0 F2.0 Q90000;");
+    let c = cross(&gsk(&lone));
+    assert_eq!(c.len(), 1, "{c:?}");
+    assert!(c[0].1.contains("90°") && c[0].1.contains("Q 90°"), "{}", c[0].1);
+    let two = gsk(include_str!("../examples/g32-multistart-q.nc"));
+    assert_eq!(two.threads[0].starts, 2);
+    assert!(cross(&two).is_empty());
+}
+
+/// A two-start thread cut by moving the start half a lead (LinuxCNC's G33
+/// has no start angle: lead 3, the second start's passes begin 1.5 mm
+/// further): passes split evenly, no warning; one pass of the second start
+/// alone is a mistake. In Chinese the warning names both leads.
+#[test]
+fn a_two_start_thread_by_axial_offset_and_the_chinese_text() {
+    let program = |xs: &[f64], second: usize| {
+        let mut src = String::from("G18 G21 G90\nM3 S300\nG0 X40 Z5\n");
+        for (k, x) in xs.iter().enumerate() {
+            src += &format!("G0 X{x}\nG33 Z-30 K3\nG0 X42\nZ5\n");
+            if k < second {
+                src += &format!("G0 X{x} Z6.5\nG33 Z-30 K3\nG0 X42\nZ5\n");
+            }
+        }
+        src + "M2\n"
+    };
+    let even = plan_with(&program(&[38.8, 38.2, 37.8], 3), Dialect::LinuxCnc, &[]);
+    no_alarm(&even);
+    assert_eq!(even.threads.iter().map(|t| t.passes.len()).sum::<usize>(), 6);
+    assert!(cross(&even).is_empty(), "{:?}", cross(&even));
+    let lone = plan_with(&program(&[38.8, 38.2, 37.8, 37.6], 1), Dialect::LinuxCnc, &[]);
+    let c = cross(&lone);
+    assert_eq!(c.len(), 1, "{c:?}");
+    assert!(c[0].1.contains("180°"), "{}", c[0].1);
+    let plan = gsk(&O1006.replace("N120 G32 Z13.0 F2.0;", "N120 G32 Z13.0 F2.5;"));
+    let d = plan.with_code(Code::CrossThread).next().unwrap();
+    let zh = d.render(screwcut::message::Lang::Zh);
+    assert!(zh.contains("导程是 2.5") && zh.contains("导程是 2："), "{zh}");
+}
