@@ -158,6 +158,16 @@ pub struct Gauge {
     /// in the middle of its tolerance.
     #[serde(serialize_with = "ser_round_opt")]
     pub delta_x: Option<f64>,
+    /// The tool's nose radius the check used (program units).
+    #[serde(serialize_with = "ser_round")]
+    pub nose_radius: f64,
+    /// Whether that radius was assumed (no `tool.nose_radius` given): a
+    /// full-profile insert, 0.125·P.
+    pub nose_radius_assumed: bool,
+    /// With the tool not known: the nose radii (program units, from 0 to
+    /// 0.25·P) for which the pitch diameter is within its limits, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gauges_with_nose: Option<[f64; 2]>,
     /// NPT: the cut taper on diameter per unit length (1/16 = 0.0625 wanted).
     #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
     pub taper: Option<f64>,

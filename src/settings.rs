@@ -261,8 +261,8 @@ params! {
         "Run-out δ2 assumed when the program does not turn the work: the textbook's O1006 value (δ2 = 2 mm). 0 = do not check δ2 without a turned outline.",
         "程序未车削外圆时假定的降速退刀段 δ2(教材 O1006：2 mm)。0 表示不检查。");
     NoseRadius: d("tool.nose_radius", ALL, Kind::Float, 0.0, (0.0, 10.0), "mm",
-        "Nose radius of the threading tool, for the pitch diameter the program cuts: d2 = X − 2r·(1/sin(a/2) − 1) + P/(2·tan(a/2)). Default 0: a sharp V (the textbook's tool); an ISO full-profile insert for pitch P has about 0.125·P.",
-        "螺纹刀刀尖圆弧半径，用于计算中径。默认 0(尖刀)。");
+        "Nose radius of the threading tool, for the pitch diameter the program cuts: d2 = X − 2r·(1/sin(a/2) − 1) + P/(2·tan(a/2)). 0 (the default): not known — the thread check takes a full-profile insert, r = 0.125·P (ISO 965-1's smallest root radius of an external thread), says so, and gives the nose radii for which the thread would gauge.",
+        "螺纹刀刀尖圆弧半径，用于计算中径。0（默认）：未知——螺纹检验按全牙型刀片 r = 0.125·P（ISO 965-1 外螺纹牙底最小圆弧半径）计算，并说明这一点，同时给出能使螺纹合格的刀尖半径范围。");
     ChipFirstRatio: d("chip.first_pass_ratio", ALL, Kind::Float, 1.5, (0.0, 100.0), "× even share",
         "A first pass whose chip area is more than this many times the share of a constant-area schedule (total area / passes) gets a chip-heavy-first warning. 0 = not checked.",
         "首刀切削面积超过等面积分配的此倍数时警告。0 表示不检查。");

@@ -5,7 +5,8 @@
 //!
 //! The depth: the last pass puts the pitch diameter in the middle of the
 //! class tolerance (the basic pitch diameter without a class) with a 60°
-//! tool of nose radius r (reference §9: d2 = X − 2r + 0.866025·P): the final
+//! tool of nose radius r (reference §9: d2 = X − 2r + 0.866025·P; r not
+//! given: a full-profile insert's 0.125·P, as the thread check takes): the final
 //! diameter is d2 − 0.866025·P + 2r external, D2 + 0.866025·P − 2r internal
 //! (with r = H/6 = 0.144·P an external thread ends at ISO's d3). The crest is
 //! the middle of the major (external) or minor (internal) diameter limits. NPT is cut as a 1:16 taper to its
@@ -53,7 +54,7 @@ pub struct Request {
     pub end_z: Option<f64>,
     /// Thread length, when no end Z is given.
     pub length: Option<f64>,
-    /// Nose radius of the threading tool (mm; 0: sharp, as the shop check's `tool.nose_radius`).
+    /// Nose radius of the threading tool (mm; 0: not known, a full-profile insert's 0.125·P, as the thread check's `tool.nose_radius`).
     pub nose_radius: f64,
     /// Highest spindle speed, rev/min.
     pub max_rpm: f64,
@@ -209,7 +210,8 @@ fn thread(r: &Request, notes: &mut Vec<Remark>) -> Result<Thread, Remark> {
         let (major, minor) = (t.e0 + t.height, t.e0 - t.height);
         if internal { (minor, major, t.taper_on_diameter) } else { (major, minor, t.taper_on_diameter) }
     } else {
-        notes.push(Remark::new(&tools::WZ_LAST_PASS, args![r = r.nose_radius]));
+        let (radius, how) = nose(r, p, internal);
+        notes.push(Remark::new(&tools::WZ_LAST_PASS, args![r = radius, how]));
         let crest = if internal { mid(m.minor, m.basic_minor) } else { mid(m.major, m.basic_major) };
         (crest, last_pass(r, mid(m.pitch, m.basic_pitch), p, internal), 0.0)
     };
@@ -220,8 +222,18 @@ fn thread(r: &Request, notes: &mut Vec<Remark>) -> Result<Thread, Remark> {
 /// The diameter of the last pass that cuts the pitch diameter `d2` with the
 /// request's 60° tool (reference §9: d2 = X − 2r(1/sin 30° − 1) + P/(2·tan 30°)).
 fn last_pass(r: &Request, d2: f64, p: f64, internal: bool) -> f64 {
-    let v = 0.866_025_403_784_438_6 * p - 2.0 * r.nose_radius.max(0.0);
+    let v = 0.866_025_403_784_438_6 * p - 2.0 * nose(r, p, internal).0;
     if internal { d2 + v } else { d2 - v }
+}
+
+/// The nose radius the last pass is placed for: the request's, or, not
+/// given (0), a full-profile insert's 0.125·P — the thread check's rule.
+fn nose(r: &Request, p: f64, internal: bool) -> (f64, &'static crate::message::Phrase) {
+    if r.nose_radius > 0.0 {
+        (r.nose_radius, &tools::WZ_NOSE_GIVEN)
+    } else {
+        (crate::shop::gauge::assumed_nose_radius(p, internal), &tools::WZ_NOSE_ASSUMED)
+    }
 }
 
 /// The pass depths: table 4-3 scaled to `height` where it lists `pitch`,

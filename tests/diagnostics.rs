@@ -169,12 +169,12 @@ const CASES: &[Case] = &[
         1,
         "pitch diameter 46.6321 (46.483 … 46.663, 6g): it gauges",
     ),
-    // A sharp tool: d2 = 45.4 + 1.7321 = 47.1321 > 46.663.
+    // The tool not known, a full-profile insert r = 0.25: d2 = 45.9 − 0.5 + 1.7321 = 47.1321 > 46.663.
     (
         Code::GaugeFail,
         G,
         &[],
-        "(M48x2-6g)\nG00 X58 Z70\nX45.4\nG32 Z13 F2\nG00 X58\nZ70\n",
+        "(M48x2-6g)\nG00 X58 Z70\nX45.9\nG32 Z13 F2\nG00 X58\nZ70\n",
         3,
         1,
         "47.1321 is too large",

@@ -103,19 +103,21 @@ fn every_designation_and_form_plans_cleanly_at_the_standards_depth() {
 }
 
 /// The standard's depth, worked by hand: M10×1.5-6g has d2 8.862…8.994
-/// (middle 8.928) and d 9.732…9.968 (middle 9.85); with a sharp 60° tool the
-/// last pass is at 8.928 − 0.866025·1.5 = 7.628962. M20×1.5-6H: D1
-/// 18.376…18.676, D2 19.026…19.216 → 19.121 + 1.299038 = 20.420038; with a
-/// nose radius of 0.2 both move by 0.4.
+/// (middle 8.928) and d 9.732…9.968 (middle 9.85); the tool not given, a
+/// full-profile insert r = 0.125·1.5 = 0.1875 (the thread check's rule), so
+/// the last pass is at 8.928 − 0.866025·1.5 + 2·0.1875 = 8.003962. M20×1.5-6H:
+/// D1 18.376…18.676, D2 19.026…19.216 → 19.121 + 1.299038 − 2·0.162380 =
+/// 20.095278 (internal insert r = H/8 = 0.108253·1.5); with a nose radius of
+/// 0.2 given, 20.420038 − 0.4 = 20.020038.
 #[test]
 fn depths_by_hand() {
     let g = generate(&request("M10x1.5-6g", Dialect::Gsk980tdc, Form::G32)).unwrap();
     assert!((g.spec.crest - 9.85).abs() < 1e-9, "{}", g.spec.crest);
-    assert!((g.spec.root - 7.628962).abs() < 1e-6, "{}", g.spec.root);
+    assert!((g.spec.root - 8.003962).abs() < 1e-6, "{}", g.spec.root);
     // Table 4-3 for pitch 1.5 (0.8 0.6 0.4 0.16 on the diameter) scaled to the depth.
     let total = 0.8 + 0.6 + 0.4 + 0.16;
     let h = g.spec.height;
-    assert!((h - (9.85 - 7.628962) / 2.0).abs() < 1e-6);
+    assert!((h - (9.85 - 8.003962) / 2.0).abs() < 1e-6);
     let want = [0.8, 1.4, 1.8, 1.96].map(|c| h * c / total);
     for (a, b) in g.spec.depths.iter().zip(want) {
         assert!((a - b).abs() < 1e-9);
@@ -123,8 +125,8 @@ fn depths_by_hand() {
     assert!(g.program.contains("G32 Z-25 F1.5\n"), "{}", g.program);
     let g = generate(&request("M20x1.5-6H", Dialect::Fanuc0i, Form::G76)).unwrap();
     assert!(g.spec.internal);
-    assert!((g.spec.crest - 18.526).abs() < 1e-9 && (g.spec.root - 20.420038).abs() < 1e-6, "{:?}", g.spec);
-    assert!(g.program.contains("G76 X20.42 Z-25. P947 Q"), "{}", g.program);
+    assert!((g.spec.crest - 18.526).abs() < 1e-9 && (g.spec.root - 20.095278).abs() < 1e-6, "{:?}", g.spec);
+    assert!(g.program.contains("G76 X20.095 Z-25. P785 Q"), "{}", g.program);
     let r = Request { nose_radius: 0.2, ..request("M20x1.5-6H", Dialect::Fanuc0i, Form::G76) };
     assert!((generate(&r).unwrap().spec.root - 20.020038).abs() < 1e-6);
 }

@@ -46,9 +46,12 @@ templates! {
     NOTE_ROOT_BELOW_MINOR = GaugeOk:
         "the root X{root} is below the minor diameter's {min} (a root radius of 0.125·P or more): a larger nose radius (setting tool.nose_radius) would keep it",
         "牙底 X{root} 小于小径下限 {min}（该下限对应 0.125·P 以上的牙底圆弧）：用更大的刀尖圆弧半径（设置 tool.nose_radius）可以保证";
-    NOTE_SHARP_TOOL = GaugeFail:
-        "the tool is taken as sharp (tool.nose_radius = 0); a full-profile insert with r = 0.125·P = {r} cuts d2 = {d2}{fits}",
-        "刀尖按尖角计算（tool.nose_radius = 0）；r = 0.125·P = {r} 的全牙型刀片切出的 d2 = {d2}{fits}";
+    NOTE_TOOL_ASSUMED = GaugeOk:
+        "the tool is not known (setting tool.nose_radius): taken as a full-profile insert, nose radius r = {factor}·P = {r} (ISO 965-1's smallest root radius of an external thread); {range}",
+        "刀具未知（设置 tool.nose_radius）：按全牙型刀片计算，刀尖圆弧半径 r = {factor}·P = {r}（ISO 965-1 外螺纹牙底最小圆弧半径）；{range}";
+    NOTE_TOOL_ASSUMED_INTERNAL = GaugeOk:
+        "the tool is not known (setting tool.nose_radius): taken as a full-profile insert, nose radius r = {factor}·P = {r} (the largest within ISO 68-1's basic profile, whose root flat is H/8 inside the sharp V); {range}",
+        "刀具未知（设置 tool.nose_radius）：按全牙型刀片计算，刀尖圆弧半径 r = {factor}·P = {r}（ISO 68-1 基本牙型内允许的最大值，牙底平台距尖角 H/8）；{range}";
     NOTE_CREST_NOT_TURNED = GaugeOk:
         "the program does not turn the {what}: not checked",
         "程序没有车出{what}：不检验";
@@ -74,7 +77,8 @@ phrases! {
     FIX: "; ΔX {dx} (final pass X{x}) centres it", "；精车刀改为 X{x}（ΔX {dx}）可使中径位于公差带中间";
     TOO_LARGE: " is too large", " 偏大";
     TOO_SMALL: " is too small", " 偏小";
-    FITS: ", which gauges: set tool.nose_radius to the insert's radius", "，能通过检验：请把 tool.nose_radius 设为刀片的刀尖圆弧半径";
+    NOSE_RANGE: "the pitch diameter is within its limits with a nose radius from {lo} to {hi}: set tool.nose_radius to your insert's", "刀尖圆弧半径在 {lo} 到 {hi} 之间时中径在公差内：请把 tool.nose_radius 设为所用刀片的半径";
+    NOSE_NONE: "no nose radius from 0 to 0.25·P = {hi} puts the pitch diameter within its limits", "刀尖圆弧半径取 0 到 0.25·P = {hi} 之间的任何值，中径都不在公差内";
     BORE: "bore (minor diameter)", "内孔（小径）";
     MAJOR: "major diameter", "大径";
     FITTING_FACE: "face of the fitting", "管件端面";

@@ -243,6 +243,12 @@ impl Args {
         self.0.push((name, arg.into()));
         self
     }
+
+    /// These arguments followed by `more`.
+    pub fn with_all(mut self, more: Args) -> Args {
+        self.0.extend(more.0);
+        self
+    }
 }
 
 impl Serialize for Args {

@@ -6,6 +6,8 @@
 use super::phrases;
 
 phrases! {
+    WZ_NOSE_GIVEN: "", "";
+    WZ_NOSE_ASSUMED: " (not given: a full-profile insert, 0.125·P external, 0.108·P internal, as the thread check takes it)", "（未给出：按全牙型刀片，外螺纹 0.125·P、内螺纹 0.108·P，与螺纹检验相同）";
     // ---- the forms a program is written in ----
     FORM_G32: "G32 block by block (textbook, table 4-3)", "G32 逐段编程（教材表 4-3）";
     FORM_G92: "G92 simple cycle", "G92 简单螺纹循环";
@@ -62,8 +64,8 @@ phrases! {
         "NPT: a 1:16 taper on the diameter, the small end at the start Z, cut to the truncated height 0.8·P",
         "NPT：直径上 1:16 的锥度，小端在起点 Z，切到截顶牙高 0.8·P";
     WZ_LAST_PASS:
-        "the last pass puts the pitch diameter in the middle of its tolerance with a 60° tool of nose radius {r} (d2 = X ∓ 2r ± 0.866025·P)",
-        "最后一刀使中径落在公差带中间，刀具为 60°、刀尖圆弧半径 {r}（d2 = X ∓ 2r ± 0.866025·P）";
+        "the last pass puts the pitch diameter in the middle of its tolerance with a 60° tool of nose radius {r}{how} (d2 = X ∓ 2r ± 0.866025·P)",
+        "最后一刀使中径落在公差带中间，刀具为 60°、刀尖圆弧半径 {r}{how}（d2 = X ∓ 2r ± 0.866025·P）";
     WZ_SPINDLE:
         "spindle S{s}: within the machine's {rpm} rev/min and {feed} mm/min of thread feed, with n·L/500 ≤ 5 mm of lead-in and n·L/1800 ≤ 2 mm of run-out past the end (leave a relief groove)",
         "主轴 S{s}：不超过机床的 {rpm} 转/分和 {feed} mm/min 螺纹进给，且升速进刀段 n·L/500 ≤ 5 mm、终点后的降速退刀段 n·L/1800 ≤ 2 mm（请留退刀槽）";

@@ -41,15 +41,35 @@ struct Tool {
     r: f64,
 }
 
+/// The nose radius (× P) of a full-profile insert for an external thread,
+/// taken when the tool is not known: ISO 965-1's smallest root radius of an
+/// external thread, 0.125·P (the basic profile allows up to H/6 = 0.144·P).
+pub const FULL_PROFILE_RADIUS: f64 = 0.125;
+
+/// The same for an internal thread, whose root radius ISO 965-1 leaves
+/// open: the largest nose that stays within ISO 68-1's basic profile, whose
+/// root flat lies H/8 inside the sharp V — r·(1/sin 30° − 1) = H/8, so
+/// r = H/8 = √3/16·P = 0.108·P.
+pub const FULL_PROFILE_RADIUS_INTERNAL: f64 = 0.108_253_175_473_054_83;
+
+/// The nose radius (program units) taken for pitch `p` when the tool is not known.
+pub fn assumed_nose_radius(p: f64, internal: bool) -> f64 {
+    p * if internal { FULL_PROFILE_RADIUS_INTERNAL } else { FULL_PROFILE_RADIUS }
+}
+
 impl Tool {
-    /// The thread's tool; `None` unless its angle is between 0° and 180°.
-    fn of(t: &Thread, ctx: &Context) -> Option<Tool> {
+    /// The thread's tool for pitch `pitch`, and whether its nose radius was
+    /// assumed (`tool.nose_radius` = 0: not known); `None` unless its angle
+    /// is between 0° and 180°.
+    fn of(t: &Thread, ctx: &Context, pitch: f64) -> Option<(Tool, bool)> {
         let a = t.tool_angle;
         if !(a > 0.0 && a < 180.0) {
             return None;
         }
         let h = a.to_radians() / 2.0;
-        Some(Tool { tan: h.tan(), sin: h.sin(), r: ctx.settings.get(P::NoseRadius) / ctx.mm() })
+        let given = ctx.settings.get(P::NoseRadius) / ctx.mm();
+        let (r, assumed) = if given > 0.0 { (given, false) } else { (assumed_nose_radius(pitch, t.internal), true) };
+        Some((Tool { tan: h.tan(), sin: h.sin(), r }, assumed))
     }
 
     /// How far the virtual sharp tip lies beyond the nose: r·(1/sin(a/2) − 1).
@@ -158,7 +178,7 @@ pub fn cut_pitch_diameter(t: &Thread, pitch: f64, ctx: &Context) -> Option<f64> 
     if t.long_axis != Axis::Z || t.passes.is_empty() {
         return None;
     }
-    let tool = Tool::of(t, ctx)?;
+    let (tool, _) = Tool::of(t, ctx, pitch)?;
     envelope(t, starts(t).first()?, tool, pitch, middle_z(t), 0.0).map(|c| c.d2).filter(|d| d.is_finite())
 }
 
@@ -213,7 +233,8 @@ pub fn check(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnost
             return None;
         }
     };
-    let Some(tool) = Tool::of(t, ctx) else {
+    let pitch = d.pitch_mm / ctx.mm();
+    let Some((tool, assumed)) = Tool::of(t, ctx, pitch) else {
         diags.push_with(&msg::GAUGE_UNKNOWN_ANGLE, span, || args![designation = d.text.trim(), angle = t.tool_angle]);
         return None;
     };
@@ -239,12 +260,14 @@ pub fn check(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnost
         minor_diameter_max: dm.minor.max,
         ok: true,
         delta_x: None,
+        nose_radius: tool.r,
+        nose_radius_assumed: assumed,
+        gauges_with_nose: None,
         taper: None,
         gauge_plane_z: None,
         notes: Vec::new(),
     };
     match_designation(t, &d, ctx, &mut g);
-    let pitch = d.pitch_mm / ctx.mm();
     let done = match taper {
         Some(tp) => npt(t, tool, pitch, &tp, ctx, &mut g),
         None => straight(t, tool, pitch, &dm, &mut g),
@@ -331,16 +354,54 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
     if let Some(m) = mid {
         g.delta_x = delta_x(t, tool, pitch, z, &groups[worst], m);
     }
-    if !in_pitch && tool.r == 0.0 {
-        // A sharp V is the formula's base case; threading inserts are rounded.
-        let iso = Tool { r: 0.125 * pitch, ..tool };
-        if let Some(c) = envelope(t, &groups[worst], iso, pitch, z, 0.0) {
-            let fits = dm.pitch.min.is_none_or(|v| c.d2 >= v - eps) && dm.pitch.max.is_none_or(|v| c.d2 <= v + eps);
-            let fits = if fits { &msg::FITS } else { &msg::NOTHING };
-            note(g, &msg::NOTE_SHARP_TOOL, args![r = iso.r, d2 = c.d2, fits]);
-        }
+    if g.nose_radius_assumed {
+        g.gauges_with_nose = nose_range(t, tool, pitch, z, &groups, dm.pitch);
+        let range = match g.gauges_with_nose {
+            Some([lo, hi]) => args![range = &msg::NOSE_RANGE, lo, hi],
+            None => args![range = &msg::NOSE_NONE, hi = 0.25 * pitch],
+        };
+        let (template, factor) =
+            if t.internal { (&msg::NOTE_TOOL_ASSUMED_INTERNAL, "0.108") } else { (&msg::NOTE_TOOL_ASSUMED, "0.125") };
+        note(g, template, args![r = tool.r, factor = Arg::lit(factor)].with_all(range));
     }
     Some(())
+}
+
+/// The nose radii from 0 to 0.25·P for which every start's pitch diameter
+/// is within `lim` (d2 moves steadily with r): sampled, then each end found
+/// by bisection to 0.0001.
+fn nose_range(
+    t: &Thread,
+    tool: Tool,
+    pitch: f64,
+    z: f64,
+    groups: &[Vec<usize>],
+    lim: standard::Limit,
+) -> Option<[f64; 2]> {
+    let fits = |r: f64| {
+        let tool = Tool { r, ..tool };
+        groups.iter().all(|idx| {
+            envelope(t, idx, tool, pitch, z, 0.0)
+                .is_some_and(|c| lim.min.is_none_or(|v| c.d2 >= v - 1e-9) && lim.max.is_none_or(|v| c.d2 <= v + 1e-9))
+        })
+    };
+    let top = 0.25 * pitch;
+    let steps = 50;
+    let at = |k: usize| top * k as f64 / steps as f64;
+    let first = (0..=steps).find(|&k| fits(at(k)))?;
+    let last = (first..=steps).take_while(|&k| fits(at(k))).last().unwrap_or(first);
+    // Narrow each end between a radius that fits and one that does not.
+    let edge = |mut inside: f64, mut outside: f64| {
+        while (inside - outside).abs() > 1e-5 {
+            let mid = (inside + outside) / 2.0;
+            if fits(mid) { inside = mid } else { outside = mid }
+        }
+        inside
+    };
+    let lo = if first == 0 { 0.0 } else { edge(at(first), at(first - 1)) };
+    let hi = if last == steps { top } else { edge(at(last), at(last + 1)) };
+    let round = |v: f64| (v * 1e4).round() / 1e4;
+    Some([round(lo), round(hi)])
 }
 
 /// A turned crest within its limits; a note when the program did not turn it.

@@ -258,6 +258,9 @@ fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
         minor_diameter_max,
         ok,
         delta_x,
+        nose_radius,
+        nose_radius_assumed,
+        gauges_with_nose,
         taper,
         gauge_plane_z,
         notes,
@@ -284,6 +287,10 @@ fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
     ] {
         opt(h, v);
     }
+    f(h, *nose_radius);
+    nose_radius_assumed.hash(h);
+    opt(h, gauges_with_nose.map(|r| r[0]));
+    opt(h, gauges_with_nose.map(|r| r[1]));
     ok.hash(h);
     h.write_usize(notes.len());
     for n in notes {

@@ -35,12 +35,18 @@ impl Out {
         self.text.push('\n');
     }
 
+    /// A length rounded to the controls' least input increment, 0.001 mm
+    /// (IS-B), as the control would read it.
+    fn len(&self, v: f64) -> String {
+        self.w.length((v * 1e3).round() / 1e3)
+    }
+
     fn x(&self, v: f64) -> String {
-        format!("X{}", self.w.length(v))
+        format!("X{}", self.len(v))
     }
 
     fn z(&self, v: f64) -> String {
-        format!("Z{}", self.w.length(v))
+        format!("Z{}", self.len(v))
     }
 
     fn rapid(&self) -> &'static str {
@@ -54,11 +60,11 @@ pub fn program(r: &Request, s: &Spec, notes: &mut Vec<Remark>) -> Result<String,
     let mut o = Out { w, text: String::new() };
     o.comment(&format!("{}: {} for {}, by screwcut generate", s.title, r.form.title(), r.dialect.title()));
     o.comment(&format!(
-        "lead {} pitch {} starts {}; crest X{} last pass X{} at Z{}; depth {} in {} passes",
+        "crest X{}; lead {} pitch {} starts {}; last pass X{} at Z{}; depth {} in {} passes",
+        fmt(s.crest),
         fmt(s.lead),
         fmt(s.pitch),
         s.starts,
-        fmt(s.crest),
         fmt(s.root),
         fmt(s.z0),
         fmt(s.height),
@@ -173,9 +179,9 @@ fn renhe(o: &mut Out, s: &Spec) -> Result<(), Remark> {
             o.line(format!("G00 {}", o.x(xa)));
             let u = x1 - xa;
             let uw = if u.abs() > 1e-9 {
-                format!("U{} W{}", o.w.length(u), o.w.length(s.z1 - za))
+                format!("U{} W{}", o.len(u), o.len(s.z1 - za))
             } else {
-                format!("W{}", o.w.length(s.z1 - za))
+                format!("W{}", o.len(s.z1 - za))
             };
             o.line(thread.replacen("{}", &uw, 1));
             o.line(format!("G00 {}", o.x(s.clear_x)));
@@ -188,7 +194,7 @@ fn renhe(o: &mut Out, s: &Spec) -> Result<(), Remark> {
 /// Taper R(i) of a cycle starting at `za`: start radius minus end radius.
 fn taper_word(o: &Out, s: &Spec, za: f64, z1: f64) -> String {
     let i = (s.x_at(0.0, za) - s.x_at(0.0, z1)) / 2.0;
-    if i.abs() > 1e-9 { format!(" R{}", o.w.length(i)) } else { String::new() }
+    if i.abs() > 1e-9 { format!(" R{}", o.len(i)) } else { String::new() }
 }
 
 /// G92: one block per pass; GSK without run-out (J0) and with L starts, Fanuc with Q per start.
@@ -268,9 +274,9 @@ fn linux_g76(o: &mut Out, s: &Spec, notes: &mut Vec<Remark>) -> Result<(), Remar
             "G76 P{} {} I{} J{} K{} R2 Q29.5 H1",
             o.w.lead(s.lead),
             o.z(s.z1),
-            o.w.length(i),
-            o.w.length(j),
-            o.w.length(2.0 * s.height)
+            o.len(i),
+            o.len(j),
+            o.len(2.0 * s.height)
         ));
         // The cycle ends on the drive line at the end Z: back out along Z.
         o.line(format!("G0 {}", o.z(s.za)));

@@ -33,6 +33,11 @@ export function verdictHtml(th, units, t) {
     const dx = t('check_dx', { dx: (g.delta_x > 0 ? '+' : '−') + num(Math.abs(g.delta_x)) });
     parts.push(`<span class="dx" title="${esc(t('check_dx_help'))}">${esc(dx)}</span>`);
   }
+  if (g.nose_radius_assumed) {
+    const r = g.gauges_with_nose;
+    const help = r ? t('check_nose_range', { lo: num(r[0]), hi: num(r[1]) }) : t('check_nose_none');
+    parts.push(`<span class="nose" title="${esc(help)}">${esc(t('check_nose', { r: num(g.nose_radius) }))}</span>`);
+  }
   return `${head} ${parts.join(' · ')}`;
 }
 
