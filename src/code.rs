@@ -75,6 +75,8 @@ codes! {
     MalformedProgramNumber = "malformed-program-number", Error;
     /// The program is larger than `limits.program_bytes`.
     ProgramTooLarge = "program-too-large", Error;
+    /// The program reads without alarm as another controller's (its name is the argument `dialect`).
+    DialectHint = "dialect-hint", Info;
     // ---- interpreter ----
     /// A G code the dialect does not have.
     UnsupportedGCode = "unsupported-g-code", Error;

@@ -39,6 +39,7 @@ pub mod geom;
 pub mod group;
 pub mod hash;
 pub mod helix;
+pub mod hint;
 pub mod interp;
 pub mod lexer;
 pub mod message;

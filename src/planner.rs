@@ -150,6 +150,12 @@ impl Planner {
         self.plan.as_ref()
     }
 
+    /// The last plan, to add findings about it as a whole (the next plan is
+    /// built from the reading, not from these).
+    pub fn last_mut(&mut self) -> Option<&mut Plan> {
+        self.plan.as_mut()
+    }
+
     /// Plans `text`, reading only from the last checkpoint before the first
     /// change, and only until the reading meets the last one again.
     pub fn plan(&mut self, text: &str) -> &Plan {

@@ -258,6 +258,16 @@ const CASES: &[Case] = &[
         1,
         "a lead of 2.5",
     ),
+    // Pasted LinuxCNC code under Fanuc: its G76 P I J K R Q H E L alarms; LinuxCNC reads it.
+    (
+        Code::DialectHint,
+        F,
+        &[],
+        "G18 G21 G90\nM3 S500\nG0 X30 Z5\nG76 P2 Z-30 I-1 J0.3 K1.23\nM2\n",
+        4,
+        13,
+        "reads as LinuxCNC without an alarm",
+    ),
     (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
     (Code::SpindleNotTurning, L, &[], "G18\nG0 X10 Z5\nG33 Z-20 K1.5\nM2\n", 3, 1, "Spindle not turning in G33"),
     (
@@ -321,10 +331,17 @@ const CASES: &[Case] = &[
     ),
 ];
 
+/// The plan with the note on another dialect, as the command line and the app give it.
+fn hinted(src: &str, dialect: Dialect, sets: &[&str]) -> screwcut::Plan {
+    let mut plan = plan_with(src, dialect, sets);
+    screwcut::hint::add(src, &screwcut::Settings::new(dialect), &mut plan);
+    plan
+}
+
 #[test]
 fn every_code_at_its_line_and_column() {
     for &(code, dialect, sets, src, line, col, text) in CASES {
-        let plan = plan_with(src, dialect, sets);
+        let plan = hinted(src, dialect, sets);
         let d = at(&plan, code, line, col);
         assert!(d.message.contains(text), "{code}: message {:?} lacks {text:?}", d.message);
     }
@@ -336,7 +353,7 @@ fn every_code_at_its_line_and_column() {
 fn every_case_in_both_languages() {
     let mut bad = Vec::new();
     for &(code, dialect, sets, src, line, col, _) in CASES {
-        let plan = plan_with(src, dialect, sets);
+        let plan = hinted(src, dialect, sets);
         let d = at(&plan, code, line, col);
         let zh = check_languages(&d);
         let english = english_words(&zh);

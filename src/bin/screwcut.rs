@@ -335,7 +335,8 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool, lang: Lang) ->
         Ok(v) => v,
         Err(code) => return code,
     };
-    let plan = screwcut::plan(&text, &settings);
+    let mut plan = screwcut::plan(&text, &settings);
+    screwcut::hint::add(&text, &settings, &mut plan);
     emit(&if json { plan.to_json() + "\n" } else { summary::summary(&plan, file, lang) });
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }

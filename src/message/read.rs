@@ -152,6 +152,9 @@ templates! {
     G78_INFEED_MODE = ValueOutOfRange:
         "{word}: infeed mode r = {r}; 0 middle, 1 left, 2 right or 3 alternating",
         "{word}：进刀方式 r = {r}；应为 0 直进、1 左侧、2 右侧或 3 左右交替";
+    DIALECT_HINT = DialectHint:
+        "this program reads as {title} without an alarm ({threads} thread(s)), but {why}: is it written for {title}? Choose {title} as the controller (--dialect {dialect})",
+        "本程序按 {title} 读没有报警（{threads} 个螺纹），而{why}：它是否是为 {title} 编写的？请把系统选为 {title}（命令行“--dialect {dialect}”）";
 }
 
 phrases! {
@@ -200,6 +203,8 @@ phrases! {
     NS_G50_3: "G50.3 workpiece coordinate system preset", "G50.3 工件坐标系预置";
     NS_POLYGON: "G50.2/G51.2 polygon turning", "G50.2/G51.2 多边形车削";
     NS_G66: "G66 macro modal call", "G66 宏程序模态调用";
+    HINT_ALARMS: "as {current} it has {alarms} alarm(s)", "按 {current} 读有 {alarms} 个报警";
+    HINT_NO_THREAD: "as {current} it cuts no thread", "按 {current} 读切不出螺纹";
     NS_MIRROR: "G68/G69 mirror image for double turrets", "G68/G69 双刀架镜像";
 }
 

@@ -74,6 +74,12 @@ pub struct EditorDiagnostic<'a> {
     /// Inside a subprogram or macro: the lines of the calls that led here, innermost first.
     #[serde(skip_serializing_if = "<[u32]>::is_empty")]
     via: &'a [u32],
+    /// A `dialect-hint`: the dialect the program reads better as (for a switch).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    switch_to: Option<&'static str>,
+    /// Its title.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    switch_title: Option<&'static str>,
 }
 
 /// The plan's diagnostics with their ranges in `text`'s UTF-16 offsets, their messages in `lang`.
@@ -94,8 +100,18 @@ pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan, lang: Lang) -> Vec<Edi
             from: u[0],
             to: u[1].max(u[0]),
             via: &d.via,
+            switch_to: hinted(d).map(crate::Dialect::name),
+            switch_title: hinted(d).map(crate::Dialect::title),
         })
         .collect()
+}
+
+/// The dialect a `dialect-hint` names.
+fn hinted(d: &crate::diagnostic::Diagnostic) -> Option<crate::Dialect> {
+    match (d.code, d.args.get("dialect")) {
+        (crate::Code::DialectHint, Some(crate::message::Arg::Text(name))) => crate::Dialect::parse(name),
+        _ => None,
+    }
 }
 
 /// A thread without its passes (the pass table shows one thread at a time).

@@ -90,6 +90,10 @@ impl Session {
             None => State { planner: Planner::new(s), side: SideMemo::new(), threads: ThreadsSent::default() },
         };
         session.planner.plan(text);
+        let settings = session.planner.settings().clone();
+        if let Some(plan) = session.planner.last_mut() {
+            crate::hint::add(text, &settings, plan);
+        }
         let State { planner, side, threads } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {

@@ -106,8 +106,11 @@ export class Engine {
    * drawn. `fresh`: the text is another program's, so an alarm in it shows
    * no greyed drawing of the program before.
    */
-  on_plan({ seq, text, dialect, settings, thread, start, input, fresh }) {
+  on_plan({ seq, text, dialect, settings, thread, start, input, fresh, keep }) {
     if (fresh) this.lastGood = null;
+    // The page says the good drawing on screen was left (shown a while before this edit): it is the one kept.
+    if (keep && this.candidate) this.lastGood = this.candidate;
+    this.candidate = null;
     if (thread !== undefined) this.thread = thread;
     if (start !== undefined) this.start = start;
     const t0 = performance.now();
@@ -139,7 +142,7 @@ export class Engine {
     if (r.alarms > 0 && this.lastGood) {
       this.showStale();
     } else {
-      if (r.good) this.lastGood = { side: r.side, tooth: r.tooth, starts: r.starts };
+      if (r.good) this.candidate = { side: r.side, tooth: r.tooth, starts: r.starts };
       v.side?.setScene(r.side, false);
       v.tooth?.setScene(r.tooth, false);
       v.starts?.setScene(r.starts, false);

@@ -35,6 +35,8 @@ const EN = {
   col_role: 'Role',
   col_lines: 'Lines',
   called_from: 'called from line {lines}',
+  switch_to: 'Read it as {title}',
+  switched: 'Controller: {title}',
   wizard: 'Thread wizard…',
   expand: 'Expand to blocks…',
   wz_title: 'Thread wizard',
@@ -73,6 +75,10 @@ const EN = {
   col_time: 'Time',
   designation: 'Designation',
   designation_help: 'Thread designation for the check when no comment before the thread names one (setting thread.designation)',
+  designation_placeholder: 'e.g. M48x2-6g',
+  export_failed: 'The {view} was not exported: {why}',
+  export_empty: 'The {view} has nothing to export',
+  export_no_thread: 'this program has no thread to draw it for',
   check_none: 'No designation: name one in a comment before the thread, e.g. (M48x2-6g), or here, to check the pitch diameter.',
   check_from_comment: 'read from the comment on line {line}',
   check_from_setting: 'read from the Designation field (setting thread.designation)',
@@ -185,6 +191,8 @@ const ZH = {
   col_role: '类型',
   col_lines: '行',
   called_from: '调用自第 {lines} 行',
+  switch_to: '按 {title} 读',
+  switched: '系统：{title}',
   wizard: '螺纹向导…',
   expand: '展开为逐段程序…',
   wz_title: '螺纹向导',
@@ -223,6 +231,10 @@ const ZH = {
   col_time: '时间',
   designation: '螺纹标记',
   designation_help: '螺纹前没有注释标记时用于检验的螺纹标记(参数 thread.designation)',
+  designation_placeholder: '例如 M48x2-6g',
+  export_failed: '{view}未能导出：{why}',
+  export_empty: '{view}没有可导出的内容',
+  export_no_thread: '本程序没有可绘制的螺纹',
   check_none: '没有螺纹标记：在螺纹前的注释中写出，如 (M48x2-6g)，或填在此处，即可检验中径。',
   check_from_comment: '取自第 {line} 行注释',
   check_from_setting: '取自“螺纹标记”栏(参数 thread.designation)',
@@ -357,6 +369,7 @@ export function setLang(l) {
   document.documentElement.lang = lang === 'zh' ? 'zh-CN' : 'en';
   for (const el of document.querySelectorAll('[data-i18n]')) el.textContent = t(el.dataset.i18n);
   for (const el of document.querySelectorAll('[data-i18n-title]')) el.title = t(el.dataset.i18nTitle);
+  for (const el of document.querySelectorAll('[data-i18n-placeholder]')) el.placeholder = t(el.dataset.i18nPlaceholder);
   document.title = t('title');
 }
 

@@ -124,7 +124,7 @@ export function passLines(c, i) {
 
 /** One diagnostic as a list item (`i` its index in the full list). */
 export function diagnosticRow(d, i, t, hot) {
-  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}${d.via ? `<span class="via">${esc(t('called_from', { lines: d.via.join(' ← ') }))}</span>` : ''}</span></li>`;
+  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}${d.via ? `<span class="via">${esc(t('called_from', { lines: d.via.join(' ← ') }))}</span>` : ''}${d.switch_to ? ` <button type="button" class="switch" data-dialect="${esc(d.switch_to)}" data-title="${esc(d.switch_title)}">${esc(t('switch_to', { title: d.switch_title }))}</button>` : ''}</span></li>`;
 }
 
 /** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, evenArea, time, role, lines, shift, angle}`). */

@@ -7,7 +7,7 @@
 import { createEditor } from './editor.js';
 import { t, label, setLang, getLang } from './i18n.js';
 import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
-import { Library } from './programs.js';
+import { Library, inherited } from './programs.js';
 import { num, esc } from './table.js';
 import { download, toast, shareLink } from './pageutil.js';
 import { startEngine } from './client.js';
@@ -40,7 +40,11 @@ let settingsPanel;
 let dialects = [];
 let editor;
 let result = null; // the lists of the last answer (threads, passes as columns, diagnostics)
-let lastGood = null; // the lists of the last answer without alarm
+let lastGood = null; // the lists of the last answer without alarm that the user left (see replan)
+let candidate = null; // the last answer without alarm, until the next edit says whether it was left
+let candidateAt = 0; // when it was shown
+/** A drawing shown this long before the next edit was one the user left (not a keystroke on the way). */
+const LEFT_MS = 1000;
 let fresh = false; // the next plan is another program's: no last good drawing of this one yet
 let thread = 0;
 let start = 1;
@@ -80,7 +84,12 @@ async function showProgram(s) {
   state.program = s.program;
   $('dialect').value = state.dialect;
   lastGood = null;
+  candidate = null;
   fresh = true;
+  // What was chosen in the last program (a thread, a start, a hovered pass) is not this one's.
+  thread = 0;
+  start = 1;
+  hover = null;
   makeEditor(state.program);
   await buildSettings();
   replan();
@@ -117,11 +126,15 @@ function replan() {
   persist();
   seq += 1;
   inFlight = { seq, text, doc: editor.view.state.doc, t0: performance.now() };
+  // The good plan on screen becomes the one kept for alarms when it was left a while (or is the first).
+  const keep = !!candidate && (lastGood === null || performance.now() - candidateAt >= LEFT_MS);
+  if (keep) lastGood = candidate;
+  candidate = null;
   if (pendingInput !== null) {
     inputs.set(seq, pendingInput);
     pendingInput = null;
   }
-  client.send({ type: 'plan', seq, text, dialect: state.dialect, settings: settingsText(), thread, start, input: inputs.get(seq) ?? null, fresh });
+  client.send({ type: 'plan', seq, text, dialect: state.dialect, settings: settingsText(), thread, start, input: inputs.get(seq) ?? null, fresh, keep });
   fresh = false;
 }
 
@@ -161,7 +174,10 @@ function onResult(m) {
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
-  if (r.good) lastGood = r;
+  if (r.good) {
+    candidate = r;
+    candidateAt = performance.now();
+  }
   renderLists(r);
   const t1 = performance.now();
   if (m.timing) {
@@ -235,6 +251,8 @@ function renderThreads(r, stale) {
     sel.dataset.html = options;
   }
   sel.value = r.thread ?? '';
+  // Greyed, the lists show the kept plan: another thread is chosen once the alarm is gone.
+  sel.disabled = !!stale;
   const th = r.threads[r.thread];
   const pick = $('start-pick');
   pick.hidden = !th || th.starts <= 1;
@@ -390,7 +408,7 @@ function renderExamples() {
 async function openExample(entry) {
   const res = await fetch(`examples/${encodeURIComponent(entry.file)}`);
   const text = await res.text();
-  await library.openNew({ dialect: entry.dialect || state.dialect, settings: state.settings, program: text });
+  await library.openNew({ dialect: entry.dialect || state.dialect, settings: inherited(state.settings), program: text });
 }
 
 async function setDialect(name, plan = true) {
@@ -409,8 +427,14 @@ function bindViewBar(panelId, name) {
       if (act === 'fit') client.send({ type: 'input', name, op: 'fit' });
       if (act === 'stretch') e.target.setAttribute('aria-pressed', String(await client.request('input', { name, op: 'stretch' })));
       if (act === 'svg' || act === 'png') {
-        const data = await client.request('export', { name, format: act, scale: 2 });
-        if (data) download(`screwcut-${name}.${act}`, act === 'svg' ? new Blob([data], { type: 'image/svg+xml' }) : data);
+        try {
+          const data = await client.request('export', { name, format: act, scale: 2 });
+          if (data) download(`screwcut-${name}.${act}`, act === 'svg' ? new Blob([data], { type: 'image/svg+xml' }) : data);
+          else toast(t('export_empty', { view: t(name) }));
+        } catch (err) {
+          const why = /no thread/.test(String(err && err.message)) ? t('export_no_thread') : String((err && err.message) || err);
+          toast(t('export_failed', { view: t(name), why }));
+        }
       }
     });
 }
@@ -516,7 +540,7 @@ function finishSetup() {
   });
   $('settings-form').addEventListener('change', onSettingInput);
   const tool = (m) => client.request('tool', m);
-  const open = ({ text, dialect }) => library.openNew({ dialect, settings: state.settings, program: text });
+  const open = ({ text, dialect }) => library.openNew({ dialect, settings: inherited(state.settings), program: text });
   $('wizard').addEventListener('click', () => openWizard({ request: tool, t, dialect: state.dialect, onOpen: open }).catch((e) => toast(e.message)));
   $('expand').addEventListener('click', () =>
     openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: result ? result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)),
@@ -583,6 +607,12 @@ function finishSetup() {
     if (i >= 0 && result && result.passes) editor.goto(passLines(result.passes, i)[0]);
   });
   $('diagnostics').addEventListener('click', (e) => {
+    const to = e.target.closest('button.switch');
+    if (to) {
+      setDialect(to.dataset.dialect);
+      toast(t('switched', { title: to.dataset.title }));
+      return;
+    }
     const li = e.target.closest('li[data-i]');
     const d = li && result ? result.diagnostics[Number(li.dataset.i)] : null;
     if (d) editor.goto(d.line, d.column);

@@ -87,6 +87,24 @@ export function tr(key, vars) {
 
 const pad = (n) => String(n).padStart(2, '0');
 /** "2025-03-01 14:05" in local time. */
+/** Settings that describe one program, not the machine: a new program does not take them over. */
+const OWN = ['thread.designation', 'program.main', 'program.main_repeats', 'macro.variables'];
+
+/**
+ * The settings a new program starts with: a copy of the open one's
+ * controller and machine settings, without those that describe that
+ * program (its designation, main program, macro variables).
+ */
+export function inherited(settings) {
+  const out = {};
+  for (const [d, s] of Object.entries(settings || {})) {
+    if (!s || typeof s !== 'object') continue;
+    out[d] = {};
+    for (const [k, v] of Object.entries(s)) if (!OWN.includes(k.trim().toLowerCase())) out[d][k] = v;
+  }
+  return out;
+}
+
 export function stamp(ms) {
   const d = new Date(ms);
   return `${d.getFullYear()}-${pad(d.getMonth() + 1)}-${pad(d.getDate())} ${pad(d.getHours())}:${pad(d.getMinutes())}`;
@@ -215,7 +233,7 @@ export class Library {
   async newProgram() {
     const s = this.getState();
     this.saveNow();
-    await this.show(this.create({ dialect: s.dialect, settings: s.settings, program: '' }));
+    await this.show(this.create({ dialect: s.dialect, settings: inherited(s.settings), program: '' }));
   }
 
   /** Deletes the open entry and opens the most recent other one (or a new empty one); an undo brings it back. */
@@ -229,7 +247,7 @@ export class Library {
     this.retryUnkept();
     const next = this.programs.list()[0];
     const s = this.getState();
-    await this.show(next ? this.enter(this.programs.get(next.id)) : this.create({ dialect: s.dialect, settings: s.settings, program: '' }));
+    await this.show(next ? this.enter(this.programs.get(next.id)) : this.create({ dialect: s.dialect, settings: inherited(s.settings), program: '' }));
     if (!gone) return;
     const note = this.notify(tr('deleted', { name: shownName(gone) }), {
       kind: 'info',
