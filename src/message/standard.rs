@@ -30,8 +30,8 @@ templates! {
         "'{s}': fit designations such as 6H/6g are not read; give one class",
         "'{s}'：不识别 6H/6g 这样的配合标记；请只给一个公差带";
     STD_NOT_UNDERSTOOD = BadDesignation:
-        "'{s}': did not understand '{rest}'",
-        "'{s}'：无法识别 '{rest}'";
+        "'{s}': did not understand '{rest}': after the size come a tolerance class (a grade and a position: 6g, 4h6h, 6H), LH, or an engagement group S, N or L",
+        "'{s}'：无法识别 '{rest}'：尺寸之后应为公差带（公差等级加基本偏差：6g、4h6h、6H）、LH 或旋合长度组 S、N、L";
     STD_NO_DIAMETER = BadDesignation:
         "'{s}': expected the nominal diameter after M",
         "'{s}'：M 后应为公称直径";

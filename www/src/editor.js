@@ -1,8 +1,10 @@
-// The code pane: CodeMirror 6 with line numbers, undo/redo, G-code
+// The code pane: CodeMirror 6 with line numbers, undo/redo, find and
+// replace (Ctrl-F, Ctrl-H… as CodeMirror's search keymap has them), G-code
 // highlighting, diagnostics as underlines and gutter markers (message on
-// hover), and highlighted lines for what the pointer is over in a drawing.
+// hover), highlighted lines for what the pointer is over in a drawing, and
+// a hint in an empty program.
 
-import { EditorState, StateEffect, StateField, RangeSetBuilder } from '@codemirror/state';
+import { EditorState, StateEffect, StateField, RangeSetBuilder, Compartment } from '@codemirror/state';
 import {
   EditorView,
   Decoration,
@@ -11,7 +13,9 @@ import {
   highlightActiveLine,
   highlightActiveLineGutter,
   drawSelection,
+  placeholder,
 } from '@codemirror/view';
+import { search, searchKeymap, highlightSelectionMatches } from '@codemirror/search';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
 import { setDiagnostics, lintGutter, lintKeymap } from '@codemirror/lint';
 import { gcode } from './gcode.js';
@@ -42,7 +46,10 @@ function whenIdle(f) {
  * building it costs a walk of the whole document); onCursor(line) when the
  * cursor moves to another line.
  */
-export function createEditor(parent, { doc, onChange, onCursor }) {
+export function createEditor(parent, { doc, onChange, onCursor, words }) {
+  // The editor's own words (search panel, empty-program hint) in the page's language.
+  const language = new Compartment();
+  const wordsOf = (w) => [EditorState.phrases.of((w && w.phrases) || {}), placeholder((w && w.empty) || '')];
   let lastLine = -1;
   let marks = ''; // the lines marked, as a key
   let markedDoc = null;
@@ -60,7 +67,10 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
         gcode(),
         lintGutter(),
         marked,
-        keymap.of([...defaultKeymap, ...historyKeymap, ...lintKeymap]),
+        search({ top: true }),
+        highlightSelectionMatches(),
+        language.of(wordsOf(words)),
+        keymap.of([...defaultKeymap, ...historyKeymap, ...searchKeymap, ...lintKeymap]),
         EditorView.updateListener.of((u) => {
           if (u.docChanged) {
             if (pending) pending.changes = pending.changes ? pending.changes.compose(u.changes) : u.changes;
@@ -156,5 +166,7 @@ export function createEditor(parent, { doc, onChange, onCursor }) {
       view.focus();
     },
     cursorLine: () => view.state.doc.lineAt(view.state.selection.main.head).number,
+    /** Sets the editor's own words (`{phrases, empty}`) in another language. */
+    setWords: (w) => view.dispatch({ effects: language.reconfigure(wordsOf(w)) }),
   };
 }

@@ -5,7 +5,8 @@
 // with an alarm keeps the last good drawing and table, greyed.
 
 import { createEditor } from './editor.js';
-import { t, label, setLang, getLang } from './i18n.js';
+import { t, label, setLang, getLang, EDITOR_PHRASES_ZH } from './i18n.js';
+import { openFile, fileName, fillPrintSheet } from './files.js';
 import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
 import { Library, inherited } from './programs.js';
 import { num, esc } from './table.js';
@@ -95,13 +96,18 @@ async function showProgram(s) {
   replan();
 }
 
+/** The editor's own words in the page's language. */
+function editorWords() {
+  return { phrases: getLang() === 'zh' ? EDITOR_PHRASES_ZH : {}, empty: t('empty_program') };
+}
+
 /**
  * A new editor for each program shown: undo never reaches into the
  * program that was open before.
  */
 function makeEditor(doc) {
   if (editor) editor.view.destroy();
-  editor = createEditor($('editor'), { doc, onChange: replan, onCursor });
+  editor = createEditor($('editor'), { doc, onChange: replan, onCursor, words: editorWords() });
   editor.view.dom.addEventListener('keydown', (e) => (pendingInput = e.timeStamp), true);
   editor.view.dom.addEventListener(
     'beforeinput',
@@ -565,6 +571,18 @@ function finishSetup() {
     $('settings-toggle').setAttribute('aria-pressed', String(!$('settings').hidden));
   });
   $('share').addEventListener('click', () => shareLink(encodeFragment(state), t));
+  $('file-open').addEventListener('click', () => $('file-input').click());
+  $('file-input').addEventListener('change', async (e) => {
+    const file = e.target.files && e.target.files[0];
+    e.target.value = '';
+    await openFile(file, { dialect: state.dialect, t, say: toast, open: ({ dialect, program }) => library.openNew({ dialect, settings: inherited(state.settings), program }) });
+  });
+  $('file-save').addEventListener('click', () => {
+    const text = editor.text();
+    download(fileName(text, state.dialect), new Blob([text], { type: 'text/plain;charset=utf-8' }));
+  });
+  $('print').addEventListener('click', () => window.print());
+  window.addEventListener('beforeprint', () => fillPrintSheet($('print-sheet'), { text: editor.text(), result, thread, t }));
   $('plan-json').addEventListener('click', async () => {
     const json = await client.request('json');
     download('screwcut-plan.json', new Blob([json], { type: 'application/json' }));
@@ -575,6 +593,7 @@ function finishSetup() {
     client.send({ type: 'lang', lang: state.lang });
     $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
     renderExamples();
+    editor.setWords(editorWords());
     lists.forEach((l) => l.relabel());
     await buildSettings();
     persist();

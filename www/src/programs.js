@@ -30,6 +30,7 @@ const EN = {
   programs_title: 'Programs kept in this browser: choose one to reopen it',
   new: 'New',
   new_title: 'Start an empty program (the open one stays in the list)',
+  new_for: 'A new program for {title}: change the controller beside it if it is for another',
   delete: 'Delete',
   delete_title: 'Delete the open program from this browser (you can undo)',
   untitled: 'Untitled {date}',
@@ -55,6 +56,7 @@ const ZH = {
   programs_title: '保存在此浏览器中的程序：选择一个重新打开',
   new: '新建',
   new_title: '新建空程序(当前程序保留在列表中)',
+  new_for: '已为 {title} 新建程序：如果是为其他系统编写，请在旁边改选系统',
   delete: '删除',
   delete_title: '从此浏览器删除当前程序(可撤销)',
   untitled: '未命名 {date}',
@@ -234,6 +236,9 @@ export class Library {
     const s = this.getState();
     this.saveNow();
     await this.show(this.create({ dialect: s.dialect, settings: inherited(s.settings), program: '' }));
+    // Say which controller it is for, and put the choice in reach.
+    this.notify(tr('new_for', { title: titleOf(s.dialect, this.dialects) }), { kind: 'info' });
+    document.getElementById('dialect')?.focus();
   }
 
   /** Deletes the open entry and opens the most recent other one (or a new empty one); an undo brings it back. */
