@@ -380,7 +380,9 @@ pub(crate) fn finish_with(
     };
     let found = advice(&mut threads, &moves, &spans, diags.limit());
     diags.absorb(found);
-    // Across threads: a pass on another helix (recomputed every time, it is cheap).
+    // Across threads: a pass on another helix (recomputed every time, it is cheap),
+    // found after the reading: in no call.
+    diags.set_via(None);
     crate::helix::check(&threads, &moves, settings.get(P::GroupMaxInfeed), &spans, &mut diags);
     let diagnostics = diags.finish(text, &index);
     let time_s = crate::shop::total_time(&threads);

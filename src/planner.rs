@@ -531,4 +531,31 @@ mod tests {
         assert_eq!(p.plan(&longer).clone(), crate::plan(&longer, &s));
         assert_eq!(p.stopped_at(), None);
     }
+
+    /// A LinuxCNC `repeat` open at a checkpoint kept from the last reading
+    /// (the edit before it kept the lines) goes back to its body where the
+    /// edit moved it.
+    #[test]
+    fn a_repeat_open_in_a_kept_checkpoint_moves_with_the_edit() {
+        let s = Settings::new(Dialect::LinuxCnc);
+        let mut lines = vec!["(top)".to_string(), "G18 G21 G90 G7".into()];
+        lines.extend((0..300).map(|k| format!("G0 X5{} Z70", k % 8)));
+        lines.push("o1 repeat [2]".into());
+        lines.extend((0..300).map(|k| format!("G1 X4{} Z60 F100", k % 8)));
+        lines.extend(["M2", "o1 endrepeat", "G0 X53", "M2"].map(String::from));
+        let mut p = Planner::new(s.clone());
+        p.plan(&lines.join("\n"));
+        // A longer comment: the same lines, the rest of the text moved.
+        lines[0] = "(the top of the program)".into();
+        p.plan(&lines.join("\n"));
+        assert_eq!(p.stopped_at(), Some(257));
+        // The first M2 becomes a move: the repeat runs its body again, from the checkpoint inside it.
+        let m2 = lines.iter().position(|l| l == "M2").unwrap();
+        lines[m2] = "G0 X52".into();
+        let text = lines.join("\n");
+        let (inc, full) = (p.plan(&text).clone(), crate::plan(&text, &s));
+        assert_eq!(p.resumed_at(), 513);
+        assert_eq!(inc.moves.len(), full.moves.len());
+        assert!(inc == full);
+    }
 }

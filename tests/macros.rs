@@ -23,30 +23,6 @@ fn fanuc(src: &str) -> Plan {
     plan_with(src, Dialect::Fanuc0i, &[])
 }
 
-/// The passes and motions of two plans are the same (lines aside: the macro
-/// program's passes come from other lines than the unrolled one's).
-#[track_caller]
-fn same_cut(a: &Plan, b: &Plan) {
-    no_alarm(a);
-    no_alarm(b);
-    assert_eq!(a.threads.len(), b.threads.len(), "threads");
-    for (ta, tb) in a.threads.iter().zip(&b.threads) {
-        assert_eq!(ta.passes.len(), tb.passes.len(), "passes");
-        eq(ta.crest, tb.crest);
-        eq(ta.lead, tb.lead);
-        for (pa, pb) in ta.passes.iter().zip(&tb.passes) {
-            pt(pa.from, pb.from.x, pb.from.z);
-            pt(pa.to, pb.to.x, pb.to.z);
-            eq(pa.depth, pb.depth);
-        }
-    }
-    assert_eq!(a.moves.len(), b.moves.len(), "moves");
-    for (ma, mb) in a.moves.iter().zip(&b.moves) {
-        assert_eq!(ma.kind, mb.kind);
-        pt(ma.to, mb.to.x, mb.to.z);
-    }
-}
-
 const UNROLLED: &str = "\
 O0001
 G97 S300 M03
@@ -282,6 +258,30 @@ fn bounded_and_diagnosed() {
     let p = fanuc("#1=1\nM98 P1000\nM30\nO1000\n#1=#1+1\nM98 P1000\nM99\n");
     let d = one(&p, Code::CallDepth);
     assert!(d.message.contains("10"), "{}", d.message);
+}
+
+/// Blocks read once count nothing against `limits.blocks`, however the
+/// reading got to them: after a call of a subprogram written after the
+/// main program, after a forward jump, after a LinuxCNC subroutine defined
+/// at the end; a loop counts each block it runs again.
+#[test]
+fn only_blocks_run_again_count() {
+    let plain = |n: usize| (0..n).map(|k| format!("G00 X5{}. Z70.\n", k % 8)).collect::<String>();
+    let called = format!("O0001\nG00 X58. Z70.\nM98 P1000\n{}M30\nO1000\nG00 X47.\nM99\n", plain(50));
+    let jumped = format!("G00 X58. Z70.\n#1=1\nIF[#1 EQ 1]GOTO10\n{}N10 G00 X50.\n{}M30\n", plain(5), plain(50));
+    for (text, d) in [(called, Dialect::Fanuc0i), (jumped.clone(), Dialect::Fanuc0i), (jumped, Dialect::Gsk980tdc)] {
+        let p = plan_with(&text, d, &["limits.blocks=10"]);
+        assert_eq!(p.with_code(Code::BlockLimit).count(), 0, "{text}");
+    }
+    let sub = format!("G18 G21 G90 G7\nG0 X58 Z70\no<a> call\n{}M2\no<a> sub\nG0 X47\no<a> endsub\n", plain(50));
+    let p = plan_with(&sub.replace("G00", "G0").replace(". ", " "), Dialect::LinuxCnc, &["limits.blocks=10"]);
+    assert_eq!(p.with_code(Code::BlockLimit).count(), 0);
+    // Twice the eight blocks of the body, and the WHILE once more: 17.
+    let looped = format!("G00 X58. Z70.\n#1=0\nWHILE[#1 LT 3]DO1\n{}#1=#1+1\nEND1\nM30\n", plain(5));
+    let p = plan_with(&looped, Dialect::Fanuc0i, &["limits.blocks=16"]);
+    at(&p, Code::BlockLimit, 3, 1);
+    let p = plan_with(&looped, Dialect::Fanuc0i, &["limits.blocks=17"]);
+    assert_eq!(p.with_code(Code::BlockLimit).count(), 0);
 }
 
 /// Editing a program with loops and calls: the incremental plan is the full plan.

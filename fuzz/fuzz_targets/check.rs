@@ -1,6 +1,7 @@
 //! The fuzz target's body, shared with the test that replays the corpus
-//! (`tests/fuzz_corpus.rs`): the first byte picks the dialect and a setting
-//! to stress, the rest is the program (lossily decoded, as the CLI reads
+//! (`tests/fuzz_corpus.rs`): the first byte picks the dialect, a setting to
+//! stress and the bounds of the program flow (which only loops, jumps and
+//! calls meet), the rest is the program (lossily decoded, as the CLI reads
 //! files). Any input must give a plan whose positions and numbers are sane —
 //! never a panic, a hang or unbounded output.
 
@@ -24,6 +25,24 @@ pub fn check(data: &[u8]) {
         5 => s.set(P::LimitMoves, 50.0),
         6 => s.set(P::No107, 500.0),
         7 => s.set(P::Increment, 1.0),
+        _ => {}
+    }
+    // Tight bounds of the program flow: blocks run again, call nesting, runs of a main program ending in M99.
+    match head / (n * 8) {
+        1 => s.set(P::LimitBlocks, 1000.0),
+        2 => {
+            s.set(P::LimitBlocks, 50.0);
+            s.set(P::LimitCallDepth, 2.0);
+        }
+        3 => s.set(P::LimitCallDepth, 1.0),
+        4 => {
+            s.set(P::LimitBlocks, 10000.0);
+            s.set(P::MainRepeats, 3.0);
+        }
+        5 => {
+            s.set(P::LimitBlocks, 200.0);
+            s.set(P::MainRepeats, 2.0);
+        }
         _ => {}
     }
     let text = String::from_utf8_lossy(rest);

@@ -36,7 +36,7 @@ pub static CONTROLLER: Controller = Controller {
             macro_depth: Depth::Setting(P::FanucMacroNesting),
             max_loop: 3,
             h_codes: false,
-            source: "Fanuc 0i nesting",
+            source: "Fanuc 0i",
         }),
         spindle_stops: &[],
     },

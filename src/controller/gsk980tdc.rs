@@ -43,7 +43,7 @@ pub static CONTROLLER: Controller = Controller {
             macro_depth: Depth::Fixed(4),
             max_loop: 3,
             h_codes: true,
-            source: "GSK980TDc nesting",
+            source: "GSK980TDc",
         }),
         spindle_stops: &[],
     },

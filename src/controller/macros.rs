@@ -56,6 +56,7 @@ pub struct Macros {
     pub max_loop: u8,
     /// Macro A: `G65 Hm P#i Q#j R#k` operations and jumps (GSK).
     pub h_codes: bool,
-    /// Where the manual says so (for messages).
+    /// Whose the nesting limits are, as the alarms name them (no English
+    /// words: the Chinese messages show it as it is).
     pub source: &'static str,
 }

@@ -42,6 +42,9 @@ use vars::Vars;
 
 pub use crate::controller::macros::Macros;
 
+/// Most stretches of text read apart that the state keeps (see [`Exec::read`]).
+const MAX_STRETCHES: usize = 64;
+
 /// What the reading does with the block just read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Flow {
@@ -122,8 +125,11 @@ pub struct Exec {
     pub loops: Vec<Loop>,
     /// Blocks run again (loops, jumps, calls), against `limits.blocks`.
     pub repeated: u64,
-    /// The furthest byte read so far (a snapshot is valid for a text whose
-    /// edit starts after it).
+    /// The stretches of text read so far, `[start, end)` in order and apart:
+    /// a block inside one runs again.
+    pub read: Vec<(usize, usize)>,
+    /// The furthest byte read or looked at so far (a snapshot is valid for
+    /// a text whose edit starts after it).
     pub high: usize,
     /// Whether the flow ever left the order of the text.
     pub jumped: bool,
@@ -246,6 +252,7 @@ impl Exec {
             frames: Vec::new(),
             loops: Vec::new(),
             repeated: 0,
+            read: Vec::new(),
             high: 0,
             jumped: false,
             via: None,
@@ -260,11 +267,46 @@ impl Exec {
         }
     }
 
+    /// Whether the block `[from, to)` was read before; if not, it is now.
+    /// (The furthest byte read is not enough: a call of a subprogram written
+    /// after the main program, or a forward jump, reads past blocks that
+    /// have yet to run once.)
+    fn read_again(&mut self, from: usize, to: usize) -> bool {
+        let k = self.read.partition_point(|r| r.0 <= from);
+        if k > 0 && from < self.read[k - 1].1 {
+            return true;
+        }
+        if from >= to {
+            return false; // the end of the text
+        }
+        let k = if k > 0 && self.read[k - 1].1 == from {
+            self.read[k - 1].1 = to;
+            k - 1
+        } else {
+            self.read.insert(k, (from, to));
+            k
+        };
+        // Reaching the start of the next stretch joins the two.
+        if self.read.get(k + 1).is_some_and(|r| r.0 <= to) {
+            let next = self.read.remove(k + 1);
+            self.read[k].1 = self.read[k].1.max(next.1);
+        }
+        if self.read.len() > MAX_STRETCHES {
+            // Too many gaps (a jump over every few lines): the narrowest is
+            // closed (a block in it, read later, counts as run again), so
+            // snapshots stay small.
+            let k = (1..self.read.len()).min_by_key(|&k| self.read[k].0 - self.read[k - 1].1).unwrap_or(1);
+            let r = self.read.remove(k);
+            self.read[k - 1].1 = r.1;
+        }
+        false
+    }
+
     /// Decides what happens to `block`, the line at `ctx.here`: a macro line
     /// is executed or rewritten into plain words; a program number ends the
     /// program being run.
     pub fn before(&mut self, ctx: &mut Ctx, block: &mut Block) -> Flow {
-        if ctx.here.offset < self.high {
+        if self.read_again(ctx.here.offset, ctx.next.offset) {
             self.repeated += 1;
             let limit = ctx.settings.int(P::LimitBlocks).max(1) as u64;
             if self.repeated > limit {
@@ -433,6 +475,9 @@ impl Exec {
     pub fn shift(&mut self, s: Shift) {
         let at = |a: &mut At| a.offset = s.pos(a.offset);
         self.high = s.pos(self.high);
+        for r in &mut self.read {
+            *r = (s.pos(r.0), s.pos(r.1));
+        }
         for f in &mut self.frames {
             at(&mut f.ret);
             at(&mut f.body);

@@ -54,6 +54,30 @@ pub fn pt(p: screwcut::motion::Point, x: f64, z: f64) {
     assert!((p.x - x).abs() < 1e-9 && (p.z - z).abs() < 1e-9, "({}, {}) != ({x}, {z})", p.x, p.z);
 }
 
+/// The passes and motions of two plans are the same (lines aside: the macro
+/// program's passes come from other lines than the unrolled one's).
+#[track_caller]
+pub fn same_cut(a: &Plan, b: &Plan) {
+    no_alarm(a);
+    no_alarm(b);
+    assert_eq!(a.threads.len(), b.threads.len(), "threads");
+    for (ta, tb) in a.threads.iter().zip(&b.threads) {
+        assert_eq!(ta.passes.len(), tb.passes.len(), "passes");
+        eq(ta.crest, tb.crest);
+        eq(ta.lead, tb.lead);
+        for (pa, pb) in ta.passes.iter().zip(&tb.passes) {
+            pt(pa.from, pb.from.x, pb.from.z);
+            pt(pa.to, pb.to.x, pb.to.z);
+            eq(pa.depth, pb.depth);
+        }
+    }
+    assert_eq!(a.moves.len(), b.moves.len(), "moves");
+    for (ma, mb) in a.moves.iter().zip(&b.moves) {
+        assert_eq!(ma.kind, mb.kind);
+        pt(ma.to, mb.to.x, mb.to.z);
+    }
+}
+
 /// Checks one diagnostic's message in both languages: its English is the
 /// `message` field; every argument its template (and the phrases given as
 /// arguments) names is supplied, and every argument supplied is named.
