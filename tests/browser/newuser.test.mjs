@@ -104,6 +104,22 @@ try {
   await page.waitForFunction(() => !document.getElementById('stale').hidden, null, { timeout: 10_000 }).catch(() => {});
   const threads = await page.locator('#thread option').count();
   check('4. under the alarm the greyed plan is the one left (O1006: one thread, five passes)', threads === 1 && (await rows()) === 5, `${threads} threads, ${await rows()} rows`);
+  const header = await page.evaluate(() => {
+    const h = document.querySelector('header');
+    const first = h.firstElementChild.getBoundingClientRect();
+    return [...h.children].filter((c) => c.offsetParent !== null).every((c) => Math.abs(c.getBoundingClientRect().top - first.top) < first.height);
+  });
+  check('8. at 1440×900 the header is one row', header, '');
+  const firstTab = await page.evaluate(() => {
+    document.activeElement?.blur();
+    return [...document.querySelectorAll('a[href], button, select, input')].find((e) => e.offsetParent !== null || e.classList.contains('skip'))?.className;
+  });
+  check('… a skip link comes first', firstTab === 'skip', String(firstTab));
+  const tableRows = await page.evaluate(() => {
+    const s = document.querySelector('.row.lists .scroll');
+    return Math.floor((s.clientHeight - 30) / 22);
+  });
+  check('… the pass table shows at least 7 rows', tableRows >= 7, String(tableRows));
   const layout = await page.evaluate(() => {
     const b = document.getElementById('stale').getBoundingClientRect();
     const c = document.getElementById('side').getBoundingClientRect();
@@ -147,6 +163,7 @@ try {
   const file = path.join(os.tmpdir(), `screwcut-open-${process.pid}.ngc`);
   fs.writeFileSync(file, '(OPENED FROM A FILE)\r\nG18 G21 G90 G7\r\nM3 S500\r\nG0 X22 Z3\r\nG76 P1.5 Z-20 I-2 J0.3 K2\r\nM2\r\n');
   const chooser = page.waitForEvent('filechooser', { timeout: 5_000 });
+  await page.click('#file-menu summary');
   await page.click('#file-open');
   await (await chooser).setFiles(file);
   await page.waitForFunction(() => (window.__screwcut.text() || '').includes('OPENED FROM A FILE'), null, { timeout: 10_000 }).catch(() => {});
@@ -154,6 +171,7 @@ try {
   check('7. Open… reads a .ngc file as a new LinuxCNC program (CR LF made LF)', opened.dialect === 'linuxcnc' && opened.text.startsWith('(OPENED FROM A FILE)\nG18') && !opened.text.includes('\r'), JSON.stringify(opened).slice(0, 200));
   fs.rmSync(file, { force: true });
   const saved = page.waitForEvent('download', { timeout: 10_000 }).catch(() => null);
+  await page.click('#file-menu summary');
   await page.click('#file-save');
   const s = await saved;
   const savedText = s ? fs.readFileSync(await s.path(), 'utf8') : '';

@@ -47,12 +47,16 @@ export class Engine {
   }
 
   handle(m) {
+    const fail = (e) => this.post({ type: 'error', message: String(e && e.message ? e.message : e), id: m.id });
     try {
       const f = this[`on_${m.type}`];
       if (!f) throw new Error(`unknown message '${m.type}'`);
-      return f.call(this, m);
+      const out = f.call(this, m);
+      // An async handler's failure is an answer too, not an unhandled rejection.
+      if (out && typeof out.catch === 'function') return out.catch(fail);
+      return out;
     } catch (e) {
-      this.post({ type: 'error', message: String(e && e.message ? e.message : e), id: m.id });
+      fail(e);
       return undefined;
     }
   }

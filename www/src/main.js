@@ -571,6 +571,13 @@ function finishSetup() {
     $('settings-toggle').setAttribute('aria-pressed', String(!$('settings').hidden));
   });
   $('share').addEventListener('click', () => shareLink(encodeFragment(state), t));
+  // The File menu closes once an item is chosen, or on a click elsewhere.
+  $('file-menu').addEventListener('click', (e) => {
+    if (e.target.closest('.items button')) $('file-menu').open = false;
+  });
+  document.addEventListener('click', (e) => {
+    if (!e.target.closest('#file-menu')) $('file-menu').open = false;
+  });
   $('file-open').addEventListener('click', () => $('file-input').click());
   $('file-input').addEventListener('change', async (e) => {
     const file = e.target.files && e.target.files[0];
