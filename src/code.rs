@@ -78,6 +78,8 @@ codes! {
     /// The program reads without alarm as another controller's (its name is the argument `dialect`).
     DialectHint = "dialect-hint", Info;
     // ---- interpreter ----
+    /// A length written finer than the controller's least input increment.
+    FinerThanIncrement = "finer-than-increment", Info;
     /// A G code the dialect does not have.
     UnsupportedGCode = "unsupported-g-code", Error;
     /// A G code the controller has but the previewer does not draw.

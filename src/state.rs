@@ -168,6 +168,8 @@ pub mod once {
     pub const PLANE: u32 = 16;
     /// G33 K along a taper move (LinuxCNC).
     pub const LEAD_ALONG_PATH: u32 = 32;
+    /// A length written finer than the least input increment.
+    pub const FINER: u32 = 64;
 }
 
 /// The modal state of the controller between blocks.

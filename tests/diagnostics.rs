@@ -268,6 +268,8 @@ const CASES: &[Case] = &[
         13,
         "reads as LinuxCNC without an alarm",
     ),
+    // Fanuc IS-B: 0.001 mm; X20.0953 has a fourth decimal (noted once).
+    (Code::FinerThanIncrement, F, &[], "G00 X20.0953 Z5.\nG00 X20.0954\n", 1, 5, "0.001 mm"),
     (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
     (Code::SpindleNotTurning, L, &[], "G18\nG0 X10 Z5\nG33 Z-20 K1.5\nM2\n", 3, 1, "Spindle not turning in G33"),
     (

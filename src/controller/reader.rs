@@ -151,6 +151,9 @@ impl Reader<'_> {
     /// Reads a length word in program units, by the controller's decimal-point rule.
     /// Zero is zero in millimetres, inches and increments alike: no warning.
     pub fn length(&mut self, w: &Word) -> f64 {
+        if w.num.has_point {
+            self.finer(w);
+        }
         if !self.increments || w.num.has_point || w.value() == 0.0 {
             return w.value();
         }
@@ -160,6 +163,26 @@ impl Reader<'_> {
             args![word = w, value = v, unit = msg::unit(inch), written = w.value(), letter = w.letter()]
         });
         v
+    }
+
+    /// Notes (once per program) a length written with more decimals than
+    /// the least input increment has: the control cannot place the tool
+    /// finer. LinuxCNC has no input increment.
+    fn finer(&mut self, w: &Word) {
+        if self.s.dialect() == crate::Dialect::LinuxCnc {
+            return;
+        }
+        let inc = self.s.length_increment(self.m.inch);
+        let digits = (-inc.log10()).round() as u8;
+        if w.num.frac_digits > digits
+            && (w.value() / inc).fract().abs() > 1e-6
+            && self.m.first(crate::state::once::FINER)
+        {
+            let inch = self.m.inch;
+            self.diags.push_with(&msg::FINER_THAN_INCREMENT, w.span, || {
+                args![word = w, increment = inc, unit = msg::unit(inch)]
+            });
+        }
     }
 
     /// Reads an X/U word as a diameter (radius programming doubles it).

@@ -152,6 +152,9 @@ templates! {
     G78_INFEED_MODE = ValueOutOfRange:
         "{word}: infeed mode r = {r}; 0 middle, 1 left, 2 right or 3 alternating",
         "{word}：进刀方式 r = {r}；应为 0 直进、1 左侧、2 右侧或 3 左右交替";
+    FINER_THAN_INCREMENT = FinerThanIncrement:
+        "{word} is written finer than the least input increment, {increment} {unit} (setting increment): the control cannot place the tool finer (noted once)",
+        "{word} 写得比最小输入增量 {increment} {unit}（设置“increment”）更细：系统不能更细地定位刀具（只提示一次）";
     DIALECT_HINT = DialectHint:
         "this program reads as {title} without an alarm ({threads} thread(s)), but {why}: is it written for {title}? Choose {title} as the controller (--dialect {dialect})",
         "本程序按 {title} 读没有报警（{threads} 个螺纹），而{why}：它是否是为 {title} 编写的？请把系统选为 {title}（命令行“--dialect {dialect}”）";

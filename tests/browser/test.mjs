@@ -117,10 +117,11 @@ try {
   const timeHead = await page.locator('#passes thead').textContent();
   check('the pass table has a time and an even-area column', timeHead.includes('Time') && timeHead.includes('Even area'), timeHead);
   await page.fill('#designation', 'M48x2-6g');
-  // M48×2-6g: d2 46.483…46.663 (ISO 965-2); a sharp 60° tool at X45.4 cuts d2 47.1321, ΔX −0.5591 centres it.
+  // M48×2-6g: d2 46.483…46.663 (ISO 965-2); the tool not known, a full-profile insert (r = 0.125·2 = 0.25)
+  // at X45.4 cuts d2 45.4 − 0.5 + 1.7321 = 46.6321: it gauges, ΔX −0.0591 centres it.
   await page.waitForFunction(() => document.querySelector('#check-verdict .verdict'), null, { timeout: 10_000 }).catch(() => {});
   const verdict = await page.locator('#check-verdict').textContent();
-  check('M48x2-6g typed in the check: fails, d2 47.1321 in 46.483…46.663, final X −0.5591', verdict.includes('fails') && verdict.includes('47.1321') && verdict.includes('46.483…46.663') && verdict.includes('−0.5591'), verdict);
+  check('M48x2-6g typed in the check: gauges, d2 46.6321 in 46.483…46.663, ΔX −0.0591, tool r 0.25 assumed', verdict.includes('gauges') && verdict.includes('46.6321') && verdict.includes('46.483…46.663') && verdict.includes('ΔX −0.0591') && verdict.includes('r 0.25 assumed'), verdict);
   await page.locator('.lists').screenshot({ path: path.join(shots, '1b-thread-check.png') });
   await page.fill('#designation', '');
   await page.waitForFunction(() => !document.querySelector('#check-verdict .verdict'), null, { timeout: 10_000 }).catch(() => {});

@@ -44,6 +44,7 @@ let result = null; // the lists of the last answer (threads, passes as columns, 
 let lastGood = null; // the lists of the last answer without alarm that the user left (see replan)
 let candidate = null; // the last answer without alarm, until the next edit says whether it was left
 let candidateAt = 0; // when it was shown
+let candidateTyped = false; // whether a keystroke in the editor made it (else a setting, a file, a program opened)
 /** A drawing shown this long before the next edit was one the user left (not a keystroke on the way). */
 const LEFT_MS = 1000;
 let fresh = false; // the next plan is another program's: no last good drawing of this one yet
@@ -131,9 +132,9 @@ function replan() {
   state.program = text;
   persist();
   seq += 1;
-  inFlight = { seq, text, doc: editor.view.state.doc, t0: performance.now() };
+  inFlight = { seq, text, doc: editor.view.state.doc, t0: performance.now(), typed: pendingInput !== null };
   // The good plan on screen becomes the one kept for alarms when it was left a while (or is the first).
-  const keep = !!candidate && (lastGood === null || performance.now() - candidateAt >= LEFT_MS);
+  const keep = !!candidate && (lastGood === null || !candidateTyped || performance.now() - candidateAt >= LEFT_MS);
   if (keep) lastGood = candidate;
   candidate = null;
   if (pendingInput !== null) {
@@ -183,6 +184,7 @@ function onResult(m) {
   if (r.good) {
     candidate = r;
     candidateAt = performance.now();
+    candidateTyped = !!(inFlight && inFlight.seq === m.seq && inFlight.typed);
   }
   renderLists(r);
   const t1 = performance.now();
