@@ -89,18 +89,12 @@ try {
   await openNew(O1006, 'gsk980tdc');
   await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 10_000 }).catch(() => {});
   await page.waitForTimeout(1200);
-  // Type an extra block quickly, through a momentarily valid prefix, to an alarm.
-  await page.evaluate(() => {
-    const v = window.__screwcut.editor().view;
-    const at = v.state.doc.line(22).to;
-    v.dispatch({ changes: { from: at, insert: '\nX2' } });
-  });
+  // Type an extra block quickly, through a momentarily valid prefix (X2), to an alarm (X2#2.6).
+  await page.locator('.cm-line', { hasText: 'N200 G32' }).click();
+  await page.keyboard.press('End');
+  await page.keyboard.type('\nX2');
   await page.waitForTimeout(150);
-  await page.evaluate(() => {
-    const v = window.__screwcut.editor().view;
-    const at = v.state.doc.line(23).to;
-    v.dispatch({ changes: { from: at, insert: '#2.6' } });
-  });
+  await page.keyboard.type('#2.6');
   await page.waitForFunction(() => !document.getElementById('stale').hidden, null, { timeout: 10_000 }).catch(() => {});
   const threads = await page.locator('#thread option').count();
   check('4. under the alarm the greyed plan is the one left (O1006: one thread, five passes)', threads === 1 && (await rows()) === 5, `${threads} threads, ${await rows()} rows`);
