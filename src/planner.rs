@@ -64,6 +64,8 @@ pub struct Planner {
     last_reads: Reads,
     /// Blocks the last reading ran again in all (against `limits.blocks`).
     last_repeated: u64,
+    /// Where the last plan took over the reading before it (for its threads' advice).
+    join: Option<Join>,
 }
 
 /// What the last reading had after the resume point, kept in case the new
@@ -93,7 +95,19 @@ struct Tail {
     last_reads: Reads,
     /// Blocks the last reading ran again in all, and the most allowed.
     repeated: (u64, u64),
+    /// The first changed byte (old text) and the old lines the edit touched.
+    edited_lines: (u32, u32),
     inch: bool,
+}
+
+/// Where the last reading's threads rejoin the new plan: the first of its
+/// threads kept, its index in the new plan, the edit's lines (old text,
+/// inclusive) and how positions moved.
+struct Join {
+    old: usize,
+    new: usize,
+    lines: (u32, u32),
+    shift: Shift,
 }
 
 impl Planner {
@@ -112,6 +126,7 @@ impl Planner {
             stopped_at: None,
             last_reads: Reads::default(),
             last_repeated: 0,
+            join: None,
         }
     }
 
@@ -172,6 +187,8 @@ impl Planner {
             return self.plan.insert(finish(text, &self.settings, r.outputs(), Vec::new()));
         };
         let mut kept_threads = 0;
+        self.join = None;
+        let old_advice = std::mem::take(&mut self.advice);
         let mut tail = None;
         self.stopped_at = None;
         match resume {
@@ -206,7 +223,6 @@ impl Planner {
                 }
                 self.checkpoints.clear();
                 self.line_starts.clear();
-                self.advice.clear();
                 self.resumed_at = 1;
             }
         }
@@ -252,11 +268,19 @@ impl Planner {
         // Threads complete before the resume point are finished already and
         // their advice is kept; the rest are finished now, every message
         // formatted so it can be kept for the next edit.
+        let mut old_advice = old_advice;
         let advice = &mut self.advice;
-        advice.truncate(kept_threads);
+        *advice = old_advice.drain(..kept_threads.min(old_advice.len())).collect();
+        let join = self.join.as_ref();
         let settings = &self.settings;
         let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
             for i in advice.len()..threads.len() {
+                // A thread of the last reading's rest, finished then, stays finished when
+                // the edit is not in the text it was finished from.
+                if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &old_advice, kept_threads)) {
+                    advice.push(kept);
+                    continue;
+                }
                 let mut d = Diagnostics::with_limit(usize::MAX);
                 finish_thread(threads, i, moves, settings, text, &mut d, spans);
                 advice.push(d.into_items());
@@ -305,6 +329,7 @@ impl Planner {
             at,
             line_starts: self.line_starts.clone(),
             common_from: text.len() - common,
+            edited_lines: lines_of(old, &self.line_starts, changed_at, old.len() - common),
             shift,
             joinable_from,
             places,
@@ -323,6 +348,7 @@ impl Planner {
             r.diags.len() as isize - cp.diagnostics() as isize,
         );
         let (skip_m, skip_t, skip_d) = (cp.moves() - t.at.0, cp.threads() - t.at.1, cp.diagnostics() - t.at.2);
+        self.join = Some(Join { old: cp.threads(), new: r.asm.threads.len(), lines: t.edited_lines, shift: t.shift });
         let s = t.shift;
         for mut m in t.moves.drain(skip_m.min(t.moves.len())..) {
             m.span = s.span(m.span);
@@ -445,6 +471,40 @@ fn labels_changed(old: &str, new: &str, changed_at: usize, common: usize, linuxc
     labels(old) != labels(new)
 }
 
+/// The 1-based lines (first, last) holding bytes `from` … `to` of `text`,
+/// whose line starts were recorded in `starts` (all of them, or those up to
+/// where a reading that jumped stopped recording: the rest is scanned).
+fn lines_of(text: &str, starts: &[u32], from: usize, to: usize) -> (u32, u32) {
+    let to = to.max(from);
+    if starts.last().is_some_and(|&s| s as usize > to) {
+        let line = |p: usize| starts.partition_point(|&s| s as usize <= p).max(1) as u32;
+        return (line(from), line(to));
+    }
+    let index = crate::span::LineIndex::from_starts(text, starts.to_vec());
+    (index.locate(text, from).line, index.locate(text, to).line)
+}
+
+impl Join {
+    /// The advice of new thread `i` when it is a kept thread of the last
+    /// reading (the one before it kept too) whose text — from after the
+    /// thread before it to its last line — the edit did not touch: the last
+    /// reading's, moved with the edit. `old` holds the last plan's advice
+    /// after its first `dropped` threads.
+    fn advice_of(&self, threads: &[Thread], i: usize, old: &[Vec<Item>], dropped: usize) -> Option<Vec<Item>> {
+        if i <= self.new {
+            return None;
+        }
+        let j = (i - self.new + self.old).checked_sub(dropped)?;
+        let (t, before) = (&threads[i], &threads[i - 1]);
+        let from = (before.end_line + 1).min(t.line);
+        if from <= self.lines.1 && t.end_line.max(t.line) >= self.lines.0 {
+            return None;
+        }
+        let items = old.get(j)?;
+        Some(items.iter().map(|(m, span, via)| (m.clone(), self.shift.span(*span), via.clone())).collect())
+    }
+}
+
 /// How many bytes `a` and `b` have in common at their ends.
 fn common_suffix(a: &str, b: &str) -> usize {
     a.bytes().rev().zip(b.bytes().rev()).take_while(|(x, y)| x == y).count()
@@ -467,95 +527,4 @@ fn first_difference(a: &str, b: &str) -> usize {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::dialect::Dialect;
-
-    #[test]
-    fn first_difference_finds_the_edit() {
-        assert_eq!(first_difference("abc", "abc"), 3);
-        assert_eq!(first_difference("abc", "abd"), 2);
-        assert_eq!(first_difference("", "x"), 0);
-        let long = "G01 X1\n".repeat(100);
-        let mut edited = long.clone();
-        edited.replace_range(500..501, "9");
-        assert_eq!(first_difference(&long, &edited), 500);
-    }
-
-    /// An edit near the end resumes at the last checkpoint before it and gives the full plan.
-    #[test]
-    fn late_edit_resumes_and_matches_a_full_plan() {
-        let s = Settings::new(Dialect::Gsk980tdc);
-        let pass = "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n";
-        let mut text = pass.repeat(300);
-        let mut p = Planner::new(s.clone());
-        p.plan(&text);
-        assert_eq!(p.resumed_at(), 1);
-        text.push_str("X46.5\nG32 Z13\nG00 X58\nZ70\n");
-        let inc = p.plan(&text).clone();
-        // 1500 blocks: checkpoints at 257, 513, ..., 1281; the edit is past 1500.
-        assert_eq!(p.resumed_at(), 1281);
-        assert_eq!(inc, crate::plan(&text, &s));
-        // An edit at the top starts over.
-        text.insert_str(0, "G21\n");
-        let inc = p.plan(&text).clone();
-        assert_eq!(p.resumed_at(), 1);
-        assert_eq!(inc, crate::plan(&text, &s));
-    }
-
-    /// An edit near the top that keeps the number of lines reads only up to
-    /// the first checkpoint past it where the state is the last reading's,
-    /// keeps the rest, and still gives the full plan.
-    #[test]
-    fn early_edit_keeps_the_unchanged_tail() {
-        let s = Settings::new(Dialect::Gsk980tdc);
-        let pass = "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n";
-        let text = format!("G50 X100 Z100 (top)\n{}", pass.repeat(300));
-        let mut p = Planner::new(s.clone());
-        p.plan(&text);
-        // A longer comment on line 1: the same lines, every byte after it moved.
-        let edited = text.replacen("(top)", "(the top of the program)", 1);
-        let inc = p.plan(&edited).clone();
-        assert_eq!(p.resumed_at(), 1);
-        assert_eq!(p.stopped_at(), Some(257));
-        assert_eq!(inc, crate::plan(&edited, &s));
-        // The next edit resumes from the kept checkpoints, moved with the text.
-        let again = edited.replacen("X47.1", "X47.2", 1);
-        let inc = p.plan(&again).clone();
-        assert_eq!(inc, crate::plan(&again, &s));
-        // A digit in the first pass changes its depth but not what follows.
-        let late = again.replacen("Z70\nX47.1", "Z70\nX47.15", 120);
-        assert_eq!(p.plan(&late).clone(), crate::plan(&late, &s));
-        // An edit that adds a line reads to the end.
-        let longer = late.replacen("(the top", "\n(the top", 1);
-        assert_eq!(p.plan(&longer).clone(), crate::plan(&longer, &s));
-        assert_eq!(p.stopped_at(), None);
-    }
-
-    /// A LinuxCNC `repeat` open at a checkpoint kept from the last reading
-    /// (the edit before it kept the lines) goes back to its body where the
-    /// edit moved it.
-    #[test]
-    fn a_repeat_open_in_a_kept_checkpoint_moves_with_the_edit() {
-        let s = Settings::new(Dialect::LinuxCnc);
-        let mut lines = vec!["(top)".to_string(), "G18 G21 G90 G7".into()];
-        lines.extend((0..300).map(|k| format!("G0 X5{} Z70", k % 8)));
-        lines.push("o1 repeat [2]".into());
-        lines.extend((0..300).map(|k| format!("G1 X4{} Z60 F100", k % 8)));
-        lines.extend(["M2", "o1 endrepeat", "G0 X53", "M2"].map(String::from));
-        let mut p = Planner::new(s.clone());
-        p.plan(&lines.join("\n"));
-        // A longer comment: the same lines, the rest of the text moved.
-        lines[0] = "(the top of the program)".into();
-        p.plan(&lines.join("\n"));
-        assert_eq!(p.stopped_at(), Some(257));
-        // The first M2 becomes a move: the repeat runs its body again, from the checkpoint inside it.
-        let m2 = lines.iter().position(|l| l == "M2").unwrap();
-        lines[m2] = "G0 X52".into();
-        let text = lines.join("\n");
-        let (inc, full) = (p.plan(&text).clone(), crate::plan(&text, &s));
-        assert_eq!(p.resumed_at(), 513);
-        assert_eq!(inc.moves.len(), full.moves.len());
-        assert!(inc == full);
-    }
-}
+mod tests;

@@ -1,0 +1,92 @@
+//! Tests of the incremental planner.
+
+use super::*;
+use crate::dialect::Dialect;
+
+#[test]
+fn first_difference_finds_the_edit() {
+    assert_eq!(first_difference("abc", "abc"), 3);
+    assert_eq!(first_difference("abc", "abd"), 2);
+    assert_eq!(first_difference("", "x"), 0);
+    let long = "G01 X1\n".repeat(100);
+    let mut edited = long.clone();
+    edited.replace_range(500..501, "9");
+    assert_eq!(first_difference(&long, &edited), 500);
+}
+
+/// An edit near the end resumes at the last checkpoint before it and gives the full plan.
+#[test]
+fn late_edit_resumes_and_matches_a_full_plan() {
+    let s = Settings::new(Dialect::Gsk980tdc);
+    let pass = "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n";
+    let mut text = pass.repeat(300);
+    let mut p = Planner::new(s.clone());
+    p.plan(&text);
+    assert_eq!(p.resumed_at(), 1);
+    text.push_str("X46.5\nG32 Z13\nG00 X58\nZ70\n");
+    let inc = p.plan(&text).clone();
+    // 1500 blocks: checkpoints at 257, 513, ..., 1281; the edit is past 1500.
+    assert_eq!(p.resumed_at(), 1281);
+    assert_eq!(inc, crate::plan(&text, &s));
+    // An edit at the top starts over.
+    text.insert_str(0, "G21\n");
+    let inc = p.plan(&text).clone();
+    assert_eq!(p.resumed_at(), 1);
+    assert_eq!(inc, crate::plan(&text, &s));
+}
+
+/// An edit near the top that keeps the number of lines reads only up to
+/// the first checkpoint past it where the state is the last reading's,
+/// keeps the rest, and still gives the full plan.
+#[test]
+fn early_edit_keeps_the_unchanged_tail() {
+    let s = Settings::new(Dialect::Gsk980tdc);
+    let pass = "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n";
+    let text = format!("G50 X100 Z100 (top)\n{}", pass.repeat(300));
+    let mut p = Planner::new(s.clone());
+    p.plan(&text);
+    // A longer comment on line 1: the same lines, every byte after it moved.
+    let edited = text.replacen("(top)", "(the top of the program)", 1);
+    let inc = p.plan(&edited).clone();
+    assert_eq!(p.resumed_at(), 1);
+    assert_eq!(p.stopped_at(), Some(257));
+    assert_eq!(inc, crate::plan(&edited, &s));
+    // The next edit resumes from the kept checkpoints, moved with the text.
+    let again = edited.replacen("X47.1", "X47.2", 1);
+    let inc = p.plan(&again).clone();
+    assert_eq!(inc, crate::plan(&again, &s));
+    // A digit in the first pass changes its depth but not what follows.
+    let late = again.replacen("Z70\nX47.1", "Z70\nX47.15", 120);
+    assert_eq!(p.plan(&late).clone(), crate::plan(&late, &s));
+    // An edit that adds a line reads to the end.
+    let longer = late.replacen("(the top", "\n(the top", 1);
+    assert_eq!(p.plan(&longer).clone(), crate::plan(&longer, &s));
+    assert_eq!(p.stopped_at(), None);
+}
+
+/// A LinuxCNC `repeat` open at a checkpoint kept from the last reading
+/// (the edit before it kept the lines) goes back to its body where the
+/// edit moved it.
+#[test]
+fn a_repeat_open_in_a_kept_checkpoint_moves_with_the_edit() {
+    let s = Settings::new(Dialect::LinuxCnc);
+    let mut lines = vec!["(top)".to_string(), "G18 G21 G90 G7".into()];
+    lines.extend((0..300).map(|k| format!("G0 X5{} Z70", k % 8)));
+    lines.push("o1 repeat [2]".into());
+    lines.extend((0..300).map(|k| format!("G1 X4{} Z60 F100", k % 8)));
+    lines.extend(["M2", "o1 endrepeat", "G0 X53", "M2"].map(String::from));
+    let mut p = Planner::new(s.clone());
+    p.plan(&lines.join("\n"));
+    // A longer comment: the same lines, the rest of the text moved.
+    lines[0] = "(the top of the program)".into();
+    p.plan(&lines.join("\n"));
+    assert_eq!(p.stopped_at(), Some(257));
+    // The first M2 becomes a move: the repeat runs its body again, from the checkpoint inside it.
+    let m2 = lines.iter().position(|l| l == "M2").unwrap();
+    lines[m2] = "G0 X52".into();
+    let text = lines.join("\n");
+    let (inc, full) = (p.plan(&text).clone(), crate::plan(&text, &s));
+    assert_eq!(p.resumed_at(), 513);
+    assert_eq!(inc.moves.len(), full.moves.len());
+    assert!(inc == full);
+}
