@@ -206,6 +206,8 @@ codes! {
     SpindleLimit = "spindle-limit", Warning;
     /// A thread cut under G96: the speed changes with X.
     ThreadCss = "thread-css", Warning;
+    /// A pass of a thread cut at another spindle speed than its first pass.
+    SpeedBetweenPasses = "speed-between-passes", Warning;
     /// Lead-in δ1 shorter than n·L/500 (`machine.delta1_divisor`).
     Delta1Speed = "delta1-speed", Warning;
     /// Run-out δ2 shorter than n·L/1800 (`machine.delta2_divisor`).

@@ -98,6 +98,27 @@ pub struct ChipLoad {
     pub even_depth: Option<f64>,
 }
 
+/// The three-wire measurement of an external thread (reference
+/// threading.md §11): wires of the best size w = P / (2·cos(a/2)) laid in
+/// the thread space measure M = d2 + w·(1 + 1/sin(a/2)) − (P/2)·cot(a/2)
+/// over them (60°: w = 0.57735·P, M = d2 + 3w − 0.866025·P; no helix
+/// correction); the pitch diameter's limits give M's.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct OverWires {
+    /// Best wire diameter.
+    #[serde(serialize_with = "ser_round")]
+    pub wire: f64,
+    /// Measurement over the wires for the pitch diameter cut.
+    #[serde(serialize_with = "ser_round")]
+    pub m: f64,
+    /// M at the pitch diameter's lower limit.
+    #[serde(serialize_with = "ser_round_opt")]
+    pub m_min: Option<f64>,
+    /// M at its upper limit.
+    #[serde(serialize_with = "ser_round_opt")]
+    pub m_max: Option<f64>,
+}
+
 /// The thread check of one thread. Diameters in program units.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Gauge {
@@ -168,6 +189,9 @@ pub struct Gauge {
     /// 0.25·P) for which the pitch diameter is within its limits, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gauges_with_nose: Option<[f64; 2]>,
+    /// What the operator measures over three wires (external straight threads).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub over_wires: Option<OverWires>,
     /// NPT: the cut taper on diameter per unit length (1/16 = 0.0625 wanted).
     #[serde(serialize_with = "ser_round_opt", skip_serializing_if = "Option::is_none")]
     pub taper: Option<f64>,

@@ -248,6 +248,9 @@ params! {
     MaxRpm: d("machine.max_rpm", ALL, Kind::Float, 4000.0, (1.0, 1.0e6), "rev/min",
         "Highest spindle speed of the machine: a thread cut at a higher S gets a spindle-limit warning.",
         "机床主轴最高转速：螺纹切削转速超过时警告。");
+    ServoLag: d("machine.servo_lag", ALL, Kind::Float, 0.0, (0.0, 1000.0), "ms",
+        "Time by which the feed axis follows the spindle while threading (its following error divided by the feed). 0: not known. With it, a pass cut at another S says how far its start moves: lead·|Δn|/60 × lag.",
+        "螺纹切削时进给轴滞后主轴的时间（跟随误差除以进给速度）。0：未知。给出后，转速不同的一刀会给出起点的偏移：导程·|Δn|/60 × 滞后时间。");
     Delta1Divisor: d("machine.delta1_divisor", ALL, Kind::Float, 500.0, (1.0, 1.0e6), "",
         "Lead-in the axis needs to reach the thread feed: δ1 ≈ n·L / this (n rev/min, L lead mm; 500 from the axis time constant as Fanuc states it). The programmed lead-in is checked against it (delta1-speed).",
         "升速进刀段：δ1 ≈ n·L / 此值(n 转速，L 导程 mm)。");

@@ -270,6 +270,16 @@ const CASES: &[Case] = &[
     ),
     // Fanuc IS-B: 0.001 mm; X20.0953 has a fourth decimal (noted once).
     (Code::FinerThanIncrement, F, &[], "G00 X20.0953 Z5.\nG00 X20.0954\n", 1, 5, "0.001 mm"),
+    // S300 for the first pass, S400 for the second: 2·100/60·0.03 = 0.1 mm with a 30 ms lag.
+    (
+        Code::SpeedBetweenPasses,
+        G,
+        &["machine.servo_lag=30"],
+        "S300 M03\nG00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nS400\nX46.5\nG32 Z13\nG00 X58\n",
+        9,
+        1,
+        "moves 0.1 along the axis, 18°",
+    ),
     (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
     (Code::SpindleNotTurning, L, &[], "G18\nG0 X10 Z5\nG33 Z-20 K1.5\nM2\n", 3, 1, "Spindle not turning in G33"),
     (

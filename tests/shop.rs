@@ -234,6 +234,12 @@ fn o1006_with_the_tool_unknown_and_given() {
     let [lo, hi] = g.gauges_with_nose.expect("a range of radii");
     near(Some(lo), (45.4 + 2.0 * H60 - 46.663) / 2.0, 1e-4);
     near(Some(hi), (45.4 + 2.0 * H60 - 46.483) / 2.0, 1e-4);
+    // Over three wires ([REF] §11): best wire w = P/(2·cos 30°) = 1.154701, M = d2 + 3w − 0.866025·P.
+    let wires = g.over_wires.expect("an over-wire measurement");
+    near(Some(wires.wire), 2.0 / (2.0 * 30f64.to_radians().cos()), 1e-9);
+    near(Some(wires.m), 44.9 + 2.0 * H60 + 3.0 * wires.wire - 2.0 * H60, 1e-9);
+    near(wires.m_min, 46.483 + 3.0 * wires.wire - 2.0 * H60, 1e-9);
+    near(wires.m_max, 46.663 + 3.0 * wires.wire - 2.0 * H60, 1e-9);
     let d = one(&plan, Code::GaugeOk);
     assert!(d.message.contains("46.6321 (46.483 … 46.663, 6g): it gauges"), "{}", d.message);
     assert!(d.message.contains("r = 0.125·P = 0.25") && d.message.contains("from 0.2345 to 0.3245"), "{}", d.message);
@@ -460,4 +466,26 @@ fn incremental_plan_keeps_the_shop_figures() {
     let last = inc.threads.last().unwrap();
     assert!(last.shop.gauge.is_some() && last.shop.time_s.is_some());
     near(inc.time_s, inc.threads.iter().map(|t| t.shop.time_s.unwrap()).sum::<f64>(), 1e-9);
+}
+
+// ---- the speed between passes ----
+
+/// [REF] §11: O1006 with S400 before its second pass. The axis follows the
+/// spindle with a lag, so the second pass starts elsewhere on the helix:
+/// warned on its G32 (line 11). With `machine.servo_lag` = 30 ms the start
+/// moves lead·Δn/60·T = 2·100/60·0.03 = 0.1 mm, 18° of a turn. Back to S300
+/// for the third pass: that pass is on the first pass's helix again, no
+/// second warning; O1006 as written: none.
+#[test]
+fn a_pass_at_another_speed() {
+    let src = O1006.replace("N70 X46.5;", "S400\nN70 X46.5;").replace("N110 X45.9;", "S300\nN110 X45.9;");
+    let plan = plan_with(&src, Dialect::Gsk980tdc, &["machine.servo_lag=30"]);
+    let d = one(&plan, Code::SpeedBetweenPasses);
+    assert_eq!(d.line, 11);
+    assert!(
+        d.message.contains("pass 2 (start 1) is cut at S400") && d.message.contains("moves 0.1 along the axis, 18°"),
+        "{}",
+        d.message
+    );
+    assert_eq!(gsk(O1006).with_code(Code::SpeedBetweenPasses).count(), 0);
 }

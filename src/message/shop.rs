@@ -31,6 +31,9 @@ templates! {
     SPINDLE_LIMIT = SpindleLimit:
         "S{s} is above the machine's highest spindle speed of {max} rev/min (setting machine.max_rpm)",
         "S{s} 超过机床的最高主轴转速 {max} r/min（设置 machine.max_rpm）";
+    SPEED_BETWEEN_PASSES = SpeedBetweenPasses:
+        "pass {n} (start {start}) is cut at S{s}, the thread's first pass at S{first}: the axis lags the spindle by more the faster it turns, so this pass starts elsewhere on the helix and cuts across the thread; keep S the same for every pass{shift}",
+        "第 {n} 刀（第 {start} 头）的转速是 S{s}，而本螺纹第一刀是 S{first}：转速越高，进给轴滞后主轴越多，这一刀的起点落在螺旋线的别处，会把螺纹切乱；各刀应使用相同的 S{shift}";
     THREAD_CSS = ThreadCss:
         "thread cut under G96 (constant surface speed S{s} {unit}): the spindle speed changes with X ({n} rev/min at X{x}), so the passes need not follow one helix; cut threads under G97 with a fixed S",
         "在 G96（恒线速 S{s} {unit}）下切螺纹：主轴转速随 X 变化（X{x} 处为 {n} r/min），各刀不一定在同一条螺旋线上（乱牙）；螺纹应在 G97 下用固定的 S 切削";
@@ -74,6 +77,8 @@ phrases! {
     ASSUMED_RUN_OUT: "the assumed run-out (the program does not turn the work, so setting shop.assumed_run_out, the textbook's O1006 value, stands in for it)",
         "假定的降速退刀段：程序没有车出工件，因此用设置 shop.assumed_run_out（教材 O1006 的值）代替";
     SLOWER: " or lower the speed to S{fits}", "，或把转速降到 S{fits}";
+    SPEED_SHIFT: " (with the servo lag of {lag} ms, setting machine.servo_lag, its start moves {dz} along the axis, {deg}° of a turn)", "（按伺服滞后 {lag} ms（设置“machine.servo_lag”）估算，起点沿轴向移动 {dz}，即 {deg}°）";
+    SPEED_NO_LAG: " (setting machine.servo_lag gives the shift)", "（设置“machine.servo_lag”可估算偏移量）";
     START_Z: "start Z {z} (the others start at Z{at})", "起点 Z{z}（其他各刀起点 Z{at}）";
     START_ANGLE: "start angle Q {q}° (the others {at}°)", "起始角 Q {q}°（其他各刀 {at}°）";
 }

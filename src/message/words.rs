@@ -61,6 +61,7 @@ phrases! {
         "中径 {d2}，范围 {d2_min} … {d2_max}；大径 {major}，范围 {major_min} … {major_max}；小径 {minor}，范围 {minor_min} … {minor_max}";
     FIX_LINE: "fix: ΔX {dx} on the final pass centres the pitch diameter", "修正：精车刀 ΔX {dx} 可使中径位于公差带中间";
     NOTE_LINE: "note: {note}", "说明：{note}";
+    WIRES_LINE: "over three wires of Ø{w}: M {m} (for the limits {min} … {max})", "三针测量（量针 Ø{w}）：M {m}（公差对应 {min} … {max}）";
     DIAGNOSTICS_HEADING: "diagnostics:", "诊断：";
     CALLED_FROM: "called from line", "调用自第";
     CALLED_FROM_AFTER: "", "行";

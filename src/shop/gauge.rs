@@ -24,7 +24,7 @@ use super::designation::designation;
 use super::load::{by_start, offset};
 use crate::args;
 use crate::diagnostic::Diagnostics;
-use crate::figures::Gauge;
+use crate::figures::{Gauge, OverWires};
 use crate::message::{self as msg, Arg, Args, Message, Template};
 use crate::settings::P;
 use crate::standard::{self, Designation, Diameters, Kind, Limits, Taper};
@@ -265,6 +265,7 @@ pub fn check(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnost
         gauges_with_nose: None,
         taper: None,
         gauge_plane_z: None,
+        over_wires: None,
         notes: Vec::new(),
     };
     match_designation(t, &d, ctx, &mut g);
@@ -273,8 +274,20 @@ pub fn check(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnost
         None => straight(t, tool, pitch, &dm, &mut g),
     };
     done?;
+    if !t.internal && g.taper.is_none() {
+        g.over_wires = Some(over_wires(&g, t.tool_angle, pitch));
+    }
     verdict(t, &g, span, diags);
     Some(g)
+}
+
+/// The best wire and the measurement over three wires for the check's pitch
+/// diameter and its limits (see [`OverWires`]).
+fn over_wires(g: &Gauge, angle: f64, pitch: f64) -> OverWires {
+    let h = angle.to_radians() / 2.0;
+    let wire = pitch / (2.0 * h.cos());
+    let m = |d2: f64| d2 + wire * (1.0 + 1.0 / h.sin()) - pitch / 2.0 / h.tan();
+    OverWires { wire, m: m(g.pitch_diameter), m_min: g.pitch_diameter_min.map(m), m_max: g.pitch_diameter_max.map(m) }
 }
 
 /// Notes (and a failed check) where the program is not the thread the designation names.

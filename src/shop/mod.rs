@@ -22,6 +22,7 @@ pub mod designation;
 pub mod gauge;
 pub mod limits;
 pub mod load;
+mod speed;
 pub mod time;
 
 use crate::diagnostic::Diagnostics;
@@ -70,6 +71,7 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
     }
     limits::check(threads, i, ctx, &mut shop, diags);
     let t = &threads[i];
+    speed::check(t, ctx, diags);
     shop.chip = load::chip_loads(t, ctx, diags);
     let lower = i.checked_sub(1).map(|p| threads[p].end_line);
     shop.gauge = gauge::check(t, lower, ctx, diags);

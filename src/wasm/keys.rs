@@ -263,6 +263,7 @@ fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
         gauges_with_nose,
         taper,
         gauge_plane_z,
+        over_wires,
         notes,
     } = g;
     designation.hash(h);
@@ -288,6 +289,9 @@ fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
         opt(h, v);
     }
     f(h, *nose_radius);
+    for v in over_wires.map_or([None; 4], |o| [Some(o.wire), Some(o.m), o.m_min, o.m_max]) {
+        opt(h, v);
+    }
     nose_radius_assumed.hash(h);
     opt(h, gauges_with_nose.map(|r| r[0]));
     opt(h, gauges_with_nose.map(|r| r[1]));

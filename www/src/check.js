@@ -33,6 +33,11 @@ export function verdictHtml(th, units, t) {
     const dx = t('check_dx', { dx: (g.delta_x > 0 ? '+' : '−') + num(Math.abs(g.delta_x)) });
     parts.push(`<span class="dx" title="${esc(t('check_dx_help'))}">${esc(dx)}</span>`);
   }
+  if (g.over_wires) {
+    const o = g.over_wires;
+    const text = t('check_wires', { m: num(o.m), w: num(o.wire), min: o.m_min == null ? '?' : num(o.m_min), max: o.m_max == null ? '?' : num(o.m_max) });
+    parts.push(`<span class="wires" title="${esc(t('check_wires_help'))}">${esc(text)}</span>`);
+  }
   if (g.nose_radius_assumed) {
     const r = g.gauges_with_nose;
     const help = r ? t('check_nose_range', { lo: num(r[0]), hi: num(r[1]) }) : t('check_nose_none');

@@ -219,6 +219,10 @@ fn gauge_lines(out: &mut String, g: &screwcut::shop::Gauge, lang: Lang) {
     if let Some(dx) = g.delta_x {
         line(out, "    ", &w::FIX_LINE, args![dx]);
     }
+    if let Some(o) = g.over_wires {
+        let a = args![w = o.wire, m = o.m, min = opt(o.m_min, "?"), max = opt(o.m_max, "?")];
+        line(out, "    ", &w::WIRES_LINE, a);
+    }
     for n in &g.notes {
         line(out, "    ", &w::NOTE_LINE, args![note = n.render(lang)]);
     }
