@@ -13,13 +13,21 @@ use crate::plan::Plan;
 use crate::settings::Settings;
 use crate::span::{LineIndex, Span};
 
-/// Larger programs are not read again in every dialect (the work would
-/// grow with each keystroke); a pasted program is usually much smaller.
+/// Larger programs are not read again in every dialect by the command
+/// line; a pasted program is usually much smaller.
 pub const MAX_BYTES: usize = 100_000;
 
+/// The app, which asks at every keystroke while the program has an alarm,
+/// reads smaller programs only (three more plans of 30 KB are a few ms).
+pub const MAX_BYTES_LIVE: usize = 30_000;
+
 /// Adds the `dialect-hint` note to `plan` (the plan of `text` as `settings`'
-/// dialect) when another dialect reads it better; returns whether it did.
-pub fn add(text: &str, settings: &Settings, plan: &mut Plan) -> bool {
+/// dialect) when another dialect reads it better and `text` is at most
+/// `max_bytes` long; returns whether it did.
+pub fn add(text: &str, settings: &Settings, plan: &mut Plan, max_bytes: usize) -> bool {
+    if text.len() > max_bytes {
+        return false;
+    }
     let Some(d) = suggest(text, settings.dialect(), plan) else { return false };
     plan.diagnostics.retain(|x| x.code != Code::DialectHint);
     let at = plan.diagnostics.iter().find(|x| x.severity == crate::Severity::Error).map_or(Span::new(0, 0), |x| x.span);
@@ -58,7 +66,7 @@ impl Other {
 fn suggest(text: &str, current: Dialect, plan: &Plan) -> Option<Other> {
     let alarms = plan.diagnostics.iter().filter(|d| d.severity == crate::Severity::Error).count();
     let no_threads = plan.threads.is_empty();
-    if text.len() > MAX_BYTES || (alarms == 0 && !no_threads) || text.trim().is_empty() {
+    if (alarms == 0 && !no_threads) || text.trim().is_empty() {
         return None;
     }
     let why = if alarms > 0 { &msg::HINT_ALARMS } else { &msg::HINT_NO_THREAD };

@@ -346,7 +346,7 @@ const CASES: &[Case] = &[
 /// The plan with the note on another dialect, as the command line and the app give it.
 fn hinted(src: &str, dialect: Dialect, sets: &[&str]) -> screwcut::Plan {
     let mut plan = plan_with(src, dialect, sets);
-    screwcut::hint::add(src, &screwcut::Settings::new(dialect), &mut plan);
+    screwcut::hint::add(src, &screwcut::Settings::new(dialect), &mut plan, screwcut::hint::MAX_BYTES);
     plan
 }
 

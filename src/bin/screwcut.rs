@@ -336,7 +336,7 @@ fn plan(file: &str, dialect: Dialect, set: &[String], json: bool, lang: Lang) ->
         Err(code) => return code,
     };
     let mut plan = screwcut::plan(&text, &settings);
-    screwcut::hint::add(&text, &settings, &mut plan);
+    screwcut::hint::add(&text, &settings, &mut plan, screwcut::hint::MAX_BYTES);
     emit(&if json { plan.to_json() + "\n" } else { summary::summary(&plan, file, lang) });
     if plan.has_alarm() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }

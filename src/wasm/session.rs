@@ -92,7 +92,7 @@ impl Session {
         session.planner.plan(text);
         let settings = session.planner.settings().clone();
         if let Some(plan) = session.planner.last_mut() {
-            crate::hint::add(text, &settings, plan);
+            crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
         let State { planner, side, threads } = &mut session;
         let lang = self.lang.get();
