@@ -87,7 +87,7 @@ fn fanuc_codes_of_the_list_are_not_alarms() {
         "G67",
         "G68",
         "G69",
-        "G70 P1 Q2",
+        // G70 P Q runs its contour N(P) … N(Q) (tests/profile.rs): here there is none.
         "G71 U1. R.5",
         "G72 W1. R.5",
         "G73 U1. R1",

@@ -24,6 +24,7 @@ mod fanuc;
 mod gsk;
 pub mod index;
 mod oword;
+mod profile;
 pub mod reads;
 pub mod stmt;
 pub mod vars;
@@ -86,6 +87,8 @@ pub struct Frame {
     pub args: Option<Box<[Option<f64>; 33]>>,
     /// The 1-based line of the call.
     pub site: u32,
+    /// A G70 running a contour: the sequence number of its last block.
+    pub until: Option<u32>,
 }
 
 /// A modal macro call (`G66`) in force: the macro runs after each block
@@ -275,6 +278,14 @@ impl Exec {
         if self.modal_call.is_some() && fanuc::g66_call(self, ctx, block, macros) {
             return Flow::Run;
         }
+        if macros.subprograms && !block.has_error {
+            if profile::contour_end(self, ctx, block) {
+                return Flow::Run;
+            }
+            if let Some(flow) = profile::after(self, ctx, block, macros) {
+                return flow;
+            }
+        }
         if macros.subprograms { fanuc::m98_m99(self, ctx, block, macros) } else { Flow::Run }
     }
 
@@ -357,7 +368,16 @@ impl Exec {
             return false;
         }
         let site = ctx.here.line;
-        self.frames.push(Frame { kind, ret: ctx.next, body, repeats, loops: Vec::new(), args: None, site });
+        self.frames.push(Frame {
+            kind,
+            ret: ctx.next,
+            body,
+            repeats,
+            loops: Vec::new(),
+            args: None,
+            site,
+            until: None,
+        });
         self.set_via();
         if kind == CallKind::Macro {
             self.vars.levels.push(vars::Locals::default());
