@@ -206,6 +206,12 @@ codes! {
     SpindleLimit = "spindle-limit", Warning;
     /// A thread cut under G96: the speed changes with X.
     ThreadCss = "thread-css", Warning;
+    /// The insert (`tool.insert`) is for the other side (internal/external).
+    InsertSide = "insert-side", Warning;
+    /// A full-profile insert made for another pitch.
+    InsertPitch = "insert-pitch", Warning;
+    /// A partial-profile insert whose range does not hold the pitch.
+    InsertRange = "insert-range", Warning;
     /// A pass of a thread cut at another spindle speed than its first pass.
     SpeedBetweenPasses = "speed-between-passes", Warning;
     /// Lead-in δ1 shorter than n·L/500 (`machine.delta1_divisor`).

@@ -343,6 +343,8 @@ pub enum T {
     Designation,
     /// `macro.variables`.
     MacroVariables,
+    /// `tool.insert`.
+    Insert,
 }
 
 /// The text settings, indexed by `T as usize`.
@@ -358,6 +360,12 @@ pub const TEXT_DEFS: &[TextDef] = &[
         max_len: 4000,
         help: "Values the common macro variables hold when the program starts (kept at power-off on the controller, #500–#999), e.g. #500=1.5 #501=2. Empty: every variable starts vacant.",
         help_zh: "程序开始时公共宏变量的值(如 #500=1.5 #501=2)。空：全部为空变量。",
+    },
+    TextDef {
+        name: "tool.insert",
+        max_len: 40,
+        help: "The threading insert as its maker writes it: 16ER 1.5 ISO, 16IR 2.0 ISO, 16ER 16 UN (full profile: pitch or threads per inch and standard), 16ER A60, AG60, G60 (partial profile). Its side, pitch or range are checked against each thread; a full-profile insert gives the check its nose radius. Empty: not known.",
+        help_zh: "螺纹刀片型号（按厂家写法）：16ER 1.5 ISO、16IR 2.0 ISO、16ER 16 UN（全牙型：螺距或每英寸牙数及标准），16ER A60、AG60、G60（部分牙型）。会对每个螺纹检查内外、螺距或适用范围；全牙型刀片给出检验所用的刀尖半径。空：未知。",
     },
 ];
 
@@ -484,6 +492,12 @@ impl Settings {
                 return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
             }
             if TEXT_DEFS[i].name == "macro.variables" && crate::exec::vars::parse_start(value).is_err() {
+                return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
+            }
+            if TEXT_DEFS[i].name == "tool.insert"
+                && !value.trim().is_empty()
+                && crate::shop::insert::parse(value).is_err()
+            {
                 return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
             }
             self.texts[i] = value.to_string();

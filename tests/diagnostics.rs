@@ -280,6 +280,35 @@ const CASES: &[Case] = &[
         1,
         "moves 0.1 along the axis, 18°",
     ),
+    // An internal insert on an external thread, made for pitch 1.5 (threading.md §11: E/I, full profile pitch).
+    (
+        Code::InsertSide,
+        G,
+        &["tool.insert=16IR 2.0 ISO"],
+        "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n",
+        2,
+        1,
+        "is for internal threads; this thread is external",
+    ),
+    (
+        Code::InsertPitch,
+        G,
+        &["tool.insert=16ER 1.5 ISO"],
+        "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n",
+        2,
+        1,
+        "made for a pitch of 1.5 mm",
+    ),
+    // A60 cuts 0.5–1.5 mm (Kyocera catalogue 2021–2022, 60° partial profile).
+    (
+        Code::InsertRange,
+        G,
+        &["tool.insert=16ER A60"],
+        "G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n",
+        2,
+        1,
+        "from 0.5 to 1.5 mm",
+    ),
     (Code::SpindleSpeed, R, &[], "S1500 M03\nG00 X40 Z5\nG00 U-10\nG33 W-40 F2\n", 4, 1, "2300/t − 60 = 1090"),
     (Code::SpindleNotTurning, L, &[], "G18\nG0 X10 Z5\nG33 Z-20 K1.5\nM2\n", 3, 1, "Spindle not turning in G33"),
     (

@@ -489,3 +489,20 @@ fn a_pass_at_another_speed() {
     );
     assert_eq!(gsk(O1006).with_code(Code::SpeedBetweenPasses).count(), 0);
 }
+
+/// A full-profile insert (`16ER 2.0 ISO`, threading.md §11) forms the
+/// standard's root: the check takes its radius, 0.125·2 = 0.25, as known —
+/// no "not known" note, and no range of radii; a partial-profile insert
+/// (`16ER AG60`, 0.5–3 mm) leaves the radius unknown.
+#[test]
+fn the_insert_gives_the_nose_radius() {
+    let plan = plan_with(&o1006_named(), Dialect::Gsk980tdc, &["tool.insert=16ER 2.0 ISO"]);
+    let g = plan.threads[0].shop.gauge.as_ref().unwrap();
+    assert!(!g.nose_radius_assumed && g.gauges_with_nose.is_none());
+    near(Some(g.nose_radius), 0.25, 1e-12);
+    assert!(g.notes.iter().any(|n| n.to_string().contains("full-profile insert 16ER 2.0 ISO")), "{:?}", g.notes);
+    assert_eq!(plan.with_code(Code::InsertPitch).count() + plan.with_code(Code::InsertSide).count(), 0);
+    let plan = plan_with(&o1006_named(), Dialect::Gsk980tdc, &["tool.insert=16ER AG60"]);
+    assert!(plan.threads[0].shop.gauge.as_ref().unwrap().nose_radius_assumed);
+    assert_eq!(plan.with_code(Code::InsertRange).count(), 0);
+}

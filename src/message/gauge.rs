@@ -49,6 +49,9 @@ templates! {
     NOTE_TOOL_ASSUMED = GaugeOk:
         "the tool is not known (setting tool.nose_radius): taken as a full-profile insert, nose radius r = {factor}·P = {r} (ISO 965-1's smallest root radius of an external thread); {range}",
         "刀具未知（设置 tool.nose_radius）：按全牙型刀片计算，刀尖圆弧半径 r = {factor}·P = {r}（ISO 965-1 外螺纹牙底最小圆弧半径）；{range}";
+    NOTE_TOOL_INSERT = GaugeOk:
+        "the nose radius r = {r} is the root the full-profile insert {insert} forms (setting tool.insert)",
+        "刀尖半径 r = {r} 取全牙型刀片 {insert} 形成的牙底（设置“tool.insert”）";
     NOTE_TOOL_ASSUMED_INTERNAL = GaugeOk:
         "the tool is not known (setting tool.nose_radius): taken as a full-profile insert, nose radius r = {factor}·P = {r} (the largest within ISO 68-1's basic profile, whose root flat is H/8 inside the sharp V); {range}",
         "刀具未知（设置 tool.nose_radius）：按全牙型刀片计算，刀尖圆弧半径 r = {factor}·P = {r}（ISO 68-1 基本牙型内允许的最大值，牙底平台距尖角 H/8）；{range}";

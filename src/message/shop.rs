@@ -31,6 +31,15 @@ templates! {
     SPINDLE_LIMIT = SpindleLimit:
         "S{s} is above the machine's highest spindle speed of {max} rev/min (setting machine.max_rpm)",
         "S{s} 超过机床的最高主轴转速 {max} r/min（设置 machine.max_rpm）";
+    INSERT_SIDE = InsertSide:
+        "the insert {insert} (setting tool.insert) is for {is} threads; this thread is {thread}",
+        "刀片 {insert}（设置“tool.insert”）用于{is}螺纹，而这个螺纹是{thread}螺纹";
+    INSERT_PITCH = InsertPitch:
+        "the full-profile insert {insert} (setting tool.insert) is made for a pitch of {made} mm; this thread's pitch is {pitch} mm: its crest and root will not fit the thread",
+        "全牙型刀片 {insert}（设置“tool.insert”）适用于螺距 {made} mm，而这个螺纹的螺距是 {pitch} mm：刀片的牙顶和牙底与螺纹不符";
+    INSERT_RANGE = InsertRange:
+        "the partial-profile insert {insert} (setting tool.insert) cuts pitches from {min} to {max} mm; this thread's pitch is {pitch} mm",
+        "部分牙型刀片 {insert}（设置“tool.insert”）适用螺距 {min} 到 {max} mm，而这个螺纹的螺距是 {pitch} mm";
     SPEED_BETWEEN_PASSES = SpeedBetweenPasses:
         "pass {n} (start {start}) is cut at S{s}, the thread's first pass at S{first}: the axis lags the spindle by more the faster it turns, so this pass starts elsewhere on the helix and cuts across the thread; keep S the same for every pass{shift}",
         "第 {n} 刀（第 {start} 头）的转速是 S{s}，而本螺纹第一刀是 S{first}：转速越高，进给轴滞后主轴越多，这一刀的起点落在螺旋线的别处，会把螺纹切乱；各刀应使用相同的 S{shift}";
@@ -77,6 +86,8 @@ phrases! {
     ASSUMED_RUN_OUT: "the assumed run-out (the program does not turn the work, so setting shop.assumed_run_out, the textbook's O1006 value, stands in for it)",
         "假定的降速退刀段：程序没有车出工件，因此用设置 shop.assumed_run_out（教材 O1006 的值）代替";
     SLOWER: " or lower the speed to S{fits}", "，或把转速降到 S{fits}";
+    X_INSERT_HEAD: "a size and side, such as 16ER or 16IL", "尺寸和内外、左右，如 16ER 或 16IL";
+    X_INSERT_PROFILE: "a profile: a pitch and ISO (1.5 ISO), threads per inch and UN (16 UN), or A60, AG60, G60", "牙型：螺距加 ISO（1.5 ISO）、每英寸牙数加 UN（16 UN），或 A60、AG60、G60";
     SPEED_SHIFT: " (with the servo lag of {lag} ms, setting machine.servo_lag, its start moves {dz} along the axis, {deg}° of a turn)", "（按伺服滞后 {lag} ms（设置“machine.servo_lag”）估算，起点沿轴向移动 {dz}，即 {deg}°）";
     SPEED_NO_LAG: " (setting machine.servo_lag gives the shift)", "（设置“machine.servo_lag”可估算偏移量）";
     START_Z: "start Z {z} (the others start at Z{at})", "起点 Z{z}（其他各刀起点 Z{at}）";

@@ -46,7 +46,10 @@ fn text_settings_take_any_text_up_to_their_length() {
     assert_eq!(s.text(T::Designation), "1/4-20 UNC-2A");
     let long = format!("thread.designation={}", "x".repeat(201));
     assert!(matches!(s.assign(&long), Err(SettingError::BadValue(..))));
-    assert_eq!(s.text_entries().count(), 2);
+    assert_eq!(s.text_entries().count(), 3);
+    // An insert: its designation is read when it is set.
+    s.assign("tool.insert=16ER 1.5 ISO").unwrap();
+    assert!(matches!(s.assign("tool.insert=16ER 1.5 DIN"), Err(SettingError::BadValue(..))));
     // The common variables' start values: #n=value pairs, anything else refused.
     s.assign("macro.variables=#500=1.5 #501=-2").unwrap();
     assert_eq!(crate::exec::vars::parse_start(s.text(T::MacroVariables)), Ok(vec![(500, 1.5), (501, -2.0)]));

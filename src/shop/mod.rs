@@ -20,6 +20,7 @@
 
 pub mod designation;
 pub mod gauge;
+pub mod insert;
 pub mod limits;
 pub mod load;
 mod speed;
@@ -72,6 +73,7 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
     limits::check(threads, i, ctx, &mut shop, diags);
     let t = &threads[i];
     speed::check(t, ctx, diags);
+    insert::check(t, ctx, diags);
     shop.chip = load::chip_loads(t, ctx, diags);
     let lower = i.checked_sub(1).map(|p| threads[p].end_line);
     shop.gauge = gauge::check(t, lower, ctx, diags);
