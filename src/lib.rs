@@ -40,6 +40,7 @@ pub mod group;
 pub mod hash;
 pub mod helix;
 pub mod hint;
+pub mod insert;
 pub mod interp;
 pub mod lexer;
 pub mod message;

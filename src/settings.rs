@@ -494,10 +494,7 @@ impl Settings {
             if TEXT_DEFS[i].name == "macro.variables" && crate::exec::vars::parse_start(value).is_err() {
                 return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
             }
-            if TEXT_DEFS[i].name == "tool.insert"
-                && !value.trim().is_empty()
-                && crate::shop::insert::parse(value).is_err()
-            {
+            if TEXT_DEFS[i].name == "tool.insert" && !value.trim().is_empty() && crate::insert::parse(value).is_err() {
                 return Err(SettingError::BadValue(TEXT_DEFS[i].name.into(), value.chars().take(40).collect()));
             }
             self.texts[i] = value.to_string();

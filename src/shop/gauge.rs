@@ -70,7 +70,7 @@ impl Tool {
         let given = ctx.settings.get(P::NoseRadius) / ctx.mm();
         // A full-profile insert forms the standard's root: its radius is known.
         let full =
-            super::insert::of(ctx).is_some_and(|(i, _)| matches!(i.profile, super::insert::Profile::Full { .. }));
+            super::insert::of(ctx).is_some_and(|(i, _)| matches!(i.profile, crate::insert::Profile::Full { .. }));
         let (r, assumed) = if given > 0.0 { (given, false) } else { (assumed_nose_radius(pitch, t.internal), !full) };
         Some((Tool { tan: h.tan(), sin: h.sin(), r }, assumed))
     }
@@ -272,7 +272,7 @@ pub fn check(t: &Thread, lower: Option<u32>, ctx: &Context, diags: &mut Diagnost
         notes: Vec::new(),
     };
     match_designation(t, &d, ctx, &mut g);
-    let from_insert = super::insert::of(ctx).filter(|(i, _)| matches!(i.profile, super::insert::Profile::Full { .. }));
+    let from_insert = super::insert::of(ctx).filter(|(i, _)| matches!(i.profile, crate::insert::Profile::Full { .. }));
     if let (false, Some((_, name))) = (assumed || ctx.settings.get(P::NoseRadius) > 0.0, from_insert) {
         note(&mut g, &msg::NOTE_TOOL_INSERT, args![r = tool.r, insert = name.trim().to_string()]);
     }
