@@ -50,7 +50,8 @@ struct SettingInfo {
 }
 
 /// The settings of a dialect with their defaults, units, ranges and help:
-/// `[{name, kind: int|float|bool|choice, choices, default, min, max, unit, help, help_zh}]`.
+/// `[{name, kind: int|float|bool|choice|text, choices, default, min, max, unit, help, help_zh}]`
+/// (a text setting's `max` is its longest value in bytes; its default is empty).
 #[wasm_bindgen]
 pub fn settings_table(dialect_name: &str) -> Result<JsValue, JsValue> {
     let s = Settings::new(dialect(dialect_name)?);
@@ -76,6 +77,19 @@ pub fn settings_table(dialect_name: &str) -> Result<JsValue, JsValue> {
             }
         })
         .collect();
+    // The text settings (a designation, an insert, macro variables): free text up to their length.
+    let texts = s.text_entries().map(|(d, _)| SettingInfo {
+        name: d.name,
+        kind: "text",
+        choices: &[],
+        default: 0.0,
+        min: 0.0,
+        max: d.max_len as f64,
+        unit: "",
+        help: d.help,
+        help_zh: d.help_zh,
+    });
+    let list: Vec<SettingInfo> = list.into_iter().chain(texts).collect();
     to_js(&list)
 }
 

@@ -32,6 +32,8 @@ export class SettingsPanel {
           input = `<select id="${id}" data-name="${esc(s.name)}">${s.choices
             .map((c, i) => `<option value="${esc(c)}"${(v ?? s.choices[s.default]) === c ? ' selected' : ''}>${esc(choiceText(c))}${i === s.default ? ' *' : ''}</option>`)
             .join('')}</select>`;
+        } else if (s.kind === 'text') {
+          input = `<input type="text" id="${id}" data-name="${esc(s.name)}" maxlength="${s.max}" spellcheck="false" autocomplete="off" value="${esc(v ?? '')}">`;
         } else if (s.kind === 'bool') {
           const on = v === undefined ? s.default !== 0 : v === '1';
           input = `<input type="checkbox" id="${id}" data-name="${esc(s.name)}"${on ? ' checked' : ''}>`;
@@ -39,7 +41,7 @@ export class SettingsPanel {
           const step = s.kind === 'int' ? '1' : 'any';
           input = `<input type="number" id="${id}" data-name="${esc(s.name)}" step="${step}" min="${s.min}" max="${s.max}" value="${esc(v ?? s.default)}">`;
         }
-        const range = `${t('default')} ${num(s.default)} · ${t('range')} ${num(s.min)}…${num(s.max)}`;
+        const range = s.kind === 'text' ? t('text_setting', { n: s.max }) : `${t('default')} ${num(s.default)} · ${t('range')} ${num(s.min)}…${num(s.max)}`;
         return `<div class="setting${v !== undefined ? ' changed' : ''}" data-name="${esc(s.name)}"><label for="${id}">${esc(s.name)} ${input} <span class="unit">${esc(unitText(s.unit))}</span></label><div class="help" title="${esc(range)}">${esc(zh ? s.help_zh : s.help)} <span class="unit">(${esc(range)})</span></div><div class="err"></div></div>`;
       })
       .join('');
@@ -56,7 +58,9 @@ export class SettingsPanel {
     const def = this.table.find((s) => s.name === name);
     const value = el.type === 'checkbox' ? (el.checked ? '1' : '0') : el.value.trim();
     const isDefault =
-      def && ((def.kind === 'choice' && def.choices[def.default] === value) || (def.kind !== 'choice' && value !== '' && Number(value) === def.default));
+      def &&
+      def.kind !== 'text' &&
+      ((def.kind === 'choice' && def.choices[def.default] === value) || (def.kind !== 'choice' && value !== '' && Number(value) === def.default));
     if (isDefault || value === '') delete mine[name];
     else mine[name] = value;
     el.closest('.setting').classList.toggle('changed', !isDefault && value !== '');

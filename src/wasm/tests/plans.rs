@@ -37,6 +37,9 @@ fn settings_tables_follow_the_dialect() {
     assert!(find("fanuc0i", "3401#0").is_some() && find("fanuc0i", "5130").is_some());
     assert!(find("fanuc0i", "No.058").is_none(), "GSK parameters are not Fanuc's");
     assert!(find("renhe", "renhe.runout").is_some());
+    // The text settings too: the insert is free text up to 40 bytes.
+    let insert = find("fanuc0i", "tool.insert").expect("the insert setting");
+    assert_eq!((get(&insert, "kind").as_string().as_deref(), num(&insert, "max")), (Some("text"), 40.0));
     let e = message(wasm::settings_table("bogus").unwrap_err());
     assert!(e.contains("unknown dialect 'bogus'") && e.contains("gsk980tdc"), "{e}");
 }
