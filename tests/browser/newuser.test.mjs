@@ -184,6 +184,20 @@ try {
   await page.screenshot({ path: path.join(shots, 'newuser-print-en.png'), fullPage: true });
   await page.emulateMedia({ media: 'screen' });
 
+  // ---- the insert, a text setting in the Parameters panel ----
+  await openNew(O1006, 'gsk980tdc');
+  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 10_000 }).catch(() => {});
+  await page.click('#settings-toggle');
+  const insert = page.locator('#settings-form input[data-name="tool.insert"]');
+  await insert.fill('16ER 1.5 ISO');
+  await insert.dispatchEvent('change');
+  await page.waitForFunction(() => [...document.querySelectorAll('#diagnostics li')].some((li) => li.textContent.includes('insert-pitch')), null, { timeout: 10_000 }).catch(() => {});
+  const ins = (await diags()).find((d) => d.includes('insert-pitch')) || '';
+  check('the insert typed in Parameters: a 1.5 mm insert on O1006 (pitch 2) is warned about', ins.includes('made for a pitch of 1.5 mm'), ins);
+  await insert.fill('');
+  await insert.dispatchEvent('change');
+  await page.click('#settings-toggle');
+
   // ---- Chinese, and a phone ----
   await page.click('#lang');
   await openNew(O1006.replace('O1006;', 'O1006; (M48x2-6g)'), 'gsk980tdc');

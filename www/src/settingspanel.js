@@ -24,6 +24,8 @@ export class SettingsPanel {
     this.table = await this.opts.table(dialect);
     const zh = this.opts.lang() === 'zh';
     this.form.innerHTML = this.table
+      // The designation has its own field above the pass table.
+      .filter((s) => s.name !== 'thread.designation')
       .map((s) => {
         const id = `set-${s.name.replace(/[^a-z0-9]/gi, '_')}`;
         const v = values[s.name];
