@@ -58,6 +58,11 @@ fn main() {
         loops(&out_dir);
         return;
     }
+    // One thread of many passes through the editor's planner alone: `--one-thread`.
+    if args.iter().any(|a| a == "--one-thread") {
+        one_thread();
+        return;
+    }
     let settings = Settings::new(Dialect::Gsk980tdc);
     println!("screwcut native throughput (lex + interpret + plan), release build");
     for (name, mb) in [("mixed", 1usize), ("mixed", 20), ("thread-dense", 1), ("g01", 10)] {
@@ -105,6 +110,7 @@ fn main() {
         }
     }
     loops(&out_dir);
+    one_thread();
 }
 
 /// The best of `runs` timings of `f`, in milliseconds, and its last result.
@@ -124,6 +130,29 @@ fn best_ms<R>(runs: usize, mut f: impl FnMut() -> (f64, R)) -> (f64, R) {
 /// a full plan, and re-plans by the incremental planner (the app's) after
 /// typing one digit at the end of a line in the common macro O9010, in the
 /// first job's thread and in the last job's thread of the main program.
+/// One block-by-block thread of many passes (the four lines `X47.1 /
+/// G32 Z13.0 F2.0 / G00 X58.0 / Z70.0` repeated) planned by the editor's
+/// incremental planner, which snapshots the reading every 256 blocks: the
+/// time must grow with the size, not its square (a snapshot once copied
+/// every pass of the thread being grouped).
+fn one_thread() {
+    println!("one block-by-block thread of many passes, the editor's planner (snapshots every 256 blocks):");
+    for mb in [0.5, 1.0, 2.0, 5.0] {
+        let mut text = String::from("G00 X58.0 Z70.0\n");
+        while (text.len() as f64) < mb * 1e6 {
+            text.push_str("X47.1\nG32 Z13.0 F2.0\nG00 X58.0\nZ70.0\n");
+        }
+        let (ms, passes) = best_ms(3, || {
+            let t = Instant::now();
+            let mut p = screwcut::planner::Planner::new(Settings::new(Dialect::Gsk980tdc));
+            let passes = p.plan(&text).threads.iter().map(|t| t.passes.len()).sum::<usize>();
+            (t.elapsed().as_secs_f64() * 1e3, passes)
+        });
+        println!("  {mb} MB: {passes} passes, first plan best of 3 {ms:.0} ms ({:.1} MB/s)", mb / ms * 1e3);
+        println!("FIG one_thread_{}mb_ms {ms:.1}", (mb * 10.0) as u32);
+    }
+}
+
 fn loops(out_dir: &std::path::Path) {
     let text = programs::fanuc_loops(5000);
     let _ = std::fs::write(out_dir.join("loops-5000.nc"), &text);

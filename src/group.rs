@@ -9,6 +9,7 @@
 //! machine over events: it never reads the interpreter.
 
 use std::ops::Range;
+use std::rc::Rc;
 
 use crate::diagnostic::{Diagnostics, Via};
 use crate::event::{Piece, Seg};
@@ -63,12 +64,73 @@ enum After {
 /// The infeed rapid last seen on one axis: its line and its motion, if it moved.
 type Infeed1 = Option<(u32, Option<usize>)>;
 
+/// The chains of the thread being grouped, in chunks shared between the
+/// reading and its snapshots: a snapshot (every few hundred blocks of an
+/// incremental plan) copies the chunks' pointers, not the chains, and a
+/// push copies at most the last chunk. A thread of 50,000 passes cut block
+/// by block so costs its snapshots little, where copying every chain at
+/// every snapshot grew with the square of the passes.
+#[derive(Clone, Debug, Default)]
+struct Cuts {
+    chunks: Vec<Rc<Vec<Chain>>>,
+    len: usize,
+}
+
+/// Chains per chunk.
+const CHUNK: usize = 64;
+
+impl Cuts {
+    fn push(&mut self, c: Chain) {
+        match self.chunks.last_mut() {
+            Some(last) if last.len() < CHUNK => Rc::make_mut(last).push(c),
+            _ => self.chunks.push(Rc::new(vec![c])),
+        }
+        self.len += 1;
+    }
+
+    fn last(&self) -> Option<&Chain> {
+        self.chunks.last().and_then(|c| c.last())
+    }
+
+    fn last_mut(&mut self) -> Option<&mut Chain> {
+        self.chunks.last_mut().and_then(|c| Rc::make_mut(c).last_mut())
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &Chain> {
+        self.chunks.iter().flat_map(|c| c.iter())
+    }
+
+    /// Every chain, the list emptied.
+    fn take_all(&mut self) -> Vec<Chain> {
+        self.len = 0;
+        let mut out = Vec::new();
+        for c in self.chunks.drain(..) {
+            out.extend(Rc::try_unwrap(c).unwrap_or_else(|shared| (*shared).clone()));
+        }
+        out
+    }
+}
+
+impl PartialEq for Cuts {
+    fn eq(&self, other: &Cuts) -> bool {
+        self.len == other.len && self.iter().eq(other.iter())
+    }
+}
+
+impl FromIterator<Chain> for Cuts {
+    fn from_iter<I: IntoIterator<Item = Chain>>(it: I) -> Cuts {
+        let mut c = Cuts::default();
+        it.into_iter().for_each(|x| c.push(x));
+        c
+    }
+}
+
 /// Grouping state between events.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Grouper {
     /// The continuous cut in progress.
     chain: Option<Chain>,
-    cuts: Vec<Chain>,
+    cuts: Cuts,
     after: After,
     /// The last rapid that moved X (the infeed of a Z thread) and that moved Z (of a face thread).
     infeed: [Infeed1; 2],
@@ -245,7 +307,7 @@ impl Grouper {
 
     /// Closes the thread being grouped, if any, into `out`.
     pub fn close(&mut self, s: &Settings, out: &mut Vec<Thread>, diags: &mut Diagnostics) {
-        let cuts = std::mem::take(&mut self.cuts);
+        let cuts = self.cuts.take_all();
         self.after = After::Nothing;
         if cuts.is_empty() {
             return;
