@@ -111,16 +111,56 @@ pub fn find_back<T>(
     let region = text.get(from..to.max(from)).unwrap_or("");
     for (back, line_text) in split_lines(region).into_iter().rev().enumerate() {
         let line = first.saturating_sub(back as u32);
-        if !may_comment(line_text) {
-            continue;
-        }
-        for c in comments(line_text).iter().rev() {
-            if let Some(found) = f(line, c) {
-                return Some(found);
+        if may_comment(line_text) {
+            for c in comments(line_text).iter().rev() {
+                if let Some(found) = f(line, c) {
+                    return Some(found);
+                }
             }
+        }
+        // A thread in a subprogram is not named by the comments of the program before it.
+        if starts_program(line_text) {
+            break;
         }
     }
     None
+}
+
+/// The first line [`find_back`] reads between `stop` and `first`: `stop`,
+/// or the line that starts the program (or LinuxCNC subroutine) `first` is in.
+pub fn window_start(text: &str, spans: &dyn Fn(u32) -> Span, stop: u32, first: u32) -> u32 {
+    let (from, to) = (spans(stop).start as usize, spans(first).end as usize);
+    let region = text.get(from..to.max(from)).unwrap_or("");
+    let lines = split_lines(region);
+    for (back, line_text) in lines.iter().rev().enumerate() {
+        if starts_program(line_text) {
+            return first.saturating_sub(back as u32);
+        }
+    }
+    stop
+}
+
+/// Whether a line starts a program (`O1000`, `O1000 (NAME)`) or a LinuxCNC
+/// subroutine (`o100 sub`, `o<name> sub`).
+pub fn starts_program(line: &str) -> bool {
+    let t = line.trim_start();
+    let Some(rest) = t.strip_prefix(['O', 'o']) else { return false };
+    let (label, after) = if let Some(r) = rest.strip_prefix('<') {
+        match r.find('>') {
+            Some(k) => (&r[..k], &r[k + 1..]),
+            None => return false,
+        }
+    } else {
+        let n = rest.bytes().take_while(u8::is_ascii_digit).count();
+        (&rest[..n], &rest[n..])
+    };
+    if label.is_empty() {
+        return false;
+    }
+    let after = after.trim_start();
+    after.is_empty()
+        || after.starts_with(['(', ';', '%'])
+        || after.get(..3).is_some_and(|w| w.eq_ignore_ascii_case("sub"))
 }
 
 #[cfg(test)]

@@ -175,11 +175,9 @@ impl Planner {
     /// change, and only until the reading meets the last one again.
     pub fn plan(&mut self, text: &str) -> &Plan {
         let changed_at = first_difference(&self.text, text);
-        let resume = match self.plan.as_ref() {
-            // A checkpoint is good while nothing read before it (lines, jump
-            // targets found) lies at or after the edit.
-            Some(_) => self.checkpoints.iter().rposition(|c| c.offset <= changed_at && c.snap.read_to() <= changed_at),
-            None => None,
+        let (resume, moved) = match self.resume_point(text, changed_at) {
+            Some((ci, moved)) => (Some(ci), moved),
+            None => (None, None),
         };
         let mut r = Reading::new(&self.settings, if resume.is_some() { 0 } else { text.len() });
         let Some(mut lexer) = lexer_for(text, &self.settings, &mut r.diags) else {
@@ -198,9 +196,28 @@ impl Planner {
                 r.asm.threads = old.threads;
                 r.diags = std::mem::take(&mut self.raw_diags);
                 let later = self.checkpoints.split_off(ci + 1);
+                tail = self.tail_of(
+                    text,
+                    changed_at,
+                    later,
+                    &self.checkpoints[ci],
+                    &mut r,
+                    old.units == crate::plan::Units::Inch,
+                );
+                if let Some(s) = moved {
+                    // What was read before the checkpoint reaches past the edit (a
+                    // subprogram written after it): its state and outputs move with the text.
+                    for c in &mut self.checkpoints {
+                        c.snap = c.snap.shifted(0, 0, 0, s);
+                        c.reads = c.reads.shifted(s);
+                    }
+                }
                 let cp = &self.checkpoints[ci];
-                tail = self.tail_of(text, changed_at, later, cp, &mut r, old.units == crate::plan::Units::Inch);
                 r.restore(&cp.snap);
+                if let Some(s) = moved {
+                    r.asm.moves.iter_mut().for_each(|m| m.span = s.span(m.span));
+                    r.diags.shift_spans(s);
+                }
                 kept_threads = cp.snap.threads();
                 lexer.seek(cp.offset, cp.line);
                 self.line_starts.truncate(cp.line as usize - 1);
@@ -269,6 +286,11 @@ impl Planner {
         // their advice is kept; the rest are finished now, every message
         // formatted so it can be kept for the next edit.
         let mut old_advice = old_advice;
+        if let Some(s) = moved {
+            for items in old_advice.iter_mut().take(kept_threads) {
+                items.iter_mut().for_each(|i| i.1 = s.span(i.1));
+            }
+        }
         let advice = &mut self.advice;
         *advice = old_advice.drain(..kept_threads.min(old_advice.len())).collect();
         let join = self.join.as_ref();
@@ -292,6 +314,68 @@ impl Planner {
             all
         });
         self.plan.insert(plan)
+    }
+
+    /// The checkpoint to resume at: the last one before the edit (in the
+    /// order read) such that nothing read up to it touched the edited
+    /// lines, nor looked a label up if the edit changed one, and whose
+    /// threads were finished from text the edit did not touch. When what
+    /// it read reaches past the edit (a subprogram written after it), its
+    /// state and outputs move with the text: `Some(shift)`, allowed only
+    /// when the edit keeps the number of lines.
+    fn resume_point(&self, text: &str, changed_at: usize) -> Option<(usize, Option<Shift>)> {
+        let plan = self.plan.as_ref()?;
+        let old = &self.text;
+        let common = common_suffix(old, text).min(old.len() - changed_at).min(text.len() - changed_at);
+        let old_end = old.len() - common;
+        let (old_mid, new_mid) = (&old[changed_at..old_end], &text[changed_at..text.len() - common]);
+        let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
+            && old_mid.matches('\r').count() == new_mid.matches('\r').count();
+        let shift = Shift { at: old_end, by: text.len() as isize - old.len() as isize };
+        let linuxcnc = self.settings.dialect() == crate::dialect::Dialect::LinuxCnc;
+        let mut labels = None;
+        // The first thread finished from text that holds the edit (it would
+        // have to be finished again), worked out only when a checkpoint needs it.
+        let mut dirty = None;
+        let mut dirty_thread = || *dirty.get_or_insert_with(|| self.first_touched_thread(plan, changed_at, old_end));
+        let mut best = None;
+        for (k, c) in self.checkpoints.iter().enumerate() {
+            let looked_changed = c.reads.looked
+                && *labels.get_or_insert_with(|| labels_changed(old, text, changed_at, common, linuxcnc));
+            if c.reads.touches(changed_at, old_end) || looked_changed {
+                break;
+            }
+            if c.offset > changed_at {
+                continue;
+            }
+            if c.snap.read_to() <= changed_at {
+                best = Some((k, None));
+            } else if lines_kept && dirty_thread().is_none_or(|d| c.snap.threads() <= d) {
+                best = Some((k, Some(shift)));
+            }
+        }
+        best
+    }
+
+    /// The first thread of the last plan finished from text holding the
+    /// edited bytes `changed_at` … `old_end`: the lines its designation and
+    /// crest comments are looked for in, from after the thread before it
+    /// (or the start of its own program) to its first line (see
+    /// `comment::find_back`).
+    fn first_touched_thread(&self, plan: &Plan, changed_at: usize, old_end: usize) -> Option<usize> {
+        let old = &self.text;
+        let edited = lines_of(old, &self.line_starts, changed_at, old_end);
+        let index = crate::span::LineIndex::from_starts(old, self.line_starts.clone());
+        let spans = |line: u32| {
+            let start = index.line_start(line);
+            let end = old[start..].find(['\n', '\r']).map_or(old.len(), |e| start + e);
+            crate::span::Span::new(start, end)
+        };
+        plan.threads.iter().enumerate().position(|(i, t)| {
+            let stop = i.checked_sub(1).map_or(1, |p| (plan.threads[p].end_line + 1).min(t.line));
+            let from = crate::comment::window_start(old, &spans, stop, t.line);
+            from <= edited.1 && t.line >= edited.0
+        })
     }
 
     /// What of the last reading may be kept past the edit: its part after
@@ -487,7 +571,8 @@ fn lines_of(text: &str, starts: &[u32], from: usize, to: usize) -> (u32, u32) {
 impl Join {
     /// The advice of new thread `i` when it is a kept thread of the last
     /// reading (the one before it kept too) whose text — from after the
-    /// thread before it to its last line — the edit did not touch: the last
+    /// thread before it to its first line, where its comments are looked
+    /// for — the edit did not touch: the last
     /// reading's, moved with the edit. `old` holds the last plan's advice
     /// after its first `dropped` threads.
     fn advice_of(&self, threads: &[Thread], i: usize, old: &[Vec<Item>], dropped: usize) -> Option<Vec<Item>> {
@@ -497,7 +582,7 @@ impl Join {
         let j = (i - self.new + self.old).checked_sub(dropped)?;
         let (t, before) = (&threads[i], &threads[i - 1]);
         let from = (before.end_line + 1).min(t.line);
-        if from <= self.lines.1 && t.end_line.max(t.line) >= self.lines.0 {
+        if from <= self.lines.1 && t.line >= self.lines.0 {
             return None;
         }
         let items = old.get(j)?;

@@ -330,6 +330,24 @@ fn an_edit_between_calls_keeps_the_rest() {
         assert_eq!(inc, screwcut::plan(&text, &s), "after {from} → {to}");
         assert_eq!(p.stopped_at().is_some(), kept, "{from} → {to}: stopped at {:?}", p.stopped_at());
     }
+    // Late in the main program: reading resumes near the edit, although what was read
+    // before it (the subprogram, written after it) lies past the edit and moves with it.
+    text = text.replacen("(JOB 110)", "(JOB 110 AND A LONGER COMMENT)", 1);
+    let inc = p.plan(&text).clone();
+    assert_eq!(inc, screwcut::plan(&text, &s));
+    assert!(p.resumed_at() > 500, "resumed at {}", p.resumed_at());
+}
+
+/// The comment that names a thread is looked for back to the start of the
+/// thread's own program: a thread cut in a subprogram is not named by a
+/// comment of the main program before the call.
+#[test]
+fn a_subprograms_thread_is_named_in_its_own_program() {
+    let sub = "O1000\n#1=#1+1\nG00 X[47.7-0.6*#1]\nG32 Z13. F2.\nG00 X58.\nZ70.\nM99\n";
+    let named_in_main = format!("O0001\n(M48x2-6g)\nG97 S300 M03\nG00 X58. Z70.\nM98 P1000 L3\nM30\n{sub}");
+    assert!(fanuc(&named_in_main).threads[0].shop.gauge.is_none());
+    let named_in_sub = named_in_main.replace("(M48x2-6g)\n", "").replace("O1000\n", "O1000 (M48x2-6g)\n");
+    assert_eq!(fanuc(&named_in_sub).threads[0].shop.gauge.as_ref().map(|g| g.designation.as_str()), Some("M48x2-6g"));
 }
 
 /// MOD takes the remainder of whole numbers; a divisor that rounds to 0 is
