@@ -205,6 +205,26 @@ try {
   const zh = await page.locator('#check-verdict').textContent();
   check('in Chinese: the verdict and the assumed tool', zh.includes('合格') && zh.includes('按全牙型刀片假定') && zh.includes('ΔX'), zh);
   await page.screenshot({ path: path.join(shots, 'newuser-gauge-zh-1440.png') });
+  // The Parameters panel in Chinese: no choice is cut short.
+  await page.click('#settings-toggle');
+  const cut = await page.evaluate(() =>
+    [...document.querySelectorAll('#settings-form select')]
+      .filter((s) => {
+        // The chosen entry's text in the select's own font, plus room for its arrow.
+        const probe = document.createElement('span');
+        probe.style.cssText = 'position:absolute;visibility:hidden;white-space:nowrap';
+        probe.style.font = getComputedStyle(s).font;
+        probe.textContent = s.selectedOptions[0]?.textContent || '';
+        document.body.appendChild(probe);
+        const w = probe.getBoundingClientRect().width;
+        probe.remove();
+        return w + 16 > s.getBoundingClientRect().width;
+      })
+      .map((s) => s.dataset.name),
+  );
+  check('8. in Chinese no parameter choice is cut short', cut.length === 0, JSON.stringify(cut));
+  await page.locator('#settings').screenshot({ path: path.join(shots, 'newuser-settings-zh.png') });
+  await page.click('#settings-toggle');
   await page.setViewportSize({ width: 390, height: 844 });
   await settle();
   await page.screenshot({ path: path.join(shots, 'newuser-zh-390.png'), fullPage: true });
