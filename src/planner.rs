@@ -211,6 +211,8 @@ impl Planner {
                     // What was read before the checkpoint reaches past the edit (a
                     // subprogram written after it): its state and outputs move with the text.
                     for c in &mut self.checkpoints {
+                        // A checkpoint taken inside a subprogram written after the edit moves too.
+                        c.offset = s.pos(c.offset);
                         c.snap = c.snap.shifted(0, 0, 0, s);
                         c.reads = c.reads.shifted(s);
                     }
