@@ -592,3 +592,29 @@ fn expand_writes_the_executed_passes() {
         }
     }
 }
+
+/// A checkpoint taken inside a subprogram written after the main program
+/// moves with an edit of the main program: a later edit inside the
+/// subprogram resumes there, at the right byte.
+#[test]
+fn a_checkpoint_in_a_later_subprogram_moves_with_an_edit() {
+    let s = Settings::new(Dialect::Fanuc0i);
+    let mut text = String::from("O0001\nG97 S300 M03\nM98 P1000\n");
+    for k in 0..400 {
+        text.push_str(&format!("(MAIN {k})\nG00 X5{}. Z70.\n", k % 8));
+    }
+    text.push_str("M30\nO1000\n");
+    for k in 0..400 {
+        text.push_str(&format!("G00 X4{}. Z70.\n", k % 8));
+    }
+    text.push_str("G00 X47.1\nG32 Z13. F2.\nG00 X58.\nZ70.\nM99\n");
+    let mut p = Planner::new(s.clone());
+    p.plan(&text);
+    // A longer comment late in the main program: reading resumes near it.
+    text = text.replacen("(MAIN 390)", "(MAIN 390, NOW LONGER)", 1);
+    assert_eq!(p.plan(&text).clone(), screwcut::plan(&text, &s));
+    assert!(p.resumed_at() > 600, "resumed at {}", p.resumed_at());
+    // An edit late in the subprogram resumes at the checkpoint inside it.
+    text = text.replacen("G00 X47.1\n", "G00 X46.9\n", 1);
+    assert_eq!(p.plan(&text).clone(), screwcut::plan(&text, &s));
+}
