@@ -13,11 +13,12 @@
 
 use crate::args;
 use crate::diagnostic::Diagnostics;
+use crate::geom::Frame;
 use crate::message as msg;
 use crate::motion::Move;
 use crate::num::{close, round_out};
 use crate::span::Span;
-use crate::thread::{Axis, Pass, Thread};
+use crate::thread::{Pass, Thread};
 
 /// One pass as a helix: its thread, lead and phase (turns, 0 ≤ φ < 1).
 struct Helix<'a> {
@@ -54,40 +55,29 @@ fn same_surface(a: &Thread, b: &Thread, max_infeed: f64) -> bool {
     if a.long_axis != b.long_axis || a.units != b.units || a.passes.is_empty() || b.passes.is_empty() {
         return false;
     }
-    let (long, short) = axes(a.long_axis);
+    let f = Frame::along(a.long_axis);
     let range = |t: &Thread| {
         let p = &t.passes[0];
-        let (x, y) = (long(p.from), long(p.to));
+        let (x, y) = (f.long(p.from), f.long(p.to));
         (x.min(y), x.max(y))
     };
     let ((a0, a1), (b0, b1)) = (range(a), range(b));
     let overlap = a1.min(b1) - a0.max(b0);
     let shorter = (a1 - a0).min(b1 - b0);
-    let across = (short(a.passes[0].from) - short(b.passes[0].from)).abs();
+    let across = (f.short(a.passes[0].from) - f.short(b.passes[0].from)).abs();
     overlap >= 0.5 * shorter && across <= max_infeed * a.lead.max(b.lead)
-}
-
-/// A coordinate of a point.
-type Coord = fn(crate::motion::Point) -> f64;
-
-/// The coordinate along the thread and across it (radius) for `long`.
-fn axes(long: Axis) -> (Coord, Coord) {
-    match long {
-        Axis::Z => (|p| p.z, |p| p.r()),
-        Axis::X => (|p| p.r(), |p| p.z),
-    }
 }
 
 /// Warns about the passes of one surface that cut a minority helix.
 fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diags: &mut Diagnostics) {
-    let (long, _) = axes(threads[0].long_axis);
+    let f = Frame::along(threads[0].long_axis);
     let helices: Vec<Helix> = threads
         .iter()
         .flat_map(|t| {
             t.passes.iter().map(move |p| {
-                let start = long(p.from);
+                let start = f.long(p.from);
                 // Moving the other way along the axis turns the phase the other way.
-                let sense = if long(p.to) < start { 1.0 } else { -1.0 };
+                let sense = if f.long(p.to) < start { 1.0 } else { -1.0 };
                 // A cycle's flank infeed moves each pass along the axis on purpose (its shift).
                 let phase = (p.angle / 360.0 + sense * (start - p.shift) / t.lead).rem_euclid(1.0);
                 Helix { pass: p, lead: t.lead, phase, start }
