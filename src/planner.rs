@@ -32,7 +32,7 @@ use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, l
 use crate::settings::Settings;
 use crate::span::Shift;
 use crate::thread::Thread;
-use edit::{common_suffix, first_difference, labels_changed, lines_of};
+use edit::Edit;
 
 /// Blocks between two snapshots.
 pub const CHECKPOINT_EVERY: usize = 256;
@@ -177,8 +177,8 @@ impl Planner {
     /// Plans `text`, reading only from the last checkpoint before the first
     /// change, and only until the reading meets the last one again.
     pub fn plan(&mut self, text: &str) -> &Plan {
-        let changed_at = first_difference(&self.text, text);
-        let (resume, moved) = match self.resume_point(text, changed_at) {
+        let edit = Edit::of(&self.text, text);
+        let (resume, moved) = match self.resume_point(text, &edit) {
             Some((ci, moved)) => (Some(ci), moved),
             None => (None, None),
         };
@@ -201,7 +201,7 @@ impl Planner {
                 let later = self.checkpoints.split_off(ci + 1);
                 tail = self.tail_of(
                     text,
-                    changed_at,
+                    &edit,
                     later,
                     &self.checkpoints[ci],
                     &mut r,
@@ -240,7 +240,7 @@ impl Planner {
                     r.asm.threads = old.threads;
                     r.diags = std::mem::take(&mut self.raw_diags);
                     let later = std::mem::take(&mut self.checkpoints);
-                    tail = self.tail_of(text, changed_at, later, &top, &mut r, old.units == crate::plan::Units::Inch);
+                    tail = self.tail_of(text, &edit, later, &top, &mut r, old.units == crate::plan::Units::Inch);
                     r.restore(&top.snap);
                 }
                 self.checkpoints.clear();
@@ -328,26 +328,18 @@ impl Planner {
     /// it read reaches past the edit (a subprogram written after it), its
     /// state and outputs move with the text: `Some(shift)`, allowed only
     /// when the edit keeps the number of lines.
-    fn resume_point(&self, text: &str, changed_at: usize) -> Option<(usize, Option<Shift>)> {
+    fn resume_point(&self, text: &str, edit: &Edit) -> Option<(usize, Option<Shift>)> {
         let plan = self.plan.as_ref()?;
-        let old = &self.text;
-        let common = common_suffix(old, text).min(old.len() - changed_at).min(text.len() - changed_at);
-        let old_end = old.len() - common;
-        let (old_mid, new_mid) = (&old[changed_at..old_end], &text[changed_at..text.len() - common]);
-        let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
-            && old_mid.matches('\r').count() == new_mid.matches('\r').count();
-        let shift = Shift { at: old_end, by: text.len() as isize - old.len() as isize };
+        let (old, changed_at) = (&self.text, edit.changed_at);
         let linuxcnc = self.settings.dialect() == crate::dialect::Dialect::LinuxCnc;
-        let mut labels = None;
         // The first thread finished from text that holds the edit (it would
         // have to be finished again), worked out only when a checkpoint needs it.
         let mut dirty = None;
-        let mut dirty_thread = || *dirty.get_or_insert_with(|| self.first_touched_thread(plan, changed_at, old_end));
+        let mut dirty_thread = || *dirty.get_or_insert_with(|| self.first_touched_thread(plan, edit));
         let mut best = None;
         for (k, c) in self.checkpoints.iter().enumerate() {
-            let looked_changed = c.reads.looked
-                && *labels.get_or_insert_with(|| labels_changed(old, text, changed_at, common, linuxcnc));
-            if c.reads.touches(changed_at, old_end) || looked_changed {
+            let looked_changed = c.reads.looked && edit.labels_changed(old, text, linuxcnc);
+            if c.reads.touches(changed_at, edit.old_end) || looked_changed {
                 break;
             }
             if c.offset > changed_at {
@@ -355,21 +347,21 @@ impl Planner {
             }
             if c.snap.read_to() <= changed_at {
                 best = Some((k, None));
-            } else if lines_kept && dirty_thread().is_none_or(|d| c.snap.threads() <= d) {
-                best = Some((k, Some(shift)));
+            } else if edit.lines_kept && dirty_thread().is_none_or(|d| c.snap.threads() <= d) {
+                best = Some((k, Some(edit.shift)));
             }
         }
         best
     }
 
     /// The first thread of the last plan finished from text holding the
-    /// edited bytes `changed_at` … `old_end`: the lines its designation and
+    /// edited bytes: the lines its designation and
     /// crest comments are looked for in, from after the thread before it
     /// (or the start of its own program) to its first line (see
     /// `comment::find_back`).
-    fn first_touched_thread(&self, plan: &Plan, changed_at: usize, old_end: usize) -> Option<usize> {
+    fn first_touched_thread(&self, plan: &Plan, edit: &Edit) -> Option<usize> {
         let old = &self.text;
-        let edited = lines_of(old, &self.line_starts, changed_at, old_end);
+        let edited = edit.lines(old, &self.line_starts);
         let index = crate::span::LineIndex::from_starts(old, self.line_starts.clone());
         let spans = |line: u32| {
             let start = index.line_start(line);
@@ -389,26 +381,21 @@ impl Planner {
     fn tail_of(
         &self,
         text: &str,
-        changed_at: usize,
+        edit: &Edit,
         later: Vec<Checkpoint>,
         cp: &Checkpoint,
         r: &mut Reading,
         inch: bool,
     ) -> Option<Tail> {
         let old = &self.text;
-        let common = common_suffix(old, text).min(old.len() - changed_at).min(text.len() - changed_at);
-        let (old_mid, new_mid) = (&old[changed_at..old.len() - common], &text[changed_at..text.len() - common]);
-        let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
-            && old_mid.matches('\r').count() == new_mid.matches('\r').count();
-        if !lines_kept || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
+        if !edit.lines_kept || later.is_empty() || r.diags.dropped() > 0 || r.asm.stopped() {
             return None;
         }
-        let edited = (changed_at, old.len() - common);
         let linuxcnc = self.settings.dialect() == crate::dialect::Dialect::LinuxCnc;
-        let labels = || labels_changed(old, text, changed_at, common, linuxcnc);
-        let joinable_from = joinable_from(&later, &self.last_reads, edited, labels)?;
+        let labels = || edit.labels_changed(old, text, linuxcnc);
+        let joinable_from = joinable_from(&later, &self.last_reads, (edit.changed_at, edit.old_end), labels)?;
         let at = (cp.snap.moves(), cp.snap.threads(), cp.snap.diagnostics());
-        let shift = Shift { at: old.len() - common, by: text.len() as isize - old.len() as isize };
+        let shift = edit.shift;
         let places = later[joinable_from..].iter().map(|c| shift.pos(c.offset)).collect();
         Some(Tail {
             checkpoints: later,
@@ -417,8 +404,8 @@ impl Planner {
             diags: r.diags.split_off(at.2),
             at,
             line_starts: self.line_starts.clone(),
-            common_from: text.len() - common,
-            edited_lines: lines_of(old, &self.line_starts, changed_at, old.len() - common),
+            common_from: edit.new_end,
+            edited_lines: edit.lines(old, &self.line_starts),
             shift,
             joinable_from,
             places,

@@ -2,10 +2,57 @@
 //! differ, which lines the edit touched, and whether it changed a label a
 //! jump or call looks up.
 
+use std::cell::OnceCell;
+
+use crate::span::Shift;
+
+/// One edit, worked out once per plan: the old bytes `changed_at` …
+/// `old_end` became the new ones `changed_at` … `new_end`.
+pub(super) struct Edit {
+    /// The first byte that differs.
+    pub changed_at: usize,
+    /// Where the bytes common to both ends begin, in the old text.
+    pub old_end: usize,
+    /// The same in the new text.
+    pub new_end: usize,
+    /// Whether the edit kept the number of lines.
+    pub lines_kept: bool,
+    /// How it moved the old positions.
+    pub shift: Shift,
+    /// Whether it changed a label, asked at most once.
+    labels: OnceCell<bool>,
+    /// The old lines it touched, asked at most once.
+    lines: OnceCell<(u32, u32)>,
+}
+
+impl Edit {
+    /// The edit that makes `old` into `new`.
+    pub fn of(old: &str, new: &str) -> Edit {
+        let changed_at = first_difference(old, new);
+        let common = common_suffix(old, new).min(old.len() - changed_at).min(new.len() - changed_at);
+        let (old_end, new_end) = (old.len() - common, new.len() - common);
+        let (old_mid, new_mid) = (&old[changed_at..old_end], &new[changed_at..new_end]);
+        let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()
+            && old_mid.matches('\r').count() == new_mid.matches('\r').count();
+        let shift = Shift { at: old_end, by: new.len() as isize - old.len() as isize };
+        Edit { changed_at, old_end, new_end, lines_kept, shift, labels: OnceCell::new(), lines: OnceCell::new() }
+    }
+
+    /// Whether the edit changed a label a jump or call looks up (see [`labels_changed`]).
+    pub fn labels_changed(&self, old: &str, new: &str, linuxcnc: bool) -> bool {
+        *self.labels.get_or_init(|| labels_changed(old, new, self.changed_at, old.len() - self.old_end, linuxcnc))
+    }
+
+    /// The old lines (first, last) the edit touched (see [`lines_of`]).
+    pub fn lines(&self, old: &str, starts: &[u32]) -> (u32, u32) {
+        *self.lines.get_or_init(|| lines_of(old, starts, self.changed_at, self.old_end))
+    }
+}
+
 /// Whether an edit changed a label a jump or call looks up: the program,
 /// sequence, loop-end and o-word lines among the edited lines, old and new
 /// (`linuxcnc` reads `o` lines as o-words).
-pub(super) fn labels_changed(old: &str, new: &str, changed_at: usize, common: usize, linuxcnc: bool) -> bool {
+fn labels_changed(old: &str, new: &str, changed_at: usize, common: usize, linuxcnc: bool) -> bool {
     let labels = |t: &str| {
         let end = t.len() - common;
         let from = t[..changed_at].rfind(['\n', '\r']).map_or(0, |i| i + 1);
@@ -18,7 +65,7 @@ pub(super) fn labels_changed(old: &str, new: &str, changed_at: usize, common: us
 /// The 1-based lines (first, last) holding bytes `from` … `to` of `text`,
 /// whose line starts were recorded in `starts` (all of them, or those up to
 /// where a reading that jumped stopped recording: the rest is scanned).
-pub(super) fn lines_of(text: &str, starts: &[u32], from: usize, to: usize) -> (u32, u32) {
+fn lines_of(text: &str, starts: &[u32], from: usize, to: usize) -> (u32, u32) {
     let to = to.max(from);
     if starts.last().is_some_and(|&s| s as usize > to) {
         let line = |p: usize| starts.partition_point(|&s| s as usize <= p).max(1) as u32;
@@ -29,7 +76,7 @@ pub(super) fn lines_of(text: &str, starts: &[u32], from: usize, to: usize) -> (u
 }
 
 /// How many bytes `a` and `b` have in common at their ends.
-pub(super) fn common_suffix(a: &str, b: &str) -> usize {
+fn common_suffix(a: &str, b: &str) -> usize {
     a.bytes().rev().zip(b.bytes().rev()).take_while(|(x, y)| x == y).count()
 }
 

@@ -1,5 +1,6 @@
 //! Tests of the incremental planner.
 
+use super::edit::first_difference;
 use super::*;
 use crate::dialect::Dialect;
 
