@@ -28,8 +28,16 @@ pub(super) struct Edit {
 impl Edit {
     /// The edit that makes `old` into `new`.
     pub fn of(old: &str, new: &str) -> Edit {
-        let changed_at = first_difference(old, new);
-        let common = common_suffix(old, new).min(old.len() - changed_at).min(new.len() - changed_at);
+        // Byte-wise, the difference can fall inside a character both texts
+        // begin alike: the edit is taken from, and to, whole characters.
+        let mut changed_at = first_difference(old, new);
+        while !(old.is_char_boundary(changed_at) && new.is_char_boundary(changed_at)) {
+            changed_at -= 1;
+        }
+        let mut common = common_suffix(old, new).min(old.len() - changed_at).min(new.len() - changed_at);
+        while !(old.is_char_boundary(old.len() - common) && new.is_char_boundary(new.len() - common)) {
+            common -= 1;
+        }
         let (old_end, new_end) = (old.len() - common, new.len() - common);
         let (old_mid, new_mid) = (&old[changed_at..old_end], &new[changed_at..new_end]);
         let lines_kept = old_mid.matches('\n').count() == new_mid.matches('\n').count()

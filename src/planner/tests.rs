@@ -91,3 +91,22 @@ fn a_repeat_open_in_a_kept_checkpoint_moves_with_the_edit() {
     assert_eq!(inc.moves.len(), full.moves.len());
     assert!(inc == full);
 }
+
+/// Edits inside multi-byte characters (a Chinese comment changed to another
+/// character that begins with the same bytes, é to è), also right after a
+/// settings change: planned, equal to a full plan, no panic.
+#[test]
+fn an_edit_inside_a_multi_byte_character() {
+    let s = Settings::new(Dialect::Gsk980tdc);
+    let pass = "G00 X58 Z70 (第1次进刀)\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\n";
+    let text = format!("(é)\n{}", pass.repeat(120));
+    let mut p = Planner::new(s.clone());
+    p.plan(&text);
+    for (from, to) in [("第1次", "第2次"), ("(é)", "(è)"), ("进刀", "退刀")] {
+        let edited = text.replacen(from, to, 1);
+        assert_eq!(p.plan(&edited).clone(), crate::plan(&edited, &s), "{from} → {to}");
+        p.set_settings(Settings::new(Dialect::Fanuc0i));
+        p.set_settings(s.clone());
+        assert_eq!(p.plan(&text).clone(), crate::plan(&text, &s));
+    }
+}
