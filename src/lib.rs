@@ -28,6 +28,7 @@ pub mod controller;
 pub mod cycle;
 pub mod diagnostic;
 pub mod diagram;
+pub mod draw;
 pub mod dialect;
 pub mod event;
 pub mod exec;

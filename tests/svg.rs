@@ -3,16 +3,19 @@
 //! roxmltree) whose viewBox is `0 0 width height`, with the shapes clipped
 //! to it and every label inside it, none overlapping another (boxes from
 //! the writer's own width estimate), in English and in Chinese, at the
-//! default size and at 300 × 200. A given layout (the app's export) puts
-//! each label exactly where it is given; a layout that does not fit the
-//! scene is refused.
+//! default size and at 300 × 200. At a given transform (a view's zoom and
+//! pan) the shapes are where the transform puts them and the labels are
+//! placed inside the page; a stale view's pens are grey, a mark's halos lie
+//! beneath the items.
 
 mod common;
 use common::plan_with;
 use screwcut::Dialect;
 use screwcut::diagram::scene::{Anchor, Item, Label, Scene, Shape, Style, ViewKind};
 use screwcut::diagram::{side, starts, tooth};
-use screwcut::svg::{LABEL_KEYS, Layout, Options, Placed, Transform, english, measure, svg, templates};
+use screwcut::draw::{LABEL_KEYS, Mark, Transform, View, display, english, label_text, measure};
+use screwcut::message::Lang;
+use screwcut::svg::{svg, write};
 
 /// Height of a label's box (the app's `LINE`).
 const LINE: f64 = 15.0;
@@ -145,7 +148,6 @@ fn scenes(src: &str, d: Dialect) -> Vec<(&'static str, Scene)> {
 
 #[test]
 fn every_view_has_every_label_inside_and_none_overlapping() {
-    let zh = templates("zh").unwrap();
     let mut bad = Vec::new();
     for &(name, src, d) in PROGRAMS {
         for (view, scene) in scenes(src, d) {
@@ -158,9 +160,9 @@ fn every_view_has_every_label_inside_and_none_overlapping() {
                     );
                 }
             }
-            for (lang, labels) in [("en", Vec::new()), ("zh", zh.clone())] {
+            for (lang, l) in [("en", Lang::En), ("zh", Lang::Zh)] {
                 for (w, h, stretch) in [(800.0, 500.0, false), (800.0, 500.0, true), (300.0, 200.0, false)] {
-                    let o = Options { width: w, height: h, stretch, labels: labels.clone(), ..Options::default() };
+                    let o = View { width: w, height: h, stretch, lang: l, ..View::default() };
                     let c = check(&svg(&scene, &o));
                     assert_eq!(c.size, [w, h]);
                     assert!(c.paths > 2, "{name} {view}");
@@ -198,10 +200,10 @@ fn small_scene(note: &str) -> Scene {
 }
 
 #[test]
-fn labels_fit_in_the_page_wrapped_and_take_the_callers_words() {
+fn labels_fit_in_the_page_wrapped_and_in_the_views_language() {
     let long = "a label far longer than the drawing is wide, at its right end, and longer still";
     let scene = small_scene(long);
-    let o = Options { width: 300.0, height: 200.0, ..Options::default() };
+    let o = View { width: 300.0, height: 200.0, ..View::default() };
     let c = check(&svg(&scene, &o));
     assert_eq!(c.size, [300.0, 200.0]);
     assert!(faults(&c).is_empty(), "{:?}", faults(&c));
@@ -210,7 +212,7 @@ fn labels_fit_in_the_page_wrapped_and_take_the_callers_words() {
     let lines: Vec<&str> = c.texts.iter().filter(|t| t.s != "Ph 2").map(|t| t.s.as_str()).collect();
     assert!(lines.len() >= 2, "{lines:?}");
     assert_eq!(lines.join(" "), long);
-    let zh = Options { labels: vec![("lead".into(), "导程 {}".into())], ..o };
+    let zh = View { lang: Lang::Zh, ..o };
     let doc = svg(&scene, &zh);
     check(&doc);
     assert!(doc.contains(">导程 2</text>"));
@@ -225,14 +227,14 @@ fn labels_fit_in_the_page_wrapped_and_take_the_callers_words() {
     };
     s2.push(Item::new(t, Style::Note), true);
     s2.finish();
-    let texts: Vec<String> = check(&svg(&s2, &Options::default())).texts.into_iter().map(|t| t.s).collect();
+    let texts: Vec<String> = check(&svg(&s2, &View::default())).texts.into_iter().map(|t| t.s).collect();
     assert_eq!(texts, ["a < b & \"c\""]);
 }
 
 #[test]
 fn an_empty_plan_still_draws() {
     let plan = plan_with("", Dialect::Gsk980tdc, &[]);
-    check(&svg(&side(&plan), &Options::default()));
+    check(&svg(&side(&plan), &View::default()));
     assert!(tooth(&plan, 0, 1).is_none());
 }
 
@@ -244,7 +246,7 @@ fn a_far_return_is_clipped_not_fitted() {
     let plan = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
     let scene = side(&plan);
     assert!(scene.bounds.x1 > scene.focus.x1 + 20.0, "the far return lies outside the focus");
-    let doc = svg(&scene, &Options::default());
+    let doc = svg(&scene, &View::default());
     let c = check(&doc);
     assert_eq!(c.size, [800.0, 500.0]);
     // The cuts (blue) span most of the page's width.
@@ -260,88 +262,61 @@ fn a_far_return_is_clipped_not_fitted() {
 }
 
 #[test]
-fn a_given_layout_draws_at_its_transform_with_its_labels() {
+fn a_given_transform_draws_there_and_places_the_labels_inside() {
     let plan = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
     let scene = side(&plan);
-    let dim = scene.items.iter().position(|i| i.style == Style::Diameter).expect("a diameter");
     let xf = Transform { sx: 10.0, sy: 10.0, tx: -50.0, ty: 400.0 };
-    let major = Placed {
-        item: dim,
-        lines: vec!["大径 Ø48".into()],
-        align: Anchor::Middle,
-        bounds: [100.0, 20.0, 115.0, 80.0],
-        angle: -90.0,
-        off: -30.0,
-        len: 40.0,
-        lead: None,
-    };
-    let layout = Layout { transform: xf, labels: Some(vec![major.clone()]) };
-    let o = Options { width: 640.0, height: 360.0, layout: Some(layout), ..Options::default() };
-    o.validate(&scene).expect("a layout of the scene");
-    let doc = svg(&scene, &o);
+    let o = View { width: 640.0, height: 360.0, transform: Some(xf), ..View::default() };
+    o.validate().expect("a view");
+    let list = display(&scene, &o);
+    assert_eq!(list.transform, xf);
+    let doc = write(&list);
+    assert_eq!(doc, svg(&scene, &o), "the writer writes the display list");
     let c = check(&doc);
     assert_eq!(c.size, [640.0, 360.0]);
-    assert_eq!(c.texts.len(), 1, "only the labels given: {:?}", c.texts);
-    assert!(doc.contains("<text x=\"107.5\" y=\"50\" text-anchor=\"middle\" dominant-baseline=\"central\" transform=\"rotate(-90 107.5 50)\""), "{doc}");
     // The cuts at the transform: Z70 → x 650, Z13 → x 80; radius 23.55 → y 164.5.
     assert!(doc.contains("M650 164.5L80 164.5"), "{doc}");
-    // Wrong layouts are refused, and the writer skips what it refuses.
-    let bad = |p: Placed| Options { layout: Some(Layout { transform: xf, labels: Some(vec![p]) }), ..o.clone() };
-    let cut = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
-    assert!(bad(Placed { item: cut, ..major.clone() }).validate(&scene).unwrap_err().contains("neither"));
-    assert!(bad(Placed { item: 1 << 30, ..major.clone() }).validate(&scene).unwrap_err().contains("not in the scene"));
-    assert!(bad(Placed { angle: f64::NAN, ..major.clone() }).validate(&scene).is_err());
-    assert!(bad(Placed { lines: vec![], ..major.clone() }).validate(&scene).is_err());
-    assert_eq!(check(&svg(&scene, &bad(Placed { item: cut, ..major.clone() }))).texts.len(), 0);
-    let twice =
-        Options { layout: Some(Layout { transform: xf, labels: Some(vec![major.clone(), major]) }), ..o.clone() };
-    assert!(twice.validate(&scene).unwrap_err().contains("twice"));
-    let flat = Options { layout: Some(Layout { transform: Transform { sy: 0.0, ..xf }, labels: None }), ..o.clone() };
-    assert!(flat.validate(&scene).is_err());
-    assert!(Options { width: f64::INFINITY, ..Options::default() }.validate(&scene).is_err());
-    // A transform without labels: the writer places them at it, inside the page.
-    let own = Options { layout: Some(Layout { transform: xf, labels: None }), ..o };
-    let c = check(&svg(&scene, &own));
     assert!(faults(&c).is_empty() && !c.texts.is_empty(), "{:?}", c.texts);
+    assert_eq!(c.texts.len(), list.labels.iter().map(|l| l.lines.len()).sum::<usize>());
+    // Views that cannot be drawn as given are refused; drawn anyway, they fall back to a fit.
+    assert!(View { transform: Some(Transform { sy: 0.0, ..xf }), ..o.clone() }.validate().is_err());
+    assert!(View { width: f64::INFINITY, ..View::default() }.validate().is_err());
+    let flat = display(&scene, &View { transform: Some(Transform { sy: 0.0, ..xf }), ..o.clone() });
+    assert!(flat.transform.sy > 0.0);
 }
 
 #[test]
-fn a_layout_reads_from_the_apps_json() {
-    let json = r#"{"transform":{"sx":2,"sy":3,"tx":4,"ty":5},
-        "labels":[{"item":7,"key":"lead","text":"Ph 2","lines":["Ph 2"],"align":"middle","box":[1,2,3,4],"angle":0,"must":true,"off":14,"len":0,"lead":null},
-                  {"item":9,"lines":["a","b"],"align":"start","box":[1,2,30,40],"angle":0}]}"#;
-    let l: Layout = serde_json::from_str(json).expect("a layout");
-    assert_eq!(l.transform, Transform { sx: 2.0, sy: 3.0, tx: 4.0, ty: 5.0 });
-    let labels = l.labels.unwrap();
-    assert_eq!((labels[0].item, labels[0].off, labels[0].lead), (7, 14.0, None));
-    assert_eq!((labels[1].align, labels[1].off, labels[1].len), (Anchor::Start, 0.0, 0.0));
-}
-
-/// The templates of `const NAME = {…}` in `www/src/i18n.js` (`  key: 'template',` lines).
-fn app_table(name: &str) -> Vec<(String, String)> {
-    let src = include_str!("../www/src/i18n.js");
-    let start = src.find(&format!("const {name} = {{")).unwrap_or_else(|| panic!("{name} in i18n.js"));
-    let body = &src[start..];
-    let body = &body[..body.find("\n};").expect("the table's end")];
-    body.lines()
-        .filter_map(|l| {
-            let (k, v) = l.trim().split_once(": '")?;
-            Some((k.to_string(), v.strip_suffix("',")?.replace("\\'", "'")))
-        })
-        .collect()
+fn a_stale_view_is_grey_and_a_mark_lies_beneath() {
+    let plan = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
+    let scene = side(&plan);
+    let o = View { width: 640.0, height: 360.0, ..View::default() };
+    let fresh = svg(&scene, &o);
+    assert!(fresh.contains("stroke=\"#2563eb\""), "the cut pen");
+    // Stale: the cut pen through a grayscale filter (0.2126·37 + 0.7152·99 + 0.0722·235 = 95.6), faded.
+    let stale = svg(&scene, &View { stale: true, ..o.clone() });
+    assert!(!stale.contains("#2563eb") && stale.contains("stroke=\"rgb(96,96,96)\""), "{stale}");
+    assert!(stale.contains("opacity=\"0.35\""));
+    // A mark on pass 3 of thread 1: halos in the highlight's colour, before (beneath) the cuts.
+    let items = screwcut::draw::pick::items_of_pass(&scene, 0, 2);
+    assert!(!items.is_empty());
+    let marked = svg(&scene, &View { mark: Mark { items, light: false }, ..o.clone() });
+    let halo = marked.find("stroke=\"#f59e0b\"").expect("a halo");
+    assert!(halo < marked.find("stroke=\"#2563eb\"").unwrap(), "the halo is painted first");
+    // A stale drawing shows no mark.
+    let items = screwcut::draw::pick::items_of_pass(&scene, 0, 2);
+    assert!(!svg(&scene, &View { stale: true, mark: Mark { items, light: false }, ..o }).contains("#f59e0b"));
 }
 
 #[test]
-fn the_label_templates_are_the_apps() {
-    for (lang, name) in [("en", "EN"), ("zh", "ZH")] {
-        let app = app_table(name);
-        let ours = templates(lang).unwrap();
-        assert_eq!(ours.len(), LABEL_KEYS.len(), "{lang}");
-        for (k, t) in ours {
-            let theirs = app.iter().find(|(a, _)| *a == k).map(|(_, v)| v.as_str());
-            assert_eq!(theirs, Some(t.as_str()), "{lang} {k}");
-        }
-    }
-    assert!(templates("fr").is_none());
+fn label_words_in_both_languages() {
     assert_eq!(english("lead"), Some("Ph {}"));
+    assert_eq!(label_text(Lang::En, "dia_major", "48"), "major Ø48");
+    assert_eq!(label_text(Lang::Zh, "dia_major", "48"), "大径 Ø48");
+    // δ1 reads the same in both; a bare value is itself; an unknown key says itself.
+    assert_eq!(label_text(Lang::Zh, "delta1", "3.2"), "δ1 3.2");
+    assert_eq!(label_text(Lang::Zh, "", "X47.1"), "X47.1");
+    assert_eq!(label_text(Lang::En, "nonsense", "1"), "nonsense 1");
+    for k in LABEL_KEYS {
+        assert!(english(k).is_some(), "{k}");
+    }
 }

@@ -100,12 +100,11 @@ enum Command {
         /// Language of the labels: en or zh.
         #[arg(long, default_value = "en", value_parser = ["en", "zh"])]
         lang: String,
-        /// A JSON file of the view to draw: `{"transform": {"sx", "sy", "tx",
-        /// "ty"}, "labels": [...]}` (what the app's SVG export passes: its
-        /// view's transform and labels as placed); without it, the drawing
-        /// and its labels are fitted to the page.
-        #[arg(long, value_name = "FILE")]
-        layout: Option<String>,
+        /// The view's world → page transform `SX,SY,TX,TY` (page x = TX + SX·z,
+        /// page y = TY − SY·r; a view's zoom and pan as the app keeps them);
+        /// without it, the drawing and its labels are fitted to the page.
+        #[arg(long, value_name = "SX,SY,TX,TY", value_parser = parse_transform)]
+        transform: Option<screwcut::draw::Transform>,
     },
 }
 
@@ -210,10 +209,12 @@ fn parse_dialect(s: &str) -> Result<Dialect, String> {
     Dialect::parse(s).ok_or_else(|| format!("unknown dialect '{s}' ({})", Dialect::names()))
 }
 
-/// The view layout of `screwcut svg --layout` from JSON file `path`.
-fn read_layout(path: &str) -> Result<screwcut::svg::Layout, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
-    serde_json::from_str(&text).map_err(|e| format!("{path}: not a layout: {e}"))
+/// The transform of `screwcut svg --transform`: four numbers, positive scales.
+fn parse_transform(s: &str) -> Result<screwcut::draw::Transform, String> {
+    let v: Vec<f64> = s.split(',').map(|x| x.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|e| format!("'{s}': {e}"))?;
+    let [sx, sy, tx, ty] = v[..] else { return Err(format!("'{s}' is not four numbers SX,SY,TX,TY")) };
+    let t = screwcut::draw::Transform { sx, sy, tx, ty };
+    if t.is_valid() { Ok(t) } else { Err(format!("'{s}': the scales must be positive and every number finite")) }
 }
 
 fn main() -> ExitCode {
@@ -222,7 +223,7 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json, lang } => plan(&file, dialect, &set, json, lang),
         Command::Expand { file, dialect, to, set, lang } => expand(&file, dialect, to.unwrap_or(dialect), &set, lang),
         Command::Generate(a) => generate(a),
-        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, layout } => {
+        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, transform } => {
             let (settings, text) = match input(&file, dialect, &set) {
                 Ok(v) => v,
                 Err(code) => return code,
@@ -241,20 +242,13 @@ fn main() -> ExitCode {
                 );
                 return ExitCode::from(2);
             };
-            let layout = match layout.as_deref().map(read_layout).transpose() {
-                Ok(l) => l,
-                Err(e) => {
-                    eprintln!("screwcut: {e}");
-                    return ExitCode::from(2);
-                }
-            };
-            let labels = screwcut::svg::templates(&lang).unwrap_or_default();
-            let opts = screwcut::svg::Options { width, height, stretch, thread: ti, labels, layout };
-            if let Err(e) = opts.validate(&scene) {
+            let lang = Lang::parse(&lang).unwrap_or_default();
+            let v = screwcut::draw::View { width, height, stretch, thread: ti, lang, transform, ..Default::default() };
+            if let Err(e) = v.validate() {
                 eprintln!("screwcut: cannot draw the {view} view: {e}");
                 return ExitCode::from(2);
             }
-            emit(&screwcut::svg::svg(&scene, &opts));
+            emit(&screwcut::svg::svg(&scene, &v));
             ExitCode::SUCCESS
         }
         Command::Settings { dialect } => {

@@ -10,13 +10,12 @@
 //! Bulk geometry crosses as typed arrays ([`super::pack`]); the rest
 //! (diagnostics, threads, setting tables) through serde-wasm-bindgen.
 
-use js_sys::{Array, Float64Array, Object};
+use js_sys::{Float64Array, Object};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use super::js::{dialect, set, settings_from, to_js};
 use super::session::Session;
-use crate::diagram;
 use crate::dialect::Dialect;
 use crate::settings::{Kind, Settings};
 
@@ -93,40 +92,6 @@ pub fn settings_table(dialect_name: &str) -> Result<JsValue, JsValue> {
     to_js(&list)
 }
 
-/// The style names, indexed by the packed style code.
-#[wasm_bindgen]
-pub fn style_names() -> Array {
-    diagram::Style::ALL.iter().map(|s| JsValue::from_str(s.name())).collect()
-}
-
-/// The shape names, indexed by the packed shape code.
-#[wasm_bindgen]
-pub fn shape_names() -> Array {
-    super::pack::SHAPES.iter().map(|s| JsValue::from_str(s)).collect()
-}
-
-/// The layout of a packed scene's item records, read by name on the
-/// JavaScript side: `{stride, fields: {shape: 0, style: 1, …}, shapes,
-/// styles, anchors, glyphs, roles}` (each list indexed by its code).
-#[wasm_bindgen]
-pub fn scene_layout() -> JsValue {
-    let o = Object::new();
-    let fields = Object::new();
-    for (i, name) in super::pack::FIELDS.iter().enumerate() {
-        set(&fields, name, &(i as u32).into());
-    }
-    let names = |list: &[&str]| -> Array { list.iter().map(|s| JsValue::from_str(s)).collect() };
-    set(&o, "stride", &(super::pack::STRIDE as u32).into());
-    set(&o, "fields", &fields.into());
-    set(&o, "shapes", &names(&super::pack::SHAPES).into());
-    let styles: Vec<&str> = diagram::Style::ALL.iter().map(|s| s.name()).collect();
-    set(&o, "styles", &names(&styles).into());
-    set(&o, "anchors", &names(&super::pack::ANCHORS).into());
-    set(&o, "glyphs", &names(&super::pack::GLYPHS).into());
-    set(&o, "roles", &names(&super::pack::ROLES).into());
-    o.into()
-}
-
 /// The counts of a plan of `text` (planned from scratch, nothing drawn or
 /// kept): `{moves, threads, passes, diagnostics, alarms}`. For timing the planner.
 #[wasm_bindgen]
@@ -167,7 +132,7 @@ pub fn update(
     known_diagnostics: f64,
     known: Option<Vec<f64>>,
 ) -> Result<JsValue, JsValue> {
-    DEFAULT.with(|s| s.update(text, dialect_name, settings, thread, start, known_diagnostics, known))
+    DEFAULT.with(|s| s.update(text, dialect_name, settings, thread, start, known_diagnostics, known, false, false))
 }
 
 /// [`Session::thread_scenes`] on the default session.
@@ -180,16 +145,4 @@ pub fn thread_scenes(thread: i32, start: u32) -> Result<JsValue, JsValue> {
 #[wasm_bindgen]
 pub fn moves() -> Float64Array {
     DEFAULT.with(Session::moves)
-}
-
-/// [`Session::side_scene_as`] on the default session.
-#[wasm_bindgen]
-pub fn side_scene_as(format: &str) -> Result<JsValue, JsValue> {
-    DEFAULT.with(|s| s.side_scene_as(format))
-}
-
-/// [`Session::threads_as`] on the default session.
-#[wasm_bindgen]
-pub fn threads_as(format: &str) -> Result<JsValue, JsValue> {
-    DEFAULT.with(|s| s.threads_as(format))
 }

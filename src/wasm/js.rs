@@ -6,9 +6,6 @@ use js_sys::{Float64Array, Object, Reflect, Uint32Array};
 use serde::Serialize;
 use wasm_bindgen::JsValue;
 
-use super::keys::js_key;
-use super::memo::SidePieces;
-use super::pack::Packed;
 use crate::dialect::Dialect;
 use crate::figures::Shop;
 use crate::message::Lang;
@@ -221,47 +218,6 @@ impl ThreadSummary {
             notes,
         }
     }
-}
-
-/// A packed scene as a JS object with typed arrays:
-/// `{view, bounds, focus, coords: Float64Array, items: Uint32Array, lines: Uint32Array, labels}`.
-pub fn packed_to_js(p: &Packed) -> JsValue {
-    let o = Object::new();
-    let view = match p.view {
-        crate::diagram::ViewKind::Side => "side",
-        crate::diagram::ViewKind::Tooth => "tooth",
-        crate::diagram::ViewKind::Starts => "starts",
-    };
-    set(&o, "view", &JsValue::from_str(view));
-    set(&o, "bounds", &Float64Array::from(&p.bounds[..]).into());
-    set(&o, "focus", &Float64Array::from(&p.focus[..]).into());
-    set(&o, "coords", &Float64Array::from(&p.coords[..]).into());
-    set(&o, "items", &Uint32Array::from(&p.items[..]).into());
-    set(&o, "lines", &Uint32Array::from(&p.lines[..]).into());
-    set(&o, "labels", &JsValue::from_str(&p.labels));
-    o.into()
-}
-
-/// The side section as pieces (see [`SidePieces`]): `{view, pieces: true,
-/// bounds, focus, headCoords, headItems, order, keys, coords, items, lines,
-/// labels, ends}`, keys as JS numbers, `ends` five numbers per sent piece.
-pub fn pieces_to_js(p: &SidePieces) -> JsValue {
-    let o = Object::new();
-    let keys = |k: &[u64]| Float64Array::from(&k.iter().map(|k| js_key(*k)).collect::<Vec<f64>>()[..]);
-    set(&o, "view", &JsValue::from_str("side"));
-    set(&o, "pieces", &JsValue::TRUE);
-    set(&o, "bounds", &Float64Array::from(&p.head.bounds[..]).into());
-    set(&o, "focus", &Float64Array::from(&p.head.focus[..]).into());
-    set(&o, "headCoords", &Float64Array::from(&p.head.coords[..]).into());
-    set(&o, "headItems", &Uint32Array::from(&p.head.items[..]).into());
-    set(&o, "order", &keys(&p.order).into());
-    set(&o, "keys", &keys(&p.keys).into());
-    set(&o, "coords", &Float64Array::from(&p.sent.coords[..]).into());
-    set(&o, "items", &Uint32Array::from(&p.sent.items[..]).into());
-    set(&o, "lines", &Uint32Array::from(&p.sent.lines[..]).into());
-    set(&o, "labels", &JsValue::from_str(&p.sent.labels));
-    set(&o, "ends", &Uint32Array::from(&p.ends.concat()[..]).into());
-    o.into()
 }
 
 /// A thread's passes as columns of typed arrays (one array per field, no object per

@@ -1,7 +1,7 @@
 //! The side section built again after an edit from the pieces that did not
 //! change: each thread's band and dimensions, runs of passes and blocks of
-//! other motions are packed once and kept by the key of what they are drawn
-//! from. [`SideMemo::side`] gives exactly `pack(&side(plan))`; an edit to one
+//! other motions are built once and kept by the key of what they are drawn
+//! from. [`SideMemo::side`] gives exactly `side(plan)`; an edit to one
 //! thread rebuilds that thread's pieces and the spindle axis only.
 
 use std::collections::HashMap;
@@ -11,7 +11,7 @@ use crate::motion::Move;
 use crate::plan::Plan;
 
 use super::keys::{KeyHasher, combine, hash_move, packed_key};
-use super::pack::{Packed, RECORD_SEP, STRIDE, pack};
+use super::pack::pack;
 use crate::diagram::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
 use crate::diagram::side::{
     Band, Layout, axis, capped_note, detail_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item,
@@ -26,10 +26,9 @@ const RUN: usize = 16;
 /// Pieces by key (the keys are hashes already: no second hash with a random seed).
 type ByKey = HashMap<u64, Chunk, BuildHasherDefault<KeyHasher>>;
 
-/// A packed run of items with what the whole scene needs of it.
+/// A run of items with what the whole scene needs of it.
 struct Chunk {
-    packed: Packed,
-    labels: u32,
+    items: Vec<Item>,
     bounds: Rect,
     focus: Rect,
     /// Points of the passes' rapids (they may join the focus).
@@ -50,9 +49,7 @@ impl Chunk {
         for item in s.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
             item.each_point(|p| rapids.push(p));
         }
-        let packed = pack(&s);
-        let labels = packed.items.chunks_exact(STRIDE).filter(|r| r[8] > 0).count() as u32;
-        Chunk { packed, labels, bounds: s.bounds, focus: s.focus, rapids }
+        Chunk { items: s.items, bounds: s.bounds, focus: s.focus, rapids }
     }
 }
 
@@ -101,27 +98,11 @@ impl Pieces {
 
     /// Keeps a piece built anyway (it is cheap and rare), under the key of its content.
     fn put(&mut self, chunk: Chunk) -> u64 {
-        let key = packed_key(&chunk.packed);
+        let mut s = Scene::new(ViewKind::Side);
+        s.items = chunk.items.clone();
+        let key = packed_key(&pack(&s));
         self.take(key, || chunk)
     }
-}
-
-/// The side section as pieces: what the caller needs to put it together from
-/// the pieces it holds of the last answer.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SidePieces {
-    /// The spindle axis alone, with the scene's bounds and focus.
-    pub head: Packed,
-    /// Keys of the pieces in drawing order (after the axis).
-    pub order: Vec<u64>,
-    /// Keys of the pieces sent, in the order of `sent`'s parts.
-    pub keys: Vec<u64>,
-    /// The pieces sent, one after the other; each item's offsets and label
-    /// number are its piece's own.
-    pub sent: Packed,
-    /// Per sent piece, where it ends in `sent`: coordinates, items (numbers),
-    /// lines, label text (UTF-16 units, as JavaScript counts) and labels.
-    pub ends: Vec<[u32; 5]>,
 }
 
 /// Pieces of the last side section, by key; and how many of the last call's pieces were built.
@@ -130,15 +111,12 @@ pub struct SideMemo {
     chunks: ByKey,
     built: usize,
     reused: usize,
-    /// The key of the last section answered as pieces ([`SideMemo::pieces`]).
-    last: Option<u64>,
 }
 
 /// One call's pieces: the head and the order, and which were built.
 struct Built {
-    head: Packed,
+    head: Scene,
     order: Vec<u64>,
-    built: Vec<u64>,
 }
 
 /// What a piece is, mixed into its key.
@@ -161,55 +139,13 @@ impl SideMemo {
         (self.built, self.reused)
     }
 
-    /// The packed side section of `plan`, whose threads have the keys
+    /// The side section of `plan`, whose threads have the keys
     /// `thread_keys` ([`super::keys::thread_key`]); pieces are reused
     /// from the last call where their keys match.
-    pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Packed {
+    pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Scene {
         let b = self.build(plan, thread_keys);
-        self.last = None;
         let pieces: Vec<&Chunk> = b.order.iter().map(|k| &self.chunks[k]).collect();
         join(b.head, &pieces)
-    }
-
-    /// The key of the last section answered as pieces, if the last answer was pieces.
-    pub fn last(&self) -> Option<u64> {
-        self.last
-    }
-
-    /// The side section of `plan` (key `side_key`) as pieces: when the
-    /// caller `holds` the pieces of [`SideMemo::last`], only the pieces it
-    /// lacks are sent, else every piece.
-    pub fn pieces(&mut self, plan: &Plan, thread_keys: &[u64], side_key: u64, holds: bool) -> SidePieces {
-        let holds = holds && self.last.is_some();
-        let b = self.build(plan, thread_keys);
-        self.last = Some(side_key);
-        let mut keys = if holds { b.built } else { b.order.clone() };
-        let mut seen =
-            std::collections::HashSet::with_capacity_and_hasher(keys.len(), BuildHasherDefault::<KeyHasher>::default());
-        keys.retain(|k| seen.insert(*k));
-        let mut sent = Packed {
-            view: ViewKind::Side,
-            bounds: [0.0; 4],
-            focus: [0.0; 4],
-            coords: Vec::new(),
-            items: Vec::new(),
-            lines: Vec::new(),
-            labels: String::new(),
-        };
-        let mut ends = Vec::with_capacity(keys.len());
-        let (mut labels, mut units) = (0u32, 0u32);
-        for k in &keys {
-            let c = &self.chunks[k];
-            sent.coords.extend_from_slice(&c.packed.coords);
-            sent.items.extend_from_slice(&c.packed.items);
-            sent.lines.extend_from_slice(&c.packed.lines);
-            sent.labels.push_str(&c.packed.labels);
-            labels += c.labels;
-            units += c.packed.labels.encode_utf16().count() as u32;
-            let len = |v: &[_]| v.len() as u32;
-            ends.push([sent.coords.len() as u32, len(&sent.items), len(&sent.lines), units, labels]);
-        }
-        SidePieces { head: b.head, order: b.order, keys, sent, ends }
     }
 
     /// Builds or reuses every piece of `plan`'s side section.
@@ -296,7 +232,7 @@ impl SideMemo {
             head(&chunks)
         };
         self.chunks = pieces.kept;
-        Built { head, order, built: pieces.built }
+        Built { head, order }
     }
 }
 
@@ -306,7 +242,7 @@ fn motions<'a>(moves: &'a [Move], owner: &'a [bool], has_threads: bool) -> impl 
 }
 
 /// The spindle axis with the bounds and focus of the scene of `pieces`.
-fn head(pieces: &[&Chunk]) -> Packed {
+fn head(pieces: &[&Chunk]) -> Scene {
     let (mut bounds, mut focus) = (Rect::EMPTY, Rect::EMPTY);
     for c in pieces {
         bounds.union(&c.bounds);
@@ -319,37 +255,15 @@ fn head(pieces: &[&Chunk]) -> Packed {
     head.bounds = bounds;
     head.focus = focus;
     head.finish();
-    pack(&head)
+    head
 }
 
 /// The whole scene: the head (the axis), then the pieces.
-fn join(head: Packed, pieces: &[&Chunk]) -> Packed {
+fn join(head: Scene, pieces: &[&Chunk]) -> Scene {
     let mut out = head;
-    let n: usize = pieces.iter().map(|c| c.packed.items.len()).sum();
-    out.items.reserve(n);
-    out.coords.reserve(pieces.iter().map(|c| c.packed.coords.len()).sum());
-    out.lines.reserve(pieces.iter().map(|c| c.packed.lines.len()).sum());
-    let mut labels = 0u32;
+    out.items.reserve(pieces.iter().map(|c| c.items.len()).sum());
     for c in pieces {
-        let (co, lo) = (out.coords.len() as u32, out.lines.len() as u32);
-        let first = out.items.len();
-        out.items.extend_from_slice(&c.packed.items);
-        for r in out.items[first..].chunks_exact_mut(STRIDE) {
-            r[2] += co;
-            r[6] += lo;
-            if r[8] > 0 {
-                r[8] += labels;
-            }
-        }
-        out.coords.extend_from_slice(&c.packed.coords);
-        out.lines.extend_from_slice(&c.packed.lines);
-        if c.labels > 0 {
-            if labels > 0 {
-                out.labels.push(RECORD_SEP);
-            }
-            out.labels.push_str(&c.packed.labels);
-            labels += c.labels;
-        }
+        out.items.extend(c.items.iter().cloned());
     }
     out
 }
@@ -379,102 +293,8 @@ mod tests {
         let plan = crate::plan(text, settings);
         let keys = PlanKeys::of(&plan);
         let got = memo.side(&plan, &keys.threads);
-        assert_eq!(got, pack(&side(&plan)), "{text}");
+        assert_eq!(got, side(&plan), "{text}");
         memo.counts()
-    }
-
-    /// What a caller holds of the pieces, and how it puts a section together (as www/src/parts.js does).
-    #[derive(Default)]
-    struct Holder {
-        key: Option<u64>,
-        pieces: HashMap<u64, (Packed, u32)>,
-    }
-
-    impl Holder {
-        /// The whole section from an answer; returns it and the number of pieces sent.
-        fn take(&mut self, a: SidePieces, side_key: u64) -> (Packed, usize) {
-            let mut fresh = HashMap::new();
-            let mut start = [0u32; 5];
-            let labels: Vec<u16> = a.sent.labels.encode_utf16().collect();
-            for (k, end) in a.keys.iter().zip(&a.ends) {
-                let r = |i: usize| start[i] as usize..end[i] as usize;
-                let piece = Packed {
-                    view: ViewKind::Side,
-                    bounds: [0.0; 4],
-                    focus: [0.0; 4],
-                    coords: a.sent.coords[r(0)].to_vec(),
-                    items: a.sent.items[r(1)].to_vec(),
-                    lines: a.sent.lines[r(2)].to_vec(),
-                    labels: String::from_utf16(&labels[r(3)]).unwrap(),
-                };
-                fresh.insert(*k, (piece, end[4] - start[4]));
-                start = *end;
-            }
-            let mut out = a.head;
-            let mut count = 0;
-            let mut kept = HashMap::new();
-            for k in &a.order {
-                let (p, n) = fresh.get(k).or_else(|| self.pieces.get(k)).cloned().expect("a piece held or sent");
-                let (co, lo) = (out.coords.len() as u32, out.lines.len() as u32);
-                for r in p.items.chunks_exact(STRIDE) {
-                    out.items.extend([r[0], r[1], r[2] + co, r[3], r[4], r[5], r[6] + lo, r[7]]);
-                    out.items.extend([if r[8] > 0 { r[8] + count } else { 0 }, r[9]]);
-                }
-                out.coords.extend_from_slice(&p.coords);
-                out.lines.extend_from_slice(&p.lines);
-                if n > 0 {
-                    if count > 0 {
-                        out.labels.push(RECORD_SEP);
-                    }
-                    out.labels.push_str(&p.labels);
-                    count += n;
-                }
-                kept.insert(*k, (p, n));
-            }
-            self.pieces = kept;
-            self.key = Some(side_key);
-            (out, a.keys.len())
-        }
-    }
-
-    /// Plans `text` and checks that the pieces `holder` gets make the whole section; the number of pieces sent.
-    fn check_pieces(memo: &mut SideMemo, holder: &mut Holder, text: &str, s: &Settings) -> usize {
-        let plan = crate::plan(text, s);
-        let keys = PlanKeys::of(&plan);
-        let holds = holder.key.is_some() && holder.key == memo.last();
-        let (got, sent) = holder.take(memo.pieces(&plan, &keys.threads, keys.side, holds), keys.side);
-        assert_eq!(got, pack(&side(&plan)), "{text}");
-        sent
-    }
-
-    #[test]
-    fn pieces_sent_and_held_make_the_whole_scene() {
-        let s = Settings::new(Dialect::Gsk980tdc);
-        let (mut memo, mut holder) = (SideMemo::new(), Holder::default());
-        let base = program(40);
-        let all = check_pieces(&mut memo, &mut holder, &base, &s);
-        assert!(all > 80, "{all}");
-        let lines: Vec<&str> = base.lines().collect();
-        let n = lines.len();
-        let edited = lines.iter().enumerate().map(|(i, l)| if i == n - 9 { format!("{l}1") } else { l.to_string() });
-        let edited: String = edited.map(|l| l + "\n").collect();
-        assert_eq!(check_pieces(&mut memo, &mut holder, &edited, &s), 3, "one thread's pieces");
-        for text in [
-            base.replacen("X29.1", "X29.1\nG00 X80", 1),
-            base[..base.len() / 2].to_string(),
-            String::new(),
-            base.clone(),
-        ] {
-            check_pieces(&mut memo, &mut holder, &text, &s);
-        }
-        // Another caller's answer in between: the first caller gets every piece again.
-        let mut other = Holder::default();
-        check_pieces(&mut memo, &mut other, include_str!("../../examples/o1006.nc"), &s);
-        assert_eq!(check_pieces(&mut memo, &mut holder, &edited, &s), all);
-        // A full section answered in between: the same.
-        memo.side(&crate::plan(&base, &s), &PlanKeys::of(&crate::plan(&base, &s)).threads);
-        assert_eq!(memo.last(), None);
-        assert_eq!(check_pieces(&mut memo, &mut holder, &base, &s), all);
     }
 
     #[test]
@@ -527,6 +347,6 @@ mod tests {
         plan.moves.truncate(plan.moves.len() / 2);
         assert!(!Layout::of(&plan).unmatched(&plan).is_empty(), "some passes have no motions");
         let keys = PlanKeys::of(&plan);
-        assert_eq!(memo.side(&plan, &keys.threads), pack(&side(&plan)));
+        assert_eq!(memo.side(&plan, &keys.threads), side(&plan));
     }
 }

@@ -7,9 +7,11 @@
 //! - [`keys`]: content keys of the parts of a plan, as JavaScript numbers;
 //! - [`memo`]: the side section put together from the pieces an edit did
 //!   not change;
+//! - [`shown`]: which scenes the views show (the last good drawing's policy);
 //! - the bindings (`bind`, `session`, `js`, `parts`, `tools`; wasm32 only): per-view
 //!   sessions — the app and every embedded element keep their own planner
-//!   and scene pieces — and the functions JavaScript calls.
+//!   and scene pieces — and the functions JavaScript calls; `views`: each view's display list,
+//!   hit test and SVG.
 //!
 //! Everything but the bindings is compiled natively too, so its tests run
 //! with the core's.
@@ -17,6 +19,7 @@
 pub mod keys;
 pub mod memo;
 pub mod pack;
+pub mod shown;
 pub mod text;
 
 #[cfg(target_arch = "wasm32")]
@@ -29,6 +32,8 @@ mod parts;
 mod session;
 #[cfg(target_arch = "wasm32")]
 mod tools;
+#[cfg(target_arch = "wasm32")]
+mod views;
 
 #[cfg(target_arch = "wasm32")]
 pub use bind::*;

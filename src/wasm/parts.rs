@@ -13,9 +13,6 @@ use super::keys::js_key;
 pub(super) enum Part {
     Threads = 0,
     Passes = 1,
-    Side = 2,
-    Tooth = 3,
-    Starts = 4,
 }
 
 impl Part {
@@ -23,9 +20,6 @@ impl Part {
         match self {
             Part::Threads => "threads",
             Part::Passes => "passes",
-            Part::Side => "side",
-            Part::Tooth => "tooth",
-            Part::Starts => "starts",
         }
     }
 }

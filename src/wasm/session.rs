@@ -11,24 +11,30 @@ use std::cell::Cell;
 use js_sys::{Array, Float64Array, Object};
 use wasm_bindgen::prelude::*;
 
+use std::rc::Rc;
+
 use super::js::{
-    SettingProblem, ThreadSummary, dialect, editor_diagnostics, err, packed_to_js, passes_to_js, pieces_to_js, set,
-    settings_from, to_js,
+    SettingProblem, ThreadSummary, dialect, editor_diagnostics, err, passes_to_js, set, settings_from, to_js,
 };
 use super::keys::{PlanKeys, combine, js_key, key_of, packed_key};
 use super::memo::SideMemo;
 use super::pack::pack;
 use super::parts::{Known, Part, ThreadsSent, keyed};
-use crate::diagram;
+use super::shown::{Scenes, Shown};
+use crate::diagram::{self, Scene};
 use crate::message::Lang;
 use crate::plan::Plan;
 use crate::planner::Planner;
 
 /// What a session keeps between calls.
-struct State {
+pub(super) struct State {
     planner: Planner,
     side: SideMemo,
     threads: ThreadsSent,
+    /// The scenes the views show (the last good drawing's policy).
+    pub(super) shown: Shown,
+    /// The chosen thread (its dimensions are drawn when the side section has many).
+    pub(super) thread: usize,
 }
 
 /// A planning session of one view (see the module documentation).
@@ -48,22 +54,25 @@ impl Session {
         Session::default()
     }
 
-    /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines) and
-    /// returns everything the app shows:
+    /// Plans `text` as `dialect_name` with `settings` (`NAME=VALUE` lines),
+    /// keeps the scenes of the plan for the views to draw ([`Session::draw`])
+    /// and returns what the page lists:
     /// `{dialect, units, alarms, warnings, notes, moves, timeS (threading time, s; null without S), good, settingErrors,
     /// diagnostics, diagnosticsKey, threads, threadsKey, thread, passes,
-    /// passesKey, side, sideKey, tooth, toothKey, starts, startsKey, resumedAt}`:
+    /// passesKey, shown: [side, tooth, starts keys], stale, resumedAt}`:
     /// `threads` are summaries (a pass count instead of the passes), `passes` are
     /// the chosen thread's. `diagnostics` is null when its key equals
     /// `known_diagnostics` (the key of the list the caller already has); so is
-    /// each of `threads`, `passes`, `side`, `tooth` and `starts` when its key is
-    /// in `known` (`[threads, passes, side, tooth, starts]` keys; omitted: none
-    /// known). With `known` given, `threads` may come as `{changes: [[index,
-    /// summary]...], length}` (to a caller holding the list last answered) and `side` as pieces (see `pieces_to_js`):
-    /// only those the caller lacks when it holds the pieces of the last side
-    /// section answered, else all; without it, as one packed scene. `thread` and
-    /// `start` choose the thread (−1: none) and start drawn in the tooth and starts views. `good` is true when the plan draws
-    /// something (threads or motions) and has no alarm.
+    /// each of `threads` and `passes` when its key is in `known`
+    /// (`[threads, passes]` keys; omitted: none known). With `known` given,
+    /// `threads` may come as `{changes: [[index, summary]...], length}` to a
+    /// caller holding the list last answered. `thread` and `start` choose the
+    /// thread (−1: none) and start drawn in the tooth and starts views.
+    /// `good` is true when the plan draws something (threads or motions) and
+    /// has no alarm. `shown` are the keys of the scenes the views show and
+    /// `stale` whether they are the last good drawing, greyed (see
+    /// [`super::shown`]: `fresh`, the text is another program's; `keep`, the
+    /// drawing on screen before this edit was left).
     ///
     /// The program is re-read only from the last planner snapshot before the
     /// first byte that differs from the last call's text; `resumedAt` is the
@@ -78,6 +87,8 @@ impl Session {
         start: u32,
         known_diagnostics: f64,
         known: Option<Vec<f64>>,
+        fresh: bool,
+        keep: bool,
     ) -> Result<JsValue, JsValue> {
         let d = dialect(dialect_name)?;
         let (s, problems) = settings_from(d, settings);
@@ -87,23 +98,40 @@ impl Session {
                 session.planner.set_settings(s);
                 session
             }
-            None => State { planner: Planner::new(s), side: SideMemo::new(), threads: ThreadsSent::default() },
+            None => State {
+                planner: Planner::new(s),
+                side: SideMemo::new(),
+                threads: ThreadsSent::default(),
+                shown: Shown::default(),
+                thread: 0,
+            },
         };
         session.planner.plan(text);
         let settings = session.planner.settings().clone();
         if let Some(plan) = session.planner.last_mut() {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
-        let State { planner, side, threads } = &mut session;
+        let State { planner, side, threads, shown, thread: chosen } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {
-                answer(text, plan, (side, threads), &problems, (thread, start, lang), known_diagnostics, &known).map(
-                    |o| {
-                        set(&o, "resumedAt", &planner.resumed_at().into());
-                        o.into()
-                    },
-                )
+                let keys = PlanKeys::of(plan);
+                let picked = pick(plan, thread);
+                *chosen = picked.unwrap_or(0);
+                let (tooth, starts) = thread_scenes_of(plan, picked, start);
+                let side_scene = Rc::new(side.side(plan, &keys.threads));
+                let scenes = Scenes {
+                    scenes: [Some(side_scene), tooth.0, starts.0],
+                    keys: [js_key(keys.side), tooth.1, starts.1],
+                };
+                let drawable = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
+                shown.planned(scenes, drawable, plan.has_alarm(), fresh, keep);
+                answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(|o| {
+                    set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
+                    set(&o, "stale", &shown.stale().into());
+                    set(&o, "resumedAt", &planner.resumed_at().into());
+                    o.into()
+                })
             }
             None => Err(err("the planner kept no plan")),
         };
@@ -140,16 +168,31 @@ impl Session {
         out
     }
 
-    /// The tooth and starts scenes of another thread or start of the last plan:
-    /// `{thread, passes, passesKey, tooth, toothKey, starts, startsKey}` (every
-    /// part sent; the keys are those [`Session::update`] uses).
+    /// Another thread or start of the last plan: the tooth and starts views
+    /// show it. `{thread, passes, passesKey, shown, stale}` (the passes always
+    /// sent; the keys are those [`Session::update`] uses).
     pub fn thread_scenes(&self, thread: i32, start: u32) -> Result<JsValue, JsValue> {
-        self.with_last(|plan| {
-            let keys = PlanKeys::of(plan);
-            let o = Object::new();
-            thread_parts(&o, plan, &keys, pick(plan, thread), start, &Known(Vec::new()))?;
-            Ok(o.into())
-        })
+        let mut state = self.state.take();
+        let out = match state.as_mut() {
+            Some(st) => match st.planner.last() {
+                Some(plan) => {
+                    let keys = PlanKeys::of(plan);
+                    let picked = pick(plan, thread);
+                    st.thread = picked.unwrap_or(0);
+                    let (tooth, starts) = thread_scenes_of(plan, picked, start);
+                    st.shown.select(tooth.0, starts.0, [tooth.1, starts.1]);
+                    let o = Object::new();
+                    let r = thread_parts(&o, plan, &keys, picked, &Known(Vec::new()));
+                    set(&o, "shown", &Float64Array::from(&st.shown.keys()[..]).into());
+                    set(&o, "stale", &st.shown.stale().into());
+                    r.map(|()| o.into())
+                }
+                None => Err(err("nothing planned yet")),
+            },
+            None => Err(err("nothing planned yet")),
+        };
+        self.state.set(state);
+        out
     }
 
     /// The last plan as a JSON-compatible value (what the CLI's `--json`
@@ -157,59 +200,6 @@ impl Session {
     /// writer of its own.
     pub fn plan_value(&self) -> Result<JsValue, JsValue> {
         self.with_last(json_value)
-    }
-
-    /// View `view` (`side`, `tooth`, `starts`) of the last plan as a
-    /// standalone SVG document, written by the same writer as the command
-    /// line's `screwcut svg` ([`crate::svg`]) on a `size` page (`[width,
-    /// height]` px, the view's size on screen), with thread `thread` (its
-    /// dimensions when many threads are drawn; the tooth and starts views'
-    /// thread), start `start` and the label templates `labels` (`[key,
-    /// template, key, template…]`, the page's language; missing keys in
-    /// English).
-    ///
-    /// `layout` is what the view shows: `{transform: {sx, sy, tx, ty},
-    /// labels: [{item, lines, align, box, angle, off, len, lead}…]}` (see
-    /// [`crate::svg::Layout`]); the drawing is then made with that transform
-    /// and each label drawn where it is given (without `labels`, placed at
-    /// the transform). Without a layout (undefined or null), the drawing
-    /// and its labels are fitted to the page as the view's Fit does, with
-    /// the radial `stretch`. A layout that does not fit the scene (a label
-    /// naming an item that is not a label, numbers that are not finite) is
-    /// an error.
-    #[allow(clippy::too_many_arguments)] // the JavaScript call's positional arguments
-    pub fn svg(
-        &self,
-        view: &str,
-        thread: i32,
-        start: u32,
-        size: Vec<f64>,
-        stretch: bool,
-        labels: Vec<String>,
-        layout: JsValue,
-    ) -> Result<String, JsValue> {
-        let layout: Option<crate::svg::Layout> = if layout.is_undefined() || layout.is_null() {
-            None
-        } else {
-            Some(serde_wasm_bindgen::from_value(layout).map_err(|e| err(format!("the SVG layout: {e}")))?)
-        };
-        self.with_last(|plan| {
-            let t = pick(plan, thread);
-            let scene = match view {
-                "side" => Some(diagram::side(plan)),
-                "tooth" => t.and_then(|t| diagram::tooth(plan, t, start.max(1))),
-                "starts" => t.and_then(|t| diagram::starts(plan, t)),
-                _ => return Err(err(format!("unknown view '{view}': side, tooth or starts"))),
-            };
-            let scene = scene.ok_or_else(|| err(format!("no thread to draw the {view} view of")))?;
-            let [width, height] = size[..] else {
-                return Err(err(format!("the page size is [width, height], not {} numbers", size.len())));
-            };
-            let pairs = labels.chunks_exact(2).map(|kv| (kv[0].clone(), kv[1].clone())).collect();
-            let opts = crate::svg::Options { width, height, stretch, thread: t.unwrap_or(0), labels: pairs, layout };
-            opts.validate(&scene).map_err(err)?;
-            Ok(crate::svg::svg(&scene, &opts))
-        })
     }
 
     /// The last plan written block by block for dialect `to` (every pass
@@ -249,32 +239,6 @@ impl Session {
         });
         Float64Array::from(&out[..])
     }
-
-    /// The side scene of the last plan in another encoding, for comparing
-    /// transfer costs: `"packed"` (typed arrays, what [`Session::update`]
-    /// returns), `"objects"` (serde-wasm-bindgen objects, one per item and
-    /// point) or `"json"` (a JSON string).
-    pub fn side_scene_as(&self, format: &str) -> Result<JsValue, JsValue> {
-        self.with_last(|plan| {
-            let scene = diagram::side(plan);
-            match format {
-                "packed" => Ok(packed_to_js(&pack(&scene))),
-                "objects" => to_js(&scene),
-                "json" => json_string(&scene),
-                _ => Err(err(format!("unknown format '{format}' (packed, objects, json)"))),
-            }
-        })
-    }
-
-    /// The threads of the last plan as serde-wasm-bindgen objects or as a JSON
-    /// string (`"objects"` or `"json"`), for comparing transfer costs.
-    pub fn threads_as(&self, format: &str) -> Result<JsValue, JsValue> {
-        self.with_last(|plan| match format {
-            "objects" => to_js(&plan.threads),
-            "json" => json_string(&plan.threads),
-            _ => Err(err(format!("unknown format '{format}' (objects, json)"))),
-        })
-    }
 }
 
 /// `v` as a JSON-compatible JavaScript value (`None` as null, maps as objects).
@@ -282,13 +246,23 @@ fn json_value<T: serde::Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
     v.serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(err)
 }
 
-/// `v` as a JSON string, written by the browser's `JSON.stringify`.
-fn json_string<T: serde::Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
-    let value = json_value(v)?;
-    js_sys::JSON::stringify(&value).map(JsValue::from).map_err(|_| err("JSON.stringify failed"))
-}
-
 impl Session {
+    /// Runs `f` on the session's state; an error when nothing was planned yet.
+    pub(super) fn with_state<R>(&self, f: impl FnOnce(&State) -> Result<R, JsValue>) -> Result<R, JsValue> {
+        let state = self.state.take();
+        let out = match state.as_ref() {
+            Some(s) => f(s),
+            None => Err(err("nothing planned yet")),
+        };
+        self.state.set(state);
+        out
+    }
+
+    /// The language of the session's answers and labels.
+    pub(super) fn lang(&self) -> Lang {
+        self.lang.get()
+    }
+
     /// Runs `f` on the last plan; an error when nothing was planned yet.
     fn with_last<R>(&self, f: impl FnOnce(&Plan) -> Result<R, JsValue>) -> Result<R, JsValue> {
         let state = self.state.take();
@@ -319,43 +293,41 @@ fn diagnostics_key(plan: &Plan, lang: Lang) -> f64 {
     js_key(key_of(&(lang.name(), fields)))
 }
 
-/// Sets the chosen thread, its passes and its tooth and starts scenes on `o`.
-fn thread_parts(
-    o: &Object,
-    plan: &Plan,
-    keys: &PlanKeys,
-    chosen: Option<usize>,
-    start: u32,
-    known: &Known,
-) -> Result<(), JsValue> {
+/// The tooth and starts scenes of thread `chosen` (start `start`) with their keys.
+type Keyed = (Option<Rc<Scene>>, f64);
+fn thread_scenes_of(plan: &Plan, chosen: Option<usize>, start: u32) -> (Keyed, Keyed) {
+    let Some(t) = chosen else { return ((None, 0.0), (None, 0.0)) };
+    let start = start.clamp(1, plan.threads[t].starts.max(1));
+    // The small scenes are keyed by what they draw: an edit that leaves one as it was redraws nothing.
+    let keyed = |s: Option<Scene>| match s {
+        Some(s) => {
+            let key = js_key(packed_key(&pack(&s)));
+            (Some(Rc::new(s)), key)
+        }
+        None => (None, 0.0),
+    };
+    (keyed(diagram::tooth(plan, t, start)), keyed(diagram::starts(plan, t)))
+}
+
+/// Sets the chosen thread and its passes on `o`.
+fn thread_parts(o: &Object, plan: &Plan, keys: &PlanKeys, chosen: Option<usize>, known: &Known) -> Result<(), JsValue> {
     set(o, "thread", &chosen.map_or(JsValue::NULL, |t| (t as u32).into()));
     let Some(t) = chosen else {
-        for part in [Part::Passes, Part::Tooth, Part::Starts] {
-            keyed(o, known, part, 0, || {
-                Ok(if matches!(part, Part::Passes) { Array::new().into() } else { JsValue::NULL })
-            })?;
-        }
-        return Ok(());
+        return keyed(o, known, Part::Passes, 0, || Ok(Array::new().into()));
     };
     let listed_key = keys.listed[t];
-    let start = start.clamp(1, plan.threads[t].starts.max(1));
-    keyed(o, known, Part::Passes, combine(&[listed_key, t as u64]), || Ok(passes_to_js(&plan.threads[t])))?;
-    // The small scenes are keyed by what they draw: an edit that leaves one as it was redraws nothing.
-    for (part, scene) in [(Part::Tooth, diagram::tooth(plan, t, start)), (Part::Starts, diagram::starts(plan, t))] {
-        let packed = scene.map(|s| pack(&s));
-        let key = packed.as_ref().map_or(0, packed_key);
-        keyed(o, known, part, key, || Ok(packed.as_ref().map_or(JsValue::NULL, packed_to_js)))?;
-    }
-    Ok(())
+    keyed(o, known, Part::Passes, combine(&[listed_key, t as u64]), || Ok(passes_to_js(&plan.threads[t])))
 }
 
 /// The object [`update`] returns, for `plan` of `text`.
+#[allow(clippy::too_many_arguments)]
 fn answer(
     text: &str,
     plan: &Plan,
-    (memo, sent): (&mut SideMemo, &mut ThreadsSent),
+    keys: &PlanKeys,
+    sent: &mut ThreadsSent,
     problems: &[SettingProblem],
-    (thread, start, lang): (i32, u32, Lang),
+    (chosen, _start, lang): (Option<usize>, u32, Lang),
     known_diagnostics: f64,
     known: &Known,
 ) -> Result<Object, JsValue> {
@@ -376,18 +348,10 @@ fn answer(
     let diagnostics =
         if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan, lang))? };
     set(&o, "diagnostics", &diagnostics);
-    let keys = PlanKeys::of(plan);
     let all = keys.all_listed;
     keyed(&o, known, Part::Threads, all, || {
         sent.answer(known, all, &keys.listed, |i| to_js(&ThreadSummary::of(&plan.threads[i])))
     })?;
-    keyed(&o, known, Part::Side, keys.side, || {
-        if !known.keeps() {
-            return Ok(packed_to_js(&memo.side(plan, &keys.threads)));
-        }
-        let holds = memo.last().map(js_key) == known.key(Part::Side);
-        Ok(pieces_to_js(&memo.pieces(plan, &keys.threads, keys.side, holds)))
-    })?;
-    thread_parts(&o, plan, &keys, pick(plan, thread), start, known)?;
+    thread_parts(&o, plan, keys, chosen, known)?;
     Ok(o)
 }

@@ -9,14 +9,15 @@
 // the chosen thread's passes as columns), frame (once the drawing that
 // includes an edit is on screen), hover, pick, reply, error.
 
-import { SceneView } from './sceneview.js';
-import { setLayout } from './render.js';
-import { labelIn, labelTable } from './i18n.js';
+import { SceneView } from './view/sceneview.js';
 import { HeldParts } from './parts.js';
+
+/** The views, in the order of the session's `shown` keys. */
+const VIEWS = ['side', 'tooth', 'starts'];
 
 export class Engine {
   /**
-   * @param core the initialised wasm module (`Session`, `scene_layout`, `style_names`, …)
+   * @param core the initialised wasm module (`Session`, `dialects`, …)
    * @param post `post(message, transfer)` to the page
    * @param afterCommit runs a function once the current frame is on screen
    * @param opts `{immediate}`: draw a plan's views at once rather than at the
@@ -29,13 +30,10 @@ export class Engine {
     this.post = post;
     this.afterCommit = afterCommit;
     this.session = new core.Session();
-    this.styleNames = core.style_names();
-    setLayout(core.scene_layout());
     this.views = {};
     this.held = new HeldParts();
     this.lang = 'en';
     this.result = null;
-    this.lastGood = null;
     this.diagnosticsKey = -1;
     this.thread = 0;
     this.start = 1;
@@ -61,10 +59,8 @@ export class Engine {
     }
   }
 
-  tr = (key, value) => labelIn(this.lang, key, value);
-
   on_view({ name, canvas, stretch }) {
-    this.views[name] = new SceneView(canvas, { styleNames: this.styleNames, tr: this.tr, name, stretch, onDrawn: () => this.drawn() });
+    this.views[name] = new SceneView(canvas, { session: this.session, name, stretch, onDrawn: () => this.drawn() });
   }
 
   on_size({ name, w, h, dpr }) {
@@ -79,17 +75,18 @@ export class Engine {
     else if (op === 'fit') v.fit();
     else if (op === 'stretch') this.post({ type: 'reply', id, data: v.toggleStretch() });
     else if (op === 'leave') {
-      if (v.hovered !== -1) this.post({ type: 'hover', name, info: null });
-      v.hovered = -1;
+      if (v.hovered !== null) this.post({ type: 'hover', name, info: null });
+      v.hovered = null;
     } else if (op === 'hover') {
-      const i = v.pick(x, y);
-      if (i !== v.hovered) {
-        v.hovered = i;
-        this.post({ type: 'hover', name, info: v.info(i), clientX, clientY });
+      const info = v.pick(x, y);
+      const key = info ? JSON.stringify(info) : null;
+      if (key !== v.hovered) {
+        v.hovered = key;
+        this.post({ type: 'hover', name, info, clientX, clientY });
       }
     } else if (op === 'pick') {
-      const i = v.pick(x, y);
-      if (i >= 0) this.post({ type: 'pick', name, info: v.info(i) });
+      const info = v.pick(x, y);
+      if (info) this.post({ type: 'pick', name, info });
     }
   }
 
@@ -97,7 +94,7 @@ export class Engine {
   on_lang({ lang }) {
     this.lang = lang === 'zh' ? 'zh' : 'en';
     this.session.set_lang(this.lang);
-    for (const v of Object.values(this.views)) v.draw();
+    for (const v of Object.values(this.views)) v.relabel();
     if (!this.result) return;
     const r = this.held.fill(this.session.relabel());
     this.diagnosticsKey = r.diagnosticsKey;
@@ -108,24 +105,20 @@ export class Engine {
   /**
    * Plans `text` and shows it; answers with a result now and a frame once
    * drawn. `fresh`: the text is another program's, so an alarm in it shows
-   * no greyed drawing of the program before.
+   * no greyed drawing of the program before; `keep`: the page says the
+   * drawing on screen was left (the session keeps it as the good one).
    */
   on_plan({ seq, text, dialect, settings, thread, start, input, fresh, keep }) {
-    if (fresh) this.lastGood = null;
-    // The page says the good drawing on screen was left (shown a while before this edit): it is the one kept.
-    if (keep && this.candidate) this.lastGood = this.candidate;
-    this.candidate = null;
     if (thread !== undefined) this.thread = thread;
     if (start !== undefined) this.start = start;
     const t0 = performance.now();
     let r;
     try {
-      r = this.held.fill(this.session.update(text, dialect, settings, this.thread, this.start, this.diagnosticsKey, this.held.known()));
+      r = this.held.fill(this.session.update(text, dialect, settings, this.thread, this.start, this.diagnosticsKey, this.held.known(), !!fresh, !!keep));
     } catch (e) {
-      // A planner failure (which must not happen) keeps the last drawing, greyed.
+      // A planner failure (which must not happen) leaves the drawings on screen as they are (the views cannot draw).
       this.diagnosticsKey = -1;
       this.held.clear();
-      this.showStale();
       this.post({ type: 'error', message: String(e && e.message ? e.message : e), crashed: true });
       return;
     }
@@ -137,30 +130,20 @@ export class Engine {
     this.maybeFrameNow();
   }
 
-  /** Shows answer `r` in the views: greyed last good drawing when it has an alarm. */
+  /** Shows answer `r` in the views: what the session shows (the last good drawing, greyed, while the text has an alarm). */
   apply(r) {
+    const before = this.thread;
     this.result = r;
     this.thread = r.thread ?? 0;
     if (r.diagnostics !== null) this.diagnosticsKey = r.diagnosticsKey;
-    const v = this.views;
-    if (r.alarms > 0 && this.lastGood) {
-      this.showStale();
-    } else {
-      if (r.good) this.candidate = { side: r.side, tooth: r.tooth, starts: r.starts };
-      v.side?.setScene(r.side, false);
-      v.tooth?.setScene(r.tooth, false);
-      v.starts?.setScene(r.starts, false);
-    }
-    v.side?.setThread(this.thread);
+    this.show(r.shown, r.stale);
+    if (this.thread !== before) this.views.side?.relabel();
     this.refreshHighlight();
   }
 
-  showStale() {
-    const g = this.lastGood;
-    if (!g) return;
-    this.views.side?.setScene(g.side, true);
-    this.views.tooth?.setScene(g.tooth, true);
-    this.views.starts?.setScene(g.starts, true);
+  /** Each view shows the scene of its key (`shown`: side, tooth, starts). */
+  show(shown, stale) {
+    VIEWS.forEach((name, i) => this.views[name]?.setShown(shown[i] || null, stale));
   }
 
   /** Posts what the page's lists need; lists it already has are not sent again. */
@@ -184,7 +167,7 @@ export class Engine {
         moves: r.moves,
         timeS: r.timeS,
         good: r.good,
-        stale: r.alarms > 0 && !!this.lastGood,
+        stale: r.stale,
         settingErrors: r.settingErrors,
         diagnostics: r.diagnostics,
         diagnosticsKey: r.diagnosticsKey,
@@ -203,12 +186,9 @@ export class Engine {
     this.thread = thread;
     this.start = start ?? 1;
     const s = this.held.fill(this.session.thread_scenes(thread, this.start));
-    Object.assign(this.result, { thread: s.thread, passes: s.passes, tooth: s.tooth, starts: s.starts });
-    this.views.side?.setThread(thread);
-    if (!(this.result.alarms > 0 && this.lastGood)) {
-      this.views.tooth?.setScene(s.tooth, false);
-      this.views.starts?.setScene(s.starts, false);
-    }
+    Object.assign(this.result, { thread: s.thread, passes: s.passes, shown: s.shown, stale: s.stale });
+    this.show(s.shown, s.stale);
+    this.views.side?.relabel();
     this.refreshHighlight();
     this.postResult(this.result, seq, null);
   }
@@ -223,12 +203,7 @@ export class Engine {
   /** What the pointer or the table points at, else what the cursor line draws (a lighter mark). */
   refreshHighlight() {
     const h = this.hover;
-    for (const v of Object.values(this.views)) {
-      const set = new Set();
-      if (h && h.pass >= 0) for (const i of v.itemsOfPass(h.thread, h.pass)) set.add(i);
-      else for (const l of h ? h.lines : [this.cursor]) for (const i of v.itemsOfLine(l)) set.add(i);
-      v.setHighlight(set, !h);
-    }
+    for (const v of Object.values(this.views)) v.setMark(h || { lines: [this.cursor] }, !h);
   }
 
   /** After a draw: once every view that had to draw has, the awaited frame is reported. */
@@ -244,17 +219,15 @@ export class Engine {
   }
 
   /**
-   * A view as a file: SVG from the planner's SVG writer (the one `screwcut
-   * svg` uses), drawn at the view's size with its transform and its labels
-   * where the canvas placed them, so the export is what the view shows;
-   * PNG as the view draws it.
+   * A view as a file: SVG from the core's writer of the view's display list
+   * (what `screwcut svg` writes), PNG as the canvas paints the same list:
+   * either is what the view shows, at its size and transform.
    */
   async on_export({ id, name, format, scale }) {
     const v = this.views[name];
     let data = null;
-    if (v && format === 'svg') {
-      data = this.session.svg(name, this.thread, this.start, [v.cssW, v.cssH], !!v.stretch, labelTable(this.lang), v.svgLayout());
-    } else if (v) data = await v.toPNG(scale || 2);
+    if (v && format === 'svg') data = v.svg();
+    else if (v) data = await v.toPNG(scale || 2);
     this.post({ type: 'reply', id, data });
   }
 
@@ -285,24 +258,16 @@ export class Engine {
   }
 
   /**
-   * For tests and benchmarks: `view` (what view `name` shows), `pixels`
-   * (the inked pixels of its canvas), `draws` (each view's last drawing time, ms), `labels` (its labels as placed), `svg_layout` (what its SVG export
-   * is drawn with: `screwcut svg --layout`), `layout`, `result` (keys and thread
-   * list of the last answer), `same_as_full` (whether the side section shown
-   * equals a full build), `transfer` (the cost of a side scene as typed
-   * arrays, objects and JSON).
+   * For tests and benchmarks: `view` (what view `name` shows: key,
+   * transform, stale, mark, size), `pixels` (the inked pixels of its
+   * canvas), `draws` (each view's last drawing time, ms), `labels` (its
+   * labels as placed), `svg` (its SVG export), `result` (keys and thread
+   * list of the last answer).
    */
   on_inspect({ id, what, name }) {
     const v = this.views[name];
     const data = {
-      view: () =>
-        v && {
-          scene: v.scene && { items: v.scene.items, coords: v.scene.coords, lines: v.scene.lines, labels: v.scene.labels, styles: v.scene.prepared?.styles, bounds: v.scene.bounds },
-          transform: v.transform(),
-          stale: v.stale,
-          highlight: v.highlight ? [...v.highlight] : [],
-          size: [v.cssW, v.cssH],
-        },
+      view: () => v && { key: v.key, transform: v.transform(), stale: v.stale, mark: v.mark, size: [v.cssW, v.cssH], ops: v.list ? v.list.ops.length / 7 : 0 },
       pixels: () => {
         if (!v) return null;
         const c = v.canvas;
@@ -312,47 +277,14 @@ export class Engine {
         return { n, w: c.width, h: c.height };
       },
       draws: () => Object.fromEntries(Object.entries(this.views).map(([k, view]) => [k, view.lastDraw])),
-      layout: () => this.core.scene_layout(),
       labels: () => v && v.labels(),
-      svg_layout: () => v && v.svgLayout(),
+      svg: () => v && v.svg(),
       result: () => {
         const r = this.result;
-        return r && { threads: r.threads, thread: r.thread, sideKey: r.sideKey, toothKey: r.toothKey, resumedAt: r.resumedAt, toothLabels: r.tooth?.labels };
+        return r && { threads: r.threads, thread: r.thread, shown: r.shown && Array.from(r.shown), stale: r.stale, resumedAt: r.resumedAt };
       },
-      same_as_full: () => {
-        const shown = this.views.side.scene;
-        const full = this.session.side_scene_as('packed');
-        const eq = (a, b) => a.length === b.length && a.every((x, i) => Object.is(x, b[i]));
-        return ['coords', 'items', 'lines', 'bounds', 'focus'].filter((k) => !eq(shown[k], full[k])).concat(shown.labels === full.labels ? [] : ['labels']);
-      },
-      transfer: () => this.transferCosts(),
     }[what];
     this.post({ type: 'reply', id, data: data ? data() : null });
-  }
-
-  /** What building, moving and reading a side scene costs in each encoding (ms). */
-  transferCosts() {
-    const s = this.session;
-    const time = (f, n = 15) => {
-      f();
-      const t0 = performance.now();
-      for (let i = 0; i < n; i++) f();
-      return (performance.now() - t0) / n;
-    };
-    const walk = (x) => {
-      let sum = 0;
-      if (x.coords) for (let i = 0; i < x.coords.length; i++) sum += x.coords[i];
-      else for (const it of x.items) for (const val of Object.values(it.shape)) if (Array.isArray(val)) for (const p of val) sum += Array.isArray(p) ? p[0] + p[1] : p;
-      return sum;
-    };
-    return {
-      items: s.side_scene_as('packed').items.length / this.core.scene_layout().stride,
-      packed: time(() => walk(s.side_scene_as('packed'))),
-      objects: time(() => walk(s.side_scene_as('objects'))),
-      json: time(() => walk(JSON.parse(s.side_scene_as('json')))),
-      threadsObjects: time(() => s.threads_as('objects')),
-      threadsJson: time(() => JSON.parse(s.threads_as('json'))),
-    };
   }
 }
 

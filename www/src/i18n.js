@@ -1,5 +1,5 @@
-// English and Chinese labels: the page's own text (data-i18n attributes and
-// t()) and the scene labels (keys from src/diagram with a value put in).
+// English and Chinese text of the page (data-i18n attributes and t()). The
+// drawings' labels are the core's (src/draw/words.rs), in its display lists.
 
 const EN = {
   title: 'screwcut — lathe thread G-code previewer',
@@ -141,35 +141,7 @@ const EN = {
   kind_face: 'face',
   default: 'default',
   range: 'range',
-  // Scene labels.
-  dia_major: 'major Ø{}',
-  dia_minor: 'minor Ø{}',
-  lead: 'Ph {}',
-  pitch: 'P {}',
-  length: 'L {}',
-  taper: 'taper {}',
-  delta1: 'δ1 {}',
-  delta2: 'δ2 {}',
-  height: 'h {}',
-  tool_angle: 'tool angle {}',
-  start_of: 'start {}',
-  pass_depth: '{}',
-  pass_depth_finish: '{} finish',
-  pass_depth_spring: '{} spring',
-  infeed_radial: 'radial infeed',
-  infeed_left: 'left flank infeed',
-  infeed_right: 'right flank infeed',
-  infeed_alternating: 'alternating flanks',
-  infeed_programmed: 'infeed as programmed',
-  one_rev: 'one-rev signal {}',
-  axial_offsets: 'axial offsets lead·θ/360',
-  start_angle: '{}',
-  starts_capped: '{} starts: the first 360 are drawn',
-  moves_capped: 'motions outside the threads: only the first {} are drawn',
-  detail_passes: 'every n-th pass drawn (n/all): {}',
-  detail_starts: 'one start drawn, the others cut the same path (1/starts): {}',
-  detail_starts_passes: 'one start and every n-th pass drawn (1/starts n/all): {}',
-  square_tool: '0° tool: width {} assumed',
+  lead_of: 'Ph {v}',
   // Embedded previews.
   embed_summary: '{threads#thread|threads} · {passes#pass|passes} · {alarms#alarm|alarms} · {warnings#warning|warnings}',
   open_in_editor: 'Open in editor',
@@ -317,34 +289,7 @@ const ZH = {
   kind_face: '端面螺纹',
   default: '默认',
   range: '范围',
-  dia_major: '大径 Ø{}',
-  dia_minor: '小径 Ø{}',
-  lead: '导程 {}',
-  pitch: '螺距 {}',
-  length: '长 {}',
-  taper: '锥度 {}',
-  delta1: 'δ1 {}',
-  delta2: 'δ2 {}',
-  height: '牙高 {}',
-  tool_angle: '刀尖角 {}',
-  start_of: '第 {} 头',
-  pass_depth: '{}',
-  pass_depth_finish: '{} 精车',
-  pass_depth_spring: '{} 光刀',
-  infeed_radial: '径向进刀(中线)',
-  infeed_left: '左侧面进刀',
-  infeed_right: '右侧面进刀',
-  infeed_alternating: '左右交替进刀',
-  infeed_programmed: '按程序进刀',
-  one_rev: '一转信号 {}',
-  axial_offsets: '轴向偏移 导程·θ/360',
-  start_angle: '{}',
-  starts_capped: '{} 头：只画前 360 头',
-  moves_capped: '螺纹以外的运动只画前 {} 段',
-  detail_passes: '每隔 n 次走刀画一次(n/总数)：{}',
-  detail_starts: '只画一头，其余各头路径相同(1/头数)：{}',
-  detail_starts_passes: '只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}',
-  square_tool: '0° 刀：假定刀宽 {}',
+  lead_of: '导程 {v}',
   embed_summary: '{threads} 条螺纹 · {passes} 次走刀 · {alarms} 报警 · {warnings} 警告',
   open_in_editor: '在编辑器中打开',
   loading: '加载中…',
@@ -422,11 +367,6 @@ export function t(key, vars) {
   return textIn(lang, key, vars);
 }
 
-/** A scene label: the key's pattern with the value in place of `{}`. */
-export function label(key, value) {
-  return labelIn(lang, key, value);
-}
-
 /**
  * Page text by key in language `l` (en, zh), whatever the page's language is.
  * `{name}` is replaced by `vars.name`; `{name#one|other}` by the number and
@@ -441,20 +381,6 @@ export function textIn(l, key, vars) {
     s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
   }
   return s;
-}
-
-/** Every text of language `l` as `[key, template, key, template…]` (the SVG writer's label templates). */
-export function labelTable(l) {
-  const out = [];
-  for (const [k, v] of Object.entries(TABLES[l] || EN)) if (typeof v === 'string') out.push(k, v);
-  return out;
-}
-
-/** A scene label in language `l`. */
-export function labelIn(l, key, value) {
-  const pattern = (TABLES[l] || EN)[key] ?? EN[key];
-  if (pattern === undefined) return value ? `${key} ${value}` : key;
-  return pattern.includes('{}') ? pattern.replace('{}', value) : pattern;
 }
 
 /** CodeMirror's own words (its search panel) in Chinese; English is its default. */

@@ -5,7 +5,7 @@
 // with an alarm keeps the last good drawing and table, greyed.
 
 import { createEditor } from './editor.js';
-import { t, label, setLang, getLang, EDITOR_PHRASES_ZH } from './i18n.js';
+import { t, setLang, getLang, EDITOR_PHRASES_ZH } from './i18n.js';
 import { openFile, fileName, fillPrintSheet } from './files.js';
 import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
 import { Library, inherited } from './programs.js';
@@ -219,7 +219,7 @@ function onFrame(m) {
 // ---- lists ----
 
 function renderLists(r) {
-  const stale = r.alarms > 0 && lastGood && lastGood !== r;
+  const stale = r.stale && lastGood && lastGood !== r;
   setText(
     $('summary'),
     t('summary', { threads: r.threads.length, moves: r.moves, alarms: r.alarms, warnings: r.warnings, notes: r.notes }) +
@@ -250,7 +250,7 @@ function renderThreads(r, stale) {
   const options = r.threads
     .map((th, i) => {
       const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
-      const text = `${i + 1}: ${threadName(th, t)} · ${label('lead', num(th.lead))} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
+      const text = `${i + 1}: ${threadName(th, t)} · ${t('lead_of', { v: num(th.lead) })} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
       return `<option value="${i}">${esc(text)}</option>`;
     })
     .join('');

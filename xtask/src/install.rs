@@ -61,11 +61,13 @@ pub fn ensure_wasm_bindgen() -> Result {
     run("cargo", &["install", "wasm-bindgen-cli", "--version", &want, "--force"], None)
 }
 
-/// Installs Debian's Chromium, ChromeDriver and CJK fonts (Chinese labels) when they are missing.
+/// Installs Debian's Chromium, ChromeDriver, DejaVu Sans (the labels' font:
+/// the core places labels with its advances) and CJK fonts (Chinese labels) when they are missing.
 pub fn ensure_chromium() -> Result {
     ensure_debian(&[
         ("/usr/bin/chromium", "chromium"),
         ("/usr/bin/chromedriver", "chromium-driver"),
+        ("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "fonts-dejavu-core"),
         ("/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc", "fonts-noto-cjk"),
     ])
 }

@@ -2,8 +2,7 @@
 // loaded the first time an element starts, and one IntersectionObserver
 // that starts each element when it comes near the viewport.
 
-import init, { Session, style_names as styleNamesOf, scene_layout as sceneLayout, dialects as dialectsOf } from '../../pkg/screwcut.js';
-import { setLayout } from '../render.js';
+import init, { Session, dialects as dialectsOf } from '../../pkg/screwcut.js';
 
 /**
  * The directory of this script: the wasm and, by default, the app are next
@@ -18,18 +17,13 @@ export const SRC_MAX_BYTES = 1024 * 1024;
 export const SRC_TIMEOUT_MS = 15_000;
 
 let loading = null;
-let styleNames = null;
 
 /**
  * Loads the planner once for the whole page; resolves to `{Session,
- * styleNames, dialects}`. Each element plans in a `Session` of its own (src/wasm/session.rs).
+ * dialects}`. Each element plans and draws in a `Session` of its own (src/wasm/session.rs).
  */
 export function loadCore() {
-  loading ||= init({ module_or_path: new URL('screwcut_bg.wasm', HERE) }).then(() => {
-    styleNames = styleNamesOf();
-    setLayout(sceneLayout());
-    return { Session, styleNames, dialects: dialectsOf() };
-  });
+  loading ||= init({ module_or_path: new URL('screwcut_bg.wasm', HERE) }).then(() => ({ Session, dialects: dialectsOf() }));
   return loading;
 }
 

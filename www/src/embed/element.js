@@ -24,9 +24,9 @@
 // `result` (the planner's last answer), `start()`. Event `screwcut-plan`
 // after every plan, with counts in `detail`.
 
-import { SceneView } from '../sceneview.js';
+import { SceneView } from '../view/sceneview.js';
 import { bindCanvas } from '../input.js';
-import { textIn, labelIn } from '../i18n.js';
+import { textIn } from '../i18n.js';
 import { esc, num } from '../table.js';
 import { VirtualRows, passHead, passRow, passObjects, threadName } from '../lists.js';
 import { jsonFragment, knownDialect, DEFAULT_DIALECT } from '../fragment.js';
@@ -199,11 +199,10 @@ export class ScrewcutPreview extends HTMLElement {
   }
 
   _makeViews() {
-    const tr = (key, value) => labelIn(this._lang(), key, value);
     for (const name of this._viewNames) {
       if (name === 'table') continue;
       const canvas = this.shadowRoot.querySelector(`.view[data-view="${name}"] canvas`);
-      const view = new SceneView(canvas, { styleNames: this._styleNames, tr, name, stretch: name === 'side' });
+      const view = new SceneView(canvas, { session: this._session, name, stretch: name === 'side' });
       this._views[name] = view;
       const binding = bindCanvas(
         canvas,
@@ -213,20 +212,21 @@ export class ScrewcutPreview extends HTMLElement {
           zoom: (x, y, k) => view.zoomAt(x, y, k),
           fit: () => view.fit(),
           hover: (x, y, clientX, clientY) => {
-            const i = view.pick(x, y);
-            if (i !== view.hovered) {
-              view.hovered = i;
-              this._onHover(i >= 0 ? { ...view.info(i), x: clientX, y: clientY } : null);
-            } else if (i >= 0) this._moveTip(clientX, clientY);
+            const info = view.pick(x, y);
+            const key = info ? JSON.stringify(info) : null;
+            if (key !== view.hovered) {
+              view.hovered = key;
+              this._onHover(info ? { ...info, x: clientX, y: clientY } : null);
+            } else if (info) this._moveTip(clientX, clientY);
           },
           leave: () => {
-            if (view.hovered >= 0) {
-              view.hovered = -1;
+            if (view.hovered !== null) {
+              view.hovered = null;
               this._onHover(null);
             }
           },
           pick: (x, y) => {
-            const info = view.info(view.pick(x, y));
+            const info = view.pick(x, y);
             if (info && this._editor && info.lines.length) this._gotoLine(info.lines[0]);
           },
         },
@@ -253,7 +253,6 @@ export class ScrewcutPreview extends HTMLElement {
       this._renderListing();
       this._core = core;
       this._session ||= new core.Session();
-      this._styleNames = core.styleNames;
       if (this._editor) this._editor.value = this.program;
       this._setState('ready');
       this._makeViews();
@@ -296,7 +295,8 @@ export class ScrewcutPreview extends HTMLElement {
     let r;
     try {
       this._session.set_lang(this._lang());
-      r = this._held.fill(this._session.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known()));
+      // Every good plan is kept as the drawing shown greyed while a later text has an alarm.
+      r = this._held.fill(this._session.update(text, this._dialect(), settingsLines(this._settings()), thread, 1, -1, this._held.known(), false, true));
     } catch (e) {
       this._held.clear();
       this._fail(e, true);
@@ -308,13 +308,17 @@ export class ScrewcutPreview extends HTMLElement {
       r.passes = passObjects(r.passes);
     }
     this._result = r;
-    const stale = r.alarms > 0 && this._lastGood;
+    const stale = r.stale && this._lastGood;
     if (r.good) this._lastGood = r;
     const shown = stale ? this._lastGood : r;
+    const keys = { side: r.shown[0], tooth: r.shown[1], starts: r.shown[2] };
+    const relabel = this._drawnLang !== this._lang();
     for (const [name, view] of Object.entries(this._views)) {
-      view.setScene(shown[name], !!stale);
-      view.setThread(shown.thread ?? 0);
+      view.setShown(keys[name] || null, r.stale);
+      if (relabel || (name === 'side' && shown.thread !== this._drawnThread)) view.relabel();
     }
+    this._drawnThread = shown.thread;
+    this._drawnLang = this._lang();
     this._renderTable(shown, !!stale);
     this._renderBar(r, !!stale);
     this._renderDiagnostics(r.diagnostics);
@@ -379,7 +383,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._sum.textContent = sum;
     this._sum.classList.toggle('stale', stale || r.alarms > 0);
     const options = r.threads
-      .map((x, i) => `<option value="${i}">${i + 1}: ${esc(threadName(x, (k) => this._t(k)))} · ${esc(labelIn(this._lang(), 'lead', num(x.lead)))} · L${x.line}–${x.end_line}</option>`)
+      .map((x, i) => `<option value="${i}">${i + 1}: ${esc(threadName(x, (k) => this._t(k)))} · ${esc(this._t('lead_of', { v: num(x.lead) }))} · L${x.line}–${x.end_line}</option>`)
       .join('');
     if (this._select.dataset.html !== options) {
       this._select.innerHTML = options;
@@ -453,7 +457,7 @@ export class ScrewcutPreview extends HTMLElement {
     const tip = this._tip;
     const r = this._result;
     for (const view of Object.values(this._views)) {
-      view.setHighlight(info && info.pass >= 0 ? new Set(view.itemsOfPass(info.thread, info.pass)) : null);
+      view.setMark(info && info.pass >= 0 ? info : null);
     }
     this._rows?.mark(info && info.thread === r?.thread ? info.pass : -1);
     if (!info) {

@@ -1,14 +1,14 @@
-//! The fit that makes room for labels (`fitLabels` in `www/src/labels.js`):
+//! The fit that makes room for labels:
 //! the transform whose scale leaves room, inside the page, for the scene's
 //! focus and for every label where placement puts it in a view without
 //! bounds. World extents grow with the scale, pixel margins do not, so the
 //! largest scale is solved per axis (a bisection on a convex function), a
 //! few rounds since the places depend on the scale.
 
-use super::labels::{EDGE, Kind, Label, View, dim_frame, scene_labels};
+use super::labels::{EDGE, Kind, Label, Room, dim_frame, scene_labels};
 use super::lines::{LineIndex, scene_lines};
 use super::place::{dim_segment, place};
-use super::{Options, Transform};
+use super::{View, Transform};
 use crate::diagram::scene::{Pt, Scene};
 
 /// The geometry keeps this far from the page's edges.
@@ -86,7 +86,7 @@ fn max_scale(
 }
 
 /// The labels near the focus (a note at the end of far motions does not widen the fit), by priority.
-fn near_labels(scene: &Scene, o: &Options, width: f64) -> Vec<Label> {
+fn near_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
     let f = scene.focus;
     let g = 0.25 * f.width().max(f.height());
     let near = |p: Pt| p[0] >= f.x0 - g && p[0] <= f.x1 + g && p[1] >= f.y0 - g && p[1] <= f.y1 + g;
@@ -103,7 +103,7 @@ fn elements(scene: &Scene, set: &mut [Label], xf: &Transform, lines: &LineIndex)
         Element { x: f.x0, y: f.y0, l: -p, r: p, t: -p, b: p },
         Element { x: f.x1, y: f.y1, l: -p, r: p, t: -p, b: p },
     ];
-    place(set, xf, &View { w: 0.0, h: 0.0, all: true }, Some(lines));
+    place(set, xf, &Room { w: 0.0, h: 0.0, all: true }, Some(lines));
     for l in set.iter() {
         elements_of(l, xf, &mut els);
     }
@@ -113,7 +113,7 @@ fn elements(scene: &Scene, set: &mut [Label], xf: &Transform, lines: &LineIndex)
 /// The transform that fits the scene's focus and its labels (drawn with
 /// `o`) into a `w × h` page, centred; with `o.stretch`, the vertical scale
 /// may exceed the horizontal one to fill the height.
-pub(super) fn fit(scene: &Scene, o: &Options, (w, h): (f64, f64)) -> Transform {
+pub(super) fn fit(scene: &Scene, o: &View, (w, h): (f64, f64)) -> Transform {
     let f = scene.focus.or_unit();
     let (fw, fh) = (f.width().max(1e-9), f.height().max(1e-9));
     let p = GEOMETRY_PAD;

@@ -1,22 +1,18 @@
-//! The pens of `www/src/render.js` (`PENS`, `ROLE_STROKE`, `areaColour`):
-//! what each style is drawn with, as SVG attributes.
+//! The pens of the drawings: what each style is drawn with, the colours of
+//! finishing and spring passes and of each pass's area, and the highlight.
 
-use super::{f, push};
+use super::list::Pen;
 use crate::diagram::scene::{Item, Shape, Style};
 use crate::thread::Role;
 
-/// A pen: stroke, width, dashes, fill (of closed shapes), text colour and opacity.
-#[derive(Clone, Debug, PartialEq)]
-pub(super) struct Pen {
-    pub stroke: Option<String>,
-    pub width: f64,
-    pub dash: &'static [f64],
-    pub fill: Option<String>,
-    pub text: Option<&'static str>,
-    pub alpha: Option<f64>,
-}
+/// The highlight's colour (what the pointer or the cursor line marks).
+pub(super) const HIGHLIGHT: &str = "#f59e0b";
+/// The halo of a highlighted label's text: strong, light.
+pub(super) const HIGHLIGHT_HALO: [&str; 2] = ["#fcd34d", "#fde68a"];
+/// The halo behind a label's text.
+pub(super) const HALO: &str = "rgba(255,255,255,0.85)";
 
-/// A pen of `render.js` as constants.
+/// A style's pen as constants, with the colour of its texts.
 #[derive(Clone, Copy)]
 struct Def {
     stroke: Option<&'static str>,
@@ -26,14 +22,13 @@ struct Def {
     text: Option<&'static str>,
     alpha: Option<f64>,
 }
-
 const NONE: Def = Def { stroke: None, width: 1.0, dash: &[], fill: None, text: None, alpha: None };
 
 const fn line(stroke: &'static str, width: f64, dash: &'static [f64]) -> Def {
     Def { stroke: Some(stroke), width, dash, ..NONE }
 }
 
-/// The pen of a style (`PENS` in `render.js`).
+/// The pen of a style.
 fn def(style: Style) -> Def {
     match style {
         Style::Axis => line("#8a94a6", 1.0, &[14.0, 3.0, 2.0, 3.0]),
@@ -63,7 +58,7 @@ fn def(style: Style) -> Def {
 }
 
 /// The fill of pass `pass`'s area (distinct hues; finishing green, spring
-/// violet); `pass` is −1 for an area of no pass, as `render.js` computes it.
+/// violet); `pass` is −1 for an area of no pass.
 pub(super) fn area_colour(pass: i64, role: Option<Role>) -> String {
     match role {
         Some(Role::Finish) => "rgba(16,185,129,0.65)".into(),
@@ -72,17 +67,23 @@ pub(super) fn area_colour(pass: i64, role: Option<Role>) -> String {
     }
 }
 
-/// The pen of `item` (`colourPen` in `render.js`): its style's, an area
-/// filled by its pass, a finishing or spring pass's lines in their own colour.
-pub(super) fn pen_of(item: &Item) -> Pen {
+/// An item's pen and the colour of its text.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct ItemPen {
+    pub pen: Pen,
+    pub text: String,
+}
+
+/// The pen of `item`: its style's, an area filled by its pass, a finishing
+/// or spring pass's lines in their own colour.
+pub(super) fn pen_of(item: &Item) -> ItemPen {
     let d = def(item.style);
     let mut p = Pen {
         stroke: d.stroke.map(str::to_string),
         width: d.width,
-        dash: d.dash,
+        dash: d.dash.to_vec(),
         fill: d.fill.map(str::to_string),
-        text: d.text,
-        alpha: d.alpha,
+        alpha: d.alpha.unwrap_or(1.0),
     };
     let role = match item.shape {
         Shape::Polyline { .. } | Shape::Polygon { .. } | Shape::Circle { .. } | Shape::Arrow { .. } => item.role,
@@ -97,40 +98,13 @@ pub(super) fn pen_of(item: &Item) -> Pen {
             _ => {}
         }
     }
-    p
+    let text = d.text.or(d.stroke).unwrap_or("#111827").to_string();
+    ItemPen { pen: p, text }
 }
 
-impl Pen {
-    /// A plain stroke of `colour` and `width`.
-    pub fn thin(colour: &str, width: f64) -> Pen {
-        Pen { stroke: Some(colour.to_string()), width, dash: &[], fill: None, text: None, alpha: None }
-    }
-
-    /// A plain fill of `colour`.
-    pub fn filled(colour: &str) -> Pen {
-        Pen { stroke: None, width: 1.0, dash: &[], fill: Some(colour.to_string()), text: None, alpha: None }
-    }
-
-    /// The colour of the pen's text (`pen.text || pen.stroke` in `render.js`).
-    pub fn text_colour(&self) -> &str {
-        self.text.or(self.stroke.as_deref()).unwrap_or("#111827")
-    }
-
-    /// Fill, stroke, dashes and opacity as SVG attributes; a fill only for
-    /// closed shapes, as the canvas fills them.
-    pub fn attrs(&self, closed: bool) -> String {
-        let fill = self.fill.as_deref().filter(|_| closed).unwrap_or("none");
-        let mut a = format!("fill=\"{fill}\"");
-        if let Some(s) = &self.stroke {
-            push(&mut a, format_args!(" stroke=\"{s}\" stroke-width=\"{}\"", f(self.width)));
-            if !self.dash.is_empty() {
-                let d: Vec<String> = self.dash.iter().map(|v| f(*v)).collect();
-                push(&mut a, format_args!(" stroke-dasharray=\"{}\"", d.join(" ")));
-            }
-        }
-        if let Some(o) = self.alpha {
-            push(&mut a, format_args!(" opacity=\"{}\"", f(o)));
-        }
-        a
+impl ItemPen {
+    /// The stroke colour, else the text colour.
+    pub fn colour(&self) -> &str {
+        self.pen.stroke.as_deref().unwrap_or(&self.text)
     }
 }

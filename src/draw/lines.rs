@@ -1,5 +1,4 @@
-//! The drawing's lines, which labels prefer not to cross (`sceneLines` in
-//! `www/src/render.js`, `lineIndex` in `www/src/labels.js`): the segments
+//! The drawing's lines, which labels prefer not to cross: the segments
 //! of paths, arrows and circles in a grid of world cells built once per
 //! scene; a label's box on the page is taken back to world coordinates to
 //! find the lines near it.

@@ -1,10 +1,10 @@
-//! The labels of a scene and where each may go (`www/src/labels.js`): a
+//! The labels of a scene and where each may go: a
 //! scene's dimensions and texts are anchored in world coordinates but sized
 //! in pixels; each becomes a [`Label`] with its width, its priority and its
 //! candidate places, best first; placement chooses among them.
 
 use super::text::{measure, wrap};
-use super::{FONT_SIZE, MAX_ANNOTATED, Options, Transform};
+use super::{FONT_SIZE, MAX_ANNOTATED, View, Transform};
 use crate::diagram::scene::{Anchor, Pt, Scene, Shape, Style};
 
 /// Height of a label's box: 12 px text and its halo.
@@ -134,10 +134,10 @@ impl Label {
     }
 }
 
-/// The labels drawn of `scene` with `o` (`sceneLabels` in `render.js`): with
+/// The labels drawn of `scene` with `o`: with
 /// many annotated threads, only the chosen thread's; notes wider than about
 /// half of a `width` px view wrapped.
-pub(super) fn scene_labels(scene: &Scene, o: &Options, width: f64) -> Vec<Label> {
+pub(super) fn scene_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
     let mut threads: Vec<u32> = scene
         .items
         .iter()
@@ -188,7 +188,7 @@ pub(super) fn scene_labels(scene: &Scene, o: &Options, width: f64) -> Vec<Label>
 
 /// The view labels are placed in: `w × h` px, or without bounds (`all`, for the fit).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct View {
+pub(super) struct Room {
     pub w: f64,
     pub h: f64,
     pub all: bool,
@@ -233,7 +233,7 @@ pub(super) fn dim_frame(lab: &Label, xf: &Transform) -> Option<DimFrame> {
 }
 
 /// Where the line of a dimension at offset `o` is inside the view: `[t0, t1]` of a→b, or `None`.
-fn visible_range(fr: &DimFrame, o: f64, view: &View) -> Option<(f64, f64)> {
+fn visible_range(fr: &DimFrame, o: f64, view: &Room) -> Option<(f64, f64)> {
     if view.all {
         return Some((0.0, 1.0));
     }
@@ -268,7 +268,7 @@ fn visible_range(fr: &DimFrame, o: f64, view: &View) -> Option<(f64, f64)> {
 /// past the arrowhead in line with it, or beside its line towards the axis;
 /// the line runs to the axis when the axis is in view, else as far as the
 /// text needs.
-fn half_candidates(offset: f64, fr: &DimFrame, view: &View) -> Vec<At> {
+fn half_candidates(offset: f64, fr: &DimFrame, view: &Room) -> Vec<At> {
     let (n, u, sgn, en, eu) = (fr.n, fr.u, fr.sgn, fr.en, fr.eu);
     let axis = fr.a;
     let shown = !view.all && (0.0..=view.w).contains(&axis[0]) && (0.0..=view.h).contains(&axis[1]);
@@ -296,7 +296,7 @@ fn half_candidates(offset: f64, fr: &DimFrame, view: &View) -> Vec<At> {
 /// The candidates of a dimension's label, best first: its preferred side
 /// of the line, the other, along the line, past its ends, and the line
 /// stacked further out.
-pub(super) fn dim_candidates(lab: &Label, fr: &DimFrame, view: &View) -> Vec<At> {
+pub(super) fn dim_candidates(lab: &Label, fr: &DimFrame, view: &Room) -> Vec<At> {
     let offset = match lab.kind {
         Kind::Half { offset, .. } => return half_candidates(offset, fr, view),
         Kind::Dim { offset, .. } => offset,
@@ -364,7 +364,7 @@ pub(super) fn text_frame(lab: &Label, xf: &Transform) -> Option<TextFrame> {
 /// The candidates of a text, best first: beside its point, shifted up or
 /// down a line, mirrored about its point, slid into the view; a stacked
 /// text only its slot.
-pub(super) fn text_candidates(lab: &Label, fr: &TextFrame, view: &View) -> Vec<At> {
+pub(super) fn text_candidates(lab: &Label, fr: &TextFrame, view: &Room) -> Vec<At> {
     let Kind::Text { dx, anchor, .. } = lab.kind else { return Vec::new() };
     match lab.slot {
         Slot::At(y) => return vec![At::new(fr.px + fr.half, y, 0.0)],

@@ -1,4 +1,4 @@
-//! Label placement (`placeLabels` in `www/src/labels.js`): at a given
+//! Label placement: at a given
 //! transform, a place for each label among its candidates so that no two
 //! labels overlap and every label lies inside the view, crossing no
 //! dimension line and none of the drawing's lines where it can. Greedy in a
@@ -9,11 +9,11 @@
 use std::collections::HashMap;
 
 use super::labels::{
-    At, DimFrame, EDGE, Kind, LINE, Label, Slot, View, dim_candidates, dim_frame, scene_labels, text_candidates,
+    At, DimFrame, EDGE, Kind, LINE, Label, Slot, Room, dim_candidates, dim_frame, scene_labels, text_candidates,
     text_frame,
 };
 use super::lines::{LineIndex, scene_lines, segment_hits_box};
-use super::{Options, Placed, Transform};
+use super::{View, Placed, Transform};
 use crate::diagram::scene::{Anchor, Pt, Scene};
 
 /// Whether boxes `a` and `b` overlap.
@@ -89,7 +89,7 @@ fn box_at(c: &At, bw: f64, bh: f64) -> [f64; 4] {
 }
 
 /// Whether box `b` is inside the view, `EDGE` from its sides.
-fn inside(b: &[f64; 4], view: &View) -> bool {
+fn inside(b: &[f64; 4], view: &Room) -> bool {
     view.all
         || (b[0] >= EDGE - 0.01 && b[1] >= EDGE - 0.01 && b[2] <= view.w - EDGE + 0.01 && b[3] <= view.h - EDGE + 0.01)
 }
@@ -110,7 +110,7 @@ struct Taken {
 /// The best place of `lab` among its candidates, and its score (0 clean, 1
 /// crossing the drawing, 2 crossing a dimension): else, for a label that
 /// must go somewhere, the place least covered by others.
-fn choose(lab: &Label, xf: &Transform, view: &View, taken: &Taken, drawing: Option<&LineIndex>) -> Option<(At, u8)> {
+fn choose(lab: &Label, xf: &Transform, view: &Room, taken: &Taken, drawing: Option<&LineIndex>) -> Option<(At, u8)> {
     let dim = dim_frame(lab, xf);
     let text = text_frame(lab, xf);
     let (bw, bh, cands) = match (&dim, &text) {
@@ -159,7 +159,7 @@ fn choose(lab: &Label, xf: &Transform, view: &View, taken: &Taken, drawing: Opti
 /// Places `labels` at `xf` in `view` (see the module documentation): sets
 /// each label's `at`, or `None` when it is dropped. `drawing`: the lines
 /// labels keep off.
-pub(super) fn place(labels: &mut [Label], xf: &Transform, view: &View, drawing: Option<&LineIndex>) {
+pub(super) fn place(labels: &mut [Label], xf: &Transform, view: &Room, drawing: Option<&LineIndex>) {
     if !view.all {
         stack_texts(labels, xf, view);
     }
@@ -192,11 +192,13 @@ pub(super) fn place(labels: &mut [Label], xf: &Transform, view: &View, drawing: 
 }
 
 /// The labels of `scene` placed at `xf` on a `w × h` page, as the painter takes them.
-pub(super) fn placed(scene: &Scene, o: &Options, xf: &Transform, (w, h): (f64, f64)) -> Vec<Placed> {
+/// Also the items of the labels dropped.
+pub(super) fn placed(scene: &Scene, o: &View, xf: &Transform, (w, h): (f64, f64)) -> (Vec<Placed>, Vec<usize>) {
     let mut labels = scene_labels(scene, o, w);
     let lines = scene_lines(scene);
-    place(&mut labels, xf, &View { w, h, all: false }, Some(&lines));
-    labels.iter().filter_map(placed_of).collect()
+    place(&mut labels, xf, &Room { w, h, all: false }, Some(&lines));
+    let dropped = labels.iter().filter(|l| l.at.is_none()).map(|l| l.item).collect();
+    (labels.iter().filter_map(placed_of).collect(), dropped)
 }
 
 /// A placed label as the painter takes it.
@@ -218,7 +220,7 @@ type StackKey = (bool, i64);
 /// in the view (dropping the least important, from where they crowd most)
 /// and moves each as little as it can (least squares, one line apart). Sets
 /// `slot` on every label.
-fn stack_texts(labels: &mut [Label], xf: &Transform, view: &View) {
+fn stack_texts(labels: &mut [Label], xf: &Transform, view: &Room) {
     let mut groups: Vec<(StackKey, Vec<(usize, f64)>)> = Vec::new();
     for (k, lab) in labels.iter_mut().enumerate() {
         lab.slot = Slot::Free;

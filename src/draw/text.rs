@@ -1,5 +1,4 @@
-//! Text widths without a font engine, and the wrapping of long notes
-//! (`wrap` in `www/src/labels.js`).
+//! Text widths without a font engine, and the wrapping of long notes.
 
 /// Advances of the printable ASCII characters (space to `~`) of a
 /// sans-serif (DejaVu Sans, the widest of the common ones) at 12 px, in

@@ -1,0 +1,308 @@
+//! A scene at a transform as display-list operations: the highlight's halos
+//! beneath everything, paths of one pen together (one operation per pen, in
+//! the order the pens first appear; a path that repeats one of its pen to
+//! 1/8 px adds no ink and is left out, as is one wholly off the page), then
+//! the other shapes in item order, each label where it was placed with its
+//! dimension line, arrowheads and halo, and what the pointer is over again on top.
+
+use std::collections::{HashMap, HashSet};
+
+use super::labels::LINE;
+use super::list::{Builder, Op, Pen};
+use super::pens::{HALO, HIGHLIGHT, HIGHLIGHT_HALO, ItemPen, pen_of};
+use super::{Mark, Placed, Transform};
+use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style};
+
+/// Paths wholly this far off the page are left out.
+const CULL: f64 = 12.0;
+
+/// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
+type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
+
+fn batch_key(item: &Item, closed: bool) -> BatchKey {
+    let role = match item.role {
+        None => 0,
+        Some(crate::thread::Role::Rough) => 1,
+        Some(crate::thread::Role::Finish) => 2,
+        Some(crate::thread::Role::Spring) => 3,
+    };
+    let area = (item.style == Style::Area).then(|| (item.thread.map_or(0, |t| t + 1), item.pass.map_or(0, |p| p + 1)));
+    (item.style.code(), role, closed, area)
+}
+
+/// One pen's paths: its first item, the points, where each subpath starts, the subpaths seen.
+struct Batch {
+    key: BatchKey,
+    first: usize,
+    points: Vec<Pt>,
+    starts: Vec<usize>,
+    seen: HashSet<Vec<i64>>,
+}
+
+/// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
+pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Placed], mark: &Mark) {
+    let by_item: HashMap<usize, &Placed> = placed.iter().map(|l| (l.item, l)).collect();
+    let marked: HashSet<usize> = mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
+    let mark = if b.list.stale || marked.is_empty() { None } else { Some((&marked, mark.light)) };
+    let mut p = Painter { b, xf };
+    if let Some((set, light)) = mark {
+        p.halos(scene, set, light, &by_item);
+    }
+    p.paths(scene);
+    for (i, item) in scene.items.iter().enumerate() {
+        let halo = match mark {
+            Some((set, light)) if set.contains(&i) => HIGHLIGHT_HALO[usize::from(light)],
+            _ => HALO,
+        };
+        p.item(item, by_item.get(&i).copied(), halo);
+    }
+    if let Some((set, false)) = mark {
+        // What the pointer is over comes to the front: its lines in their own
+        // pens, a filled area outlined (a second fill would change its colour).
+        let mut front: Vec<usize> = set.iter().copied().collect();
+        front.sort_unstable();
+        for i in front {
+            let item = &scene.items[i];
+            match &item.shape {
+                Shape::Polygon { points } => {
+                    let pts: Vec<Pt> = points.iter().map(|q| xf.at(*q)).collect();
+                    p.b.path(&pts, true, Pen { fill: None, ..Pen::stroke(HIGHLIGHT, 1.5) });
+                }
+                Shape::Polyline { points } => {
+                    let pts: Vec<Pt> = points.iter().map(|q| xf.at(*q)).collect();
+                    p.b.path(&pts, false, pen_of(item).pen);
+                }
+                Shape::Arrow { .. } | Shape::Marker { .. } => p.item(item, None, HALO),
+                _ => {}
+            }
+        }
+    }
+}
+
+struct Painter<'a> {
+    b: &'a mut Builder,
+    xf: &'a Transform,
+}
+
+impl Painter<'_> {
+    /// Highlights beneath the items, which keep their own colours on top. The
+    /// halos of one width are one path (their union at one alpha): halos of
+    /// close lines do not pile up into a solid colour between them.
+    fn halos(&mut self, scene: &Scene, set: &HashSet<usize>, light: bool, by_item: &HashMap<usize, &Placed>) {
+        let alpha = if light { 0.3 } else { 0.5 };
+        let grow = if light { 4.0 } else { 6.0 };
+        let mut groups: Vec<((bool, u64), Vec<Pt>, Vec<usize>)> = Vec::new();
+        let mut add = |closed: bool, width: f64, pts: Vec<Pt>| {
+            let key = (closed, width.to_bits());
+            let g = match groups.iter().position(|g| g.0 == key) {
+                Some(k) => &mut groups[k],
+                None => {
+                    groups.push((key, Vec::new(), Vec::new()));
+                    groups.last_mut().expect("just pushed")
+                }
+            };
+            g.2.push(g.1.len());
+            g.1.extend(pts);
+        };
+        let mut dots = Vec::new();
+        let mut ordered: Vec<usize> = set.iter().copied().collect();
+        ordered.sort_unstable();
+        for i in ordered {
+            let item = &scene.items[i];
+            let width = pen_of(item).pen.width + grow;
+            let at = |q: &Pt| self.xf.at(*q);
+            match &item.shape {
+                Shape::Polyline { points } => add(false, width, points.iter().map(at).collect()),
+                Shape::Polygon { points } => add(true, width, points.iter().map(at).collect()),
+                Shape::Arrow { from, to } => add(false, width, vec![at(from), at(to)]),
+                Shape::Circle { center, radius } => {
+                    let pen = Pen { fill: None, ..Pen::stroke(HIGHLIGHT, width) }.faded(alpha);
+                    self.b.circle(at(center), radius * self.xf.sx, pen);
+                }
+                Shape::Marker { at: q, .. } => dots.push(at(q)),
+                Shape::Dim { .. } | Shape::Text { .. } => {
+                    let Some(l) = by_item.get(&i) else { continue };
+                    let [x0, y0, x1, y1] = l.bounds;
+                    let bx = [[x0 - 1.0, y0], [x1 + 1.0, y0], [x1 + 1.0, y1], [x0 - 1.0, y1]];
+                    self.b.path(&bx, true, Pen::fill(HIGHLIGHT).faded(alpha));
+                    if let Shape::Dim { a, b, .. } = &item.shape {
+                        for (p, q) in dim_lines(self.xf.at(*a), self.xf.at(*b), item.style == Style::Diameter, l) {
+                            add(false, width, vec![p, q]);
+                        }
+                    }
+                }
+            }
+        }
+        for ((closed, width), points, starts) in groups {
+            let pen = Pen { fill: None, ..Pen::stroke(HIGHLIGHT, f64::from_bits(width)) }.faded(alpha);
+            let pen = self.b.pen(pen);
+            self.b.list.ops.push(Op::Paths { pen, closed, points, starts });
+        }
+        for d in dots {
+            self.b.circle(d, 6.0, Pen::fill(HIGHLIGHT).faded(alpha));
+        }
+    }
+
+    /// Every polyline and polygon on the page, one operation per pen.
+    fn paths(&mut self, scene: &Scene) {
+        let (w, h) = (self.b.list.width, self.b.list.height);
+        let mut batches: Vec<Batch> = Vec::new();
+        let mut index: HashMap<BatchKey, usize> = HashMap::new();
+        for (i, item) in scene.items.iter().enumerate() {
+            let (points, closed) = match &item.shape {
+                Shape::Polyline { points } => (points, false),
+                Shape::Polygon { points } => (points, true),
+                _ => continue,
+            };
+            let pts: Vec<Pt> = points.iter().map(|p| self.xf.at(*p)).collect();
+            let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
+            if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {
+                continue;
+            }
+            let key = batch_key(item, closed);
+            let k = *index.entry(key).or_insert_with(|| {
+                batches.push(Batch { key, first: i, points: Vec::new(), starts: Vec::new(), seen: HashSet::new() });
+                batches.len() - 1
+            });
+            let b = &mut batches[k];
+            let eighths: Vec<i64> = pts.iter().flat_map(|p| [(p[0] * 8.0).round() as i64, (p[1] * 8.0).round() as i64]).collect();
+            if b.seen.insert(eighths) {
+                b.starts.push(b.points.len());
+                b.points.extend(pts);
+            }
+        }
+        for bt in batches {
+            let pen = self.b.pen(pen_of(&scene.items[bt.first]).pen);
+            self.b.list.ops.push(Op::Paths { pen, closed: bt.key.2, points: bt.points, starts: bt.starts });
+        }
+    }
+
+    fn item(&mut self, item: &Item, placed: Option<&Placed>, halo: &str) {
+        let pen = pen_of(item);
+        let xf = self.xf;
+        match &item.shape {
+            Shape::Polyline { .. } | Shape::Polygon { .. } => {}
+            Shape::Circle { center, radius } => self.b.circle(xf.at(*center), radius * xf.sx, pen.pen.clone()),
+            Shape::Arrow { from, to } => self.arrow(xf.at(*from), xf.at(*to), &pen),
+            Shape::Marker { at, glyph } => self.marker(xf.at(*at), *glyph, &pen),
+            Shape::Dim { a, b, .. } => {
+                if let Some(l) = placed {
+                    self.dimension(xf.at(*a), xf.at(*b), item.style == Style::Diameter, l, &pen);
+                    self.label(l, &pen, halo);
+                }
+            }
+            Shape::Text { .. } => {
+                if let Some(l) = placed {
+                    if let Some([x0, y0, x1, y1]) = l.lead {
+                        self.b.path(&[[x0, y0], [x1, y1]], false, Pen::stroke(pen.colour(), 0.7).faded(0.8));
+                    }
+                    self.label(l, &pen, halo);
+                }
+            }
+        }
+    }
+
+    /// An arrow: its line in the pen, a filled head of the pen's stroke at `b`.
+    fn arrow(&mut self, a: Pt, b: Pt, pen: &ItemPen) {
+        self.b.path(&[a, b], false, pen.pen.clone());
+        let t = (b[1] - a[1]).atan2(b[0] - a[0]);
+        let (l, s) = (9.0, 0.42);
+        let head = [[b[0] - l * (t - s).cos(), b[1] - l * (t - s).sin()], b, [
+            b[0] - l * (t + s).cos(),
+            b[1] - l * (t + s).sin(),
+        ]];
+        let head_pen = Pen { fill: pen.pen.stroke.clone(), dash: Vec::new(), ..pen.pen.clone() };
+        self.b.path(&head, true, head_pen);
+    }
+
+    fn marker(&mut self, [x, y]: Pt, glyph: Glyph, pen: &ItemPen) {
+        let stroke = pen.pen.stroke.clone().unwrap_or_else(|| "#374151".into());
+        match glyph {
+            Glyph::Dot => self.b.circle([x, y], 3.0, Pen::fill(&stroke)),
+            Glyph::Bar => self.b.path(&[[x, y - 6.0], [x, y + 6.0]], false, Pen::stroke(&stroke, 2.0)),
+            Glyph::Cross => {
+                let points = vec![[x - 4.0, y - 4.0], [x + 4.0, y + 4.0], [x - 4.0, y + 4.0], [x + 4.0, y - 4.0]];
+                let pen = self.b.pen(Pen::stroke(&stroke, 1.6));
+                self.b.list.ops.push(Op::Paths { pen, closed: false, points, starts: vec![0, 2] });
+            }
+        }
+    }
+
+    /// A placed dimension: extension lines, its line and arrowheads.
+    fn dimension(&mut self, a: Pt, b: Pt, half: bool, l: &Placed, pen: &ItemPen) {
+        let Some((u, n)) = frame(a, b) else { return };
+        let lines = dim_lines(a, b, half, l);
+        let stroke = pen.pen.stroke.clone().unwrap_or_else(|| "#374151".into());
+        for (p, q) in lines.iter().skip(1) {
+            self.b.path(&[*p, *q], false, Pen::stroke(&stroke, 0.8));
+        }
+        let (p, q) = lines[0];
+        self.b.path(&[p, q], false, pen.pen.clone());
+        let at = |x: Pt, k: f64| [x[0] + n[0] * k, x[1] + n[1] * k];
+        let mut head = |x: Pt, dir: f64| {
+            let (lh, wh) = (7.0, 2.6);
+            let base = [x[0] - u[0] * lh * dir, x[1] - u[1] * lh * dir];
+            self.b.path(&[x, at(base, wh), at(base, -wh)], true, Pen::fill(&stroke));
+        };
+        if half {
+            head(p, 1.0);
+        } else if (q[0] - p[0]).hypot(q[1] - p[1]) > 20.0 {
+            head(p, -1.0);
+            head(q, 1.0);
+        } else {
+            head(p, 1.0);
+            head(q, -1.0);
+        }
+    }
+
+    /// A label's text in its box over a halo: one line centred (rotated by
+    /// its angle), or several lines a line apart, lined up as placed.
+    fn label(&mut self, l: &Placed, pen: &ItemPen, halo: &str) {
+        let [x0, y0, x1, y1] = l.bounds;
+        let (cx, cy) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+        let x = match l.align {
+            Anchor::Start => x0 + 2.0,
+            Anchor::End => x1 - 2.0,
+            Anchor::Middle => cx,
+        };
+        let n = l.lines.len() as f64;
+        for (k, line) in l.lines.iter().enumerate() {
+            if !line.is_empty() {
+                let y = cy + (k as f64 - (n - 1.0) / 2.0) * LINE;
+                self.b.text([x, y], line, &pen.text, halo, l.align, l.angle);
+            }
+        }
+    }
+}
+
+/// A dimension's direction `u` (a→b) and left normal `n` on the page; none when its ends meet.
+fn frame(a: Pt, b: Pt) -> Option<(Pt, Pt)> {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len = dx.hypot(dy);
+    if len.is_nan() || len <= 1e-9 {
+        return None;
+    }
+    let u = [dx / len, dy / len];
+    Some((u, [u[1], -u[0]]))
+}
+
+/// The lines a placed dimension draws, its own line first, then its
+/// extension lines. A half dimension (of a diameter, from the axis `a`) has
+/// one arrowhead, at `b`; its line runs towards the axis as far as placed.
+fn dim_lines(a: Pt, b: Pt, half: bool, l: &Placed) -> Vec<(Pt, Pt)> {
+    let Some((u, n)) = frame(a, b) else { return vec![(a, b)] };
+    let o = l.off;
+    let sgn = if o >= 0.0 { 1.0 } else { -1.0 };
+    let at = |p: Pt, k: f64| [p[0] + n[0] * k, p[1] + n[1] * k];
+    let (line, ends): ((Pt, Pt), &[Pt]) = if half {
+        let s = at(b, o);
+        ((s, [s[0] - u[0] * l.len, s[1] - u[1] * l.len]), &[b])
+    } else {
+        ((at(a, o), at(b, o)), &[a, b])
+    };
+    let mut out = vec![line];
+    if o.abs() > 3.0 {
+        out.extend(ends.iter().map(|&p| (at(p, 2.0 * sgn), at(p, o + 4.0 * sgn))));
+    }
+    out
+}

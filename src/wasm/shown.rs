@@ -1,0 +1,136 @@
+//! What a view shows — the one place of the "last good drawing" policy.
+//!
+//! Each plan's scenes are current. A plan that draws something and has no
+//! alarm is the candidate; the page says when the user left it (it was on
+//! screen a while before the next edit), and it becomes the good drawing.
+//! While the text has an alarm, the good drawing is shown greyed (stale)
+//! instead of the current scenes; another program (`fresh`) forgets it.
+
+use std::rc::Rc;
+
+use crate::diagram::scene::Scene;
+
+/// The three views.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Which {
+    /// The side section.
+    Side = 0,
+    /// The tooth section.
+    Tooth = 1,
+    /// The starts.
+    Starts = 2,
+}
+
+impl Which {
+    /// `side`, `tooth` or `starts`.
+    pub fn parse(name: &str) -> Option<Which> {
+        match name {
+            "side" => Some(Which::Side),
+            "tooth" => Some(Which::Tooth),
+            "starts" => Some(Which::Starts),
+            _ => None,
+        }
+    }
+}
+
+/// One plan's scenes with their content keys.
+#[derive(Clone, Default)]
+pub struct Scenes {
+    /// The scenes, by [`Which`].
+    pub scenes: [Option<Rc<Scene>>; 3],
+    /// Their keys (0: none).
+    pub keys: [f64; 3],
+}
+
+/// The scenes of the current plan, the candidate and the good drawing.
+#[derive(Default)]
+pub struct Shown {
+    current: Scenes,
+    candidate: Option<Scenes>,
+    good: Option<Scenes>,
+    stale: bool,
+}
+
+impl Shown {
+    /// A plan's scenes arrive. `drawable`: it draws something and has no
+    /// alarm; `alarm`: it has one; `fresh`: the text is another program's;
+    /// `keep`: the page says the drawing on screen before this edit was left.
+    pub fn planned(&mut self, scenes: Scenes, drawable: bool, alarm: bool, fresh: bool, keep: bool) {
+        if fresh {
+            self.good = None;
+        }
+        if keep {
+            if let Some(c) = self.candidate.take() {
+                self.good = Some(c);
+            }
+        }
+        self.candidate = None;
+        self.current = scenes;
+        self.stale = alarm && self.good.is_some();
+        if !self.stale && drawable {
+            self.candidate = Some(self.current.clone());
+        }
+    }
+
+    /// Another thread or start: the tooth and starts scenes of the current plan.
+    pub fn select(&mut self, tooth: Option<Rc<Scene>>, starts: Option<Rc<Scene>>, keys: [f64; 2]) {
+        self.current.scenes[1] = tooth;
+        self.current.scenes[2] = starts;
+        self.current.keys[1] = keys[0];
+        self.current.keys[2] = keys[1];
+    }
+
+    /// Whether the good drawing is shown greyed.
+    pub fn stale(&self) -> bool {
+        self.stale
+    }
+
+    fn showing(&self) -> &Scenes {
+        match (&self.good, self.stale) {
+            (Some(g), true) => g,
+            _ => &self.current,
+        }
+    }
+
+    /// The scene view `w` shows, if any.
+    pub fn scene(&self, w: Which) -> Option<&Scene> {
+        self.showing().scenes[w as usize].as_deref()
+    }
+
+    /// The keys of the scenes shown (a view redraws when its key or the stale flag changes).
+    pub fn keys(&self) -> [f64; 3] {
+        self.showing().keys
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagram::scene::ViewKind;
+
+    fn scenes(key: f64) -> Scenes {
+        let s = Rc::new(Scene::new(ViewKind::Side));
+        Scenes { scenes: [Some(s), None, None], keys: [key, 0.0, 0.0] }
+    }
+
+    #[test]
+    fn the_good_drawing_is_the_one_the_user_left() {
+        let mut s = Shown::default();
+        s.planned(scenes(1.0), true, false, true, false);
+        assert_eq!((s.keys()[0], s.stale()), (1.0, false));
+        // An alarm before the page said the drawing was left: nothing to grey, the current plan shows.
+        s.planned(scenes(2.0), false, true, false, false);
+        assert_eq!((s.keys()[0], s.stale()), (2.0, false));
+        // Fixed: a candidate again; left; then an alarm shows it greyed.
+        s.planned(scenes(3.0), true, false, false, false);
+        s.planned(scenes(4.0), false, true, false, true);
+        assert_eq!((s.keys()[0], s.stale()), (3.0, true));
+        // Still an alarm: still the good drawing, greyed.
+        s.planned(scenes(5.0), false, true, false, false);
+        assert_eq!((s.keys()[0], s.stale()), (3.0, true));
+        // Another program: forgotten.
+        s.planned(scenes(6.0), false, true, true, false);
+        assert_eq!((s.keys()[0], s.stale()), (6.0, false));
+        assert!(s.scene(Which::Tooth).is_none());
+    }
+}
