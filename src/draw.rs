@@ -83,6 +83,8 @@ impl Transform {
 pub struct Placed {
     /// Index of the scene item (a dimension or a text) the label belongs to.
     pub item: usize,
+    /// The label's key (`dia_major`, `lead`; empty for a bare value).
+    pub key: String,
     /// The text as drawn, one entry per line.
     pub lines: Vec<String>,
     /// How the lines line up in the box (`middle` for a one-line label).

@@ -89,6 +89,8 @@ impl At {
 pub(super) struct Label {
     /// The scene item.
     pub item: usize,
+    /// The label's key (`dia_major`; empty for a bare value).
+    pub key: &'static str,
     pub text: String,
     /// The text wrapped, when it is.
     pub lines: Option<Vec<String>>,
@@ -111,6 +113,7 @@ impl Label {
         let w = if text.is_empty() { 0.0 } else { measure(&text, FONT_SIZE) };
         Label {
             item,
+            key,
             text,
             lines: None,
             w,

@@ -208,7 +208,17 @@ fn placed_of(l: &Label) -> Option<Placed> {
         (Some(lines), Kind::Text { anchor, .. }) => (lines.clone(), anchor),
         _ => (vec![l.text.clone()], Anchor::Middle),
     };
-    Some(Placed { item: l.item, lines, align, bounds: at.bx, angle: at.angle, off: at.off, len: at.len, lead: at.lead })
+    Some(Placed {
+        item: l.item,
+        key: l.key.to_string(),
+        lines,
+        align,
+        bounds: at.bx,
+        angle: at.angle,
+        off: at.off,
+        len: at.len,
+        lead: at.lead,
+    })
 }
 
 /// A stack: texts that start (true) or end at one x, rounded.

@@ -146,3 +146,9 @@ pub fn thread_scenes(thread: i32, start: u32) -> Result<JsValue, JsValue> {
 pub fn moves() -> Float64Array {
     DEFAULT.with(Session::moves)
 }
+
+/// A copy of the scene view `view` of the default session shows (for tests).
+#[cfg(test)]
+pub(crate) fn default_scene(view: &str) -> Option<crate::diagram::Scene> {
+    DEFAULT.with(|s| s.shown_scene(view))
+}

@@ -258,6 +258,13 @@ impl Session {
         out
     }
 
+    /// A copy of the scene view `view` shows (for tests).
+    #[cfg(test)]
+    pub(crate) fn shown_scene(&self, view: &str) -> Option<Scene> {
+        let w = super::shown::Which::parse(view)?;
+        self.with_state(|st| Ok(st.shown.scene(w).cloned())).ok().flatten()
+    }
+
     /// The language of the session's answers and labels.
     pub(super) fn lang(&self) -> Lang {
         self.lang.get()

@@ -8,7 +8,7 @@ use wasm_bindgen::prelude::*;
 use super::js::{err, set, to_js};
 use super::session::Session;
 use super::shown::Which;
-use crate::diagram::scene::{Anchor, Scene};
+use crate::diagram::scene::{Anchor, Scene, Shape};
 use crate::draw::{self, DisplayList, FONT_FAMILY, FONT_SIZE, Mark, Op, Transform, View};
 
 #[wasm_bindgen]
@@ -75,6 +75,51 @@ impl Session {
             set(&o, "lines", &item.lines.iter().map(|&l| JsValue::from(l)).collect::<Array>().into());
             set(&o, "style", &JsValue::from_str(item.style.name()));
             Ok(o.into())
+        })
+    }
+
+    /// Where the first item of style `style` (`cut`, `rapid`, …) of view
+    /// `view` is drawn at transform `xf`: the page point of the middle of its
+    /// first segment, or null (for tests that point at a drawing).
+    pub fn locate(&self, view: &str, style: &str, xf: Vec<f64>) -> Result<Option<Vec<f64>>, JsValue> {
+        let which = which(view)?;
+        let xf = transform(Some(&xf))?.ok_or_else(|| err("a transform is needed"))?;
+        self.with_state(|st| {
+            let Some(scene) = st.shown.scene(which) else { return Ok(None) };
+            let Some(item) = scene.items.iter().find(|i| i.style.name() == style) else { return Ok(None) };
+            let mut pts = Vec::new();
+            item.each_point(|p| pts.push(p));
+            let (a, b) = (pts[0], *pts.get(1).unwrap_or(&pts[0]));
+            Ok(Some(xf.at([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]).to_vec()))
+        })
+    }
+
+    /// The items of style `style` (`*`: every item) of the scene view `view`
+    /// shows, in world coordinates: `[{style, thread, pass (−1: none), lines,
+    /// points: [z, r, z, r…], key (a label's key, else empty)}]` (for tests
+    /// that check what a view draws).
+    pub fn items_of_style(&self, view: &str, style: &str) -> Result<JsValue, JsValue> {
+        let which = which(view)?;
+        self.with_state(|st| {
+            let out = Array::new();
+            let Some(scene) = st.shown.scene(which) else { return Ok(out.into()) };
+            for item in scene.items.iter().filter(|i| style == "*" || i.style.name() == style) {
+                let o = Object::new();
+                let key = match &item.shape {
+                    Shape::Dim { label, .. } | Shape::Text { label, .. } => label.key,
+                    _ => "",
+                };
+                set(&o, "style", &JsValue::from_str(item.style.name()));
+                set(&o, "key", &JsValue::from_str(key));
+                let mut pts = Vec::new();
+                item.each_point(|p| pts.extend(p));
+                set(&o, "thread", &item.thread.map_or(-1, |t| t as i32).into());
+                set(&o, "pass", &item.pass.map_or(-1, |p| p as i32).into());
+                set(&o, "lines", &item.lines.iter().map(|&l| JsValue::from(l)).collect::<Array>().into());
+                set(&o, "points", &Float64Array::from(&pts[..]).into());
+                out.push(&o);
+            }
+            Ok(out.into())
         })
     }
 

@@ -191,13 +191,12 @@ try {
   await page.evaluate(() => document.getElementById('o1006')._views.side.fit());
   await page.waitForTimeout(100);
   const at = await page.evaluate(() => {
-    const v = document.getElementById('o1006')._views.side;
-    const s = v.scene;
-    const i = s.prepared.styles.indexOf('cut');
-    const c = s.items[i * 10 + 2];
+    const el = document.getElementById('o1006');
+    const v = el._views.side;
     const xf = v.transform();
+    const q = el._session.locate('side', 'cut', new Float64Array([xf.sx, xf.sy, xf.tx, xf.ty]));
     const r = v.canvas.getBoundingClientRect();
-    return { x: r.left + xf.tx + xf.sx * ((s.coords[c] + s.coords[c + 2]) / 2), y: r.top + xf.ty - xf.sy * s.coords[c + 1] };
+    return { x: r.left + q[0], y: r.top + q[1] };
   });
   await page.mouse.move(at.x, at.y);
   await page.waitForTimeout(150);

@@ -7,7 +7,8 @@
 // every label's box is inside its view, no two boxes overlap, and the chosen
 // thread's major, minor and lead are there. The app's SVG export of each view
 // (the core's writer, given the view's transform and labels) holds every
-// label inside its viewBox \`0 0 W H\`, where the canvas put it (the embed has
+// label inside its viewBox \`0 0 W H\`, where the canvas put it: one display
+// list, made by the core, painted by both (the embed has
 // no SVG export; its canvases are checked). The embed with four
 // views leaves no empty cell and gives the table its width or its own row. The
 // cursor on a G76/G78 line keeps the pass colours (pixels counted with and
@@ -35,9 +36,9 @@ const PROGRAMS = [
   { name: 'l99', dialect: 'gsk980tdc', text: 'G00 X100 Z5\nG78 P1060 Q10 R0.01 L99\nG78 X40 Z-30 P9000 Q300 F2\n', hot: 'G78 X40' },
 ];
 const VIEWS = ['side', 'tooth', 'starts'];
-/** The label font of www/src/render.js (FONT). */
-const FONT = '12px system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif';
-/** The height of a label's box (LINE in www/src/labels.js). */
+/** The label font of the display lists (src/draw.rs FONT_FAMILY). */
+const FONT = "12px 'DejaVu Sans', 'Noto Sans CJK SC', 'Microsoft YaHei', system-ui, -apple-system, 'Segoe UI', sans-serif";
+/** The height of a label's box (LINE in src/draw/labels.rs). */
 const LINE = 15;
 
 function fragment(state) {
@@ -62,13 +63,13 @@ function faults(l, must) {
   const eps = 0.5;
   for (const p of l.placed) {
     const [x0, y0, x1, y1] = p.box;
-    if (x0 < -eps || y0 < -eps || x1 > w + eps || y1 > h + eps) out.push(`"${p.text}" outside ${w}×${h}: ${p.box.join(',')}`);
+    if (x0 < -eps || y0 < -eps || x1 > w + eps || y1 > h + eps) out.push(`"${p.lines.join(' ')}" outside ${w}×${h}: ${p.box.join(',')}`);
   }
   for (let i = 0; i < l.placed.length; i++)
     for (let j = i + 1; j < l.placed.length; j++) {
       const a = l.placed[i].box;
       const b = l.placed[j].box;
-      if (a[0] < b[2] - eps && b[0] < a[2] - eps && a[1] < b[3] - eps && b[1] < a[3] - eps) out.push(`"${l.placed[i].text}" overlaps "${l.placed[j].text}"`);
+      if (a[0] < b[2] - eps && b[0] < a[2] - eps && a[1] < b[3] - eps && b[1] < a[3] - eps) out.push(`"${l.placed[i].lines.join(' ')}" overlaps "${l.placed[j].lines.join(' ')}"`);
     }
   for (const key of must) if (!l.placed.some((p) => p.key === key)) out.push(`no ${key} label`);
   return out;
@@ -114,7 +115,7 @@ async function svgFaults(page, svg, l) {
     // A label wrapped on several lines is one text per line, a line apart.
     let lines = 0;
     for (const p of l.placed) {
-      if (!p.text) continue;
+      if (!p.lines.some(Boolean)) continue;
       const cx = (p.box[0] + p.box[2]) / 2;
       const cy = (p.box[1] + p.box[3]) / 2;
       const x = p.align === 'start' ? p.box[0] + 2 : p.align === 'end' ? p.box[2] - 2 : cx;
@@ -129,7 +130,7 @@ async function svgFaults(page, svg, l) {
   return out;
 }
 
-const summary = (l) => `${l ? l.placed.length : 0} labels${l && l.dropped.length ? `, ${l.dropped.length} dropped (${[...new Set(l.dropped.map((d) => d.key))].join(' ')})` : ''}`;
+const summary = (l) => `${l ? l.placed.length : 0} labels${l && l.dropped ? `, ${l.dropped} left out` : ''}`;
 
 /** Opens the app with `prog` in a page of `size`, in `lang`. */
 async function openApp(prog, size, lang, query = '') {
@@ -238,8 +239,8 @@ try {
     await page.locator('.cm-line', { hasText: prog.hot }).first().click();
     await page.waitForTimeout(300);
     const marked = await colours();
-    const hl = await page.evaluate(async () => (await window.__screwcut.inspect('view', 'side')).highlight.length);
-    check(`${prog.name}: the cursor on its ${prog.hot.split(' ')[0]} line marks ${hl} items of the side section`, hl > 0 && marked.side.mark > plain.side.mark, JSON.stringify({ plain, marked }));
+    const mark = await page.evaluate(async () => (await window.__screwcut.inspect('view', 'side')).mark);
+    check(`${prog.name}: the cursor on its ${prog.hot.split(' ')[0]} line (${mark.lines.join(',')}) marks the side section`, mark.light && mark.lines.length === 1 && marked.side.mark > plain.side.mark, JSON.stringify({ plain, marked }));
     for (const v of ['side', 'tooth']) {
       const kept = marked[v].pass / Math.max(plain[v].pass, 1);
       check(`${prog.name} ${v}: the mark keeps the pass colours (${plain[v].pass} → ${marked[v].pass} pixels, ${(100 * kept).toFixed(0)} %)`, plain[v].pass > 200 && kept >= 0.9, JSON.stringify({ plain: plain[v], marked: marked[v] }));

@@ -17,7 +17,6 @@ import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import os from 'node:os';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 
@@ -69,17 +68,9 @@ const inked = (id) => page.evaluate((id) => window.__screwcut.inspect('pixels', 
 const pointOf = (name, style) =>
   page.evaluate(
     async ([name, style]) => {
-      const p = window.__screwcut;
-      const L = await p.inspect('layout');
-      const v = await p.inspect('view', name);
-      const s = v.scene;
-      const i = s.styles.indexOf(style);
-      const c = s.items[i * L.stride + L.fields.coord_start];
-      const xf = v.transform;
+      const q = await window.__screwcut.inspect('point', name, style);
       const r = document.getElementById(name).getBoundingClientRect();
-      const x = (s.coords[c] + s.coords[c + 2]) / 2;
-      const y = s.coords[c + 1];
-      return { x: r.left + xf.tx + xf.sx * x, y: r.top + xf.ty - xf.sy * y };
+      return { x: r.left + q[0], y: r.top + q[1] };
     },
     [name, style],
   );
@@ -203,26 +194,27 @@ try {
   const [svg] = await Promise.all([page.waitForEvent('download'), page.click('#side-panel [data-act="svg"]')]);
   const svgText = fs.readFileSync(await svg.path(), 'utf8');
   check('side view exports as SVG', svgText.startsWith('<?xml') && (svgText.match(/<path /g) || []).length > 20, svgText.slice(0, 80));
-  // One SVG writer: the app's export is the command line's `screwcut svg` given the same view
-  // (its size, transform and labels as placed: `--layout`), byte for byte.
+  // One drawing: the app's export is the command line's `screwcut svg` of the same view (its
+  // size and transform: `--transform`), byte for byte, and its labels are the canvas's.
   const cli = process.argv[3] || path.join(path.dirname(fileURLToPath(import.meta.url)), '../../target/debug/screwcut');
   const program = await page.evaluate(() => window.__screwcut.text());
-  const sideLayout = await page.evaluate(() => window.__screwcut.inspect('svg_layout', 'side'));
+  const sideNow = await page.evaluate(() => window.__screwcut.inspect('view', 'side'));
   const sideLabels = await page.evaluate(() => window.__screwcut.inspect('labels', 'side'));
   const size = sideLabels.size;
-  const layoutFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-layout-')), 'side.json');
-  fs.writeFileSync(layoutFile, JSON.stringify(sideLayout));
+  const t = sideNow.transform;
   let cliSvg = '';
   try {
-    const args = ['svg', '-', '--view', 'side', '--width', String(size[0]), '--height', String(size[1]), '--layout', layoutFile];
+    const args = ['svg', '-', '--view', 'side', '--width', String(size[0]), '--height', String(size[1]), `--transform=${t.sx},${t.sy},${t.tx},${t.ty}`];
     cliSvg = execFileSync(cli, args, { input: program, encoding: 'utf8' });
   } catch (e) {
     cliSvg = `cannot run ${cli}: ${e.message}`;
   }
-  fs.rmSync(path.dirname(layoutFile), { recursive: true, force: true });
   const texts = (svgText.match(/<text /g) || []).length;
   const labelLines = sideLabels.placed.reduce((n, p) => n + p.lines.filter(Boolean).length, 0);
-  check(`the side SVG (${texts} texts) equals \`screwcut svg --width ${size[0]} --height ${size[1]} --layout\` with the view's transform and labels`, cliSvg === svgText && texts === labelLines && texts > 0, `${texts} texts, ${labelLines} label lines; ${firstDifference(svgText, cliSvg)}`);
+  const canvasTexts = sideLabels.placed.flatMap((p) => p.lines).filter(Boolean).sort();
+  const svgTexts = [...svgText.matchAll(/<text [^>]*>([^<]*)<\/text>/g)].map((m) => m[1].replace(/&amp;/g, '&')).sort();
+  check(`the side SVG (${texts} texts) equals \`screwcut svg --width ${size[0]} --height ${size[1]} --transform\` at the view's transform`, cliSvg === svgText && texts === labelLines && texts > 0, `${texts} texts, ${labelLines} label lines; ${firstDifference(svgText, cliSvg)}`);
+  check('… with the labels the canvas shows', JSON.stringify(canvasTexts) === JSON.stringify(svgTexts), JSON.stringify([canvasTexts, svgTexts]));
   const vb = (/viewBox="([^"]*)"/.exec(svgText)?.[1] || '').split(' ').map(Number);
   check(`the side SVG is the view: viewBox ${vb.join(' ')}`, vb.length === 4 && vb[0] === 0 && vb[1] === 0 && Math.abs(vb[2] - size[0]) < 0.01 && Math.abs(vb[3] - size[1]) < 0.01, `view ${size}`);
   const [png] = await Promise.all([page.waitForEvent('download'), page.click('#tooth-panel [data-act="png"]')]);
@@ -283,21 +275,15 @@ try {
     page.evaluate(async () => {
       const p = window.__screwcut;
       const r = p.result;
-      const L = await p.inspect('layout');
-      const side = (await p.inspect('view', 'side')).scene;
       const engine = await p.inspect('result');
-      const n = side.items.length / L.stride;
       const last = r.thread;
       // The radii of the cuts of the chosen thread in the side view.
-      const cuts = [];
-      for (let i = 0; i < n; i++) {
-        const o = i * L.stride;
-        if (side.styles[i] === 'cut' && side.items[o + L.fields.thread] === last + 1) cuts.push(side.coords[side.items[o + L.fields.coord_start] + 1]);
-      }
+      const cuts = (await p.inspect('items', 'side', 'cut')).filter((c) => c.thread === last).map((c) => c.points[1]);
+      const labels = await p.inspect('labels', 'tooth');
       const rows = [...document.querySelectorAll('#passes tbody tr[data-pass]')].map((tr) => tr.children[2].textContent);
       const diags = [...document.querySelectorAll('#diagnostics li')].map((li) => li.textContent).join('\n');
       const options = document.querySelectorAll('#thread option').length;
-      return { thread: last, threads: r.threads.length, options, crest: r.threads[last].crest, first: r.threads[0], resumedAt: r.resumedAt, cuts, rows, diags, tooth: engine.toothLabels, sideKey: engine.sideKey, toothKey: engine.toothKey };
+      return { thread: last, threads: r.threads.length, options, crest: r.threads[last].crest, first: r.threads[0], resumedAt: r.resumedAt, cuts, rows, diags, tooth: JSON.stringify(labels.placed.map((l) => l.lines)), sideKey: engine.shown[0], toothKey: engine.shown[1] };
     });
   const before = await view();
   check('the cursor on the last thread chooses it', before.thread === before.threads - 1 && before.rows.at(-1) === '45.4', JSON.stringify([before.thread, before.threads, before.rows]));
@@ -319,17 +305,6 @@ try {
     const px = await inked(id);
     check(`… and the ${id} canvas is drawn`, px.n > 300, `${px.n} pixels`);
   }
-  // The side section the engine put together from kept and new pieces is the one a full build gives.
-  const same = await page.evaluate(() => window.__screwcut.inspect('same_as_full'));
-  check('… the side section from kept pieces equals a full build', same.length === 0, `differs in ${same.join(', ')}`);
-
-  // ---- transfer: typed arrays vs serde-wasm-bindgen objects vs JSON ----
-  const tr = await page.evaluate(() => window.__screwcut.inspect('transfer'));
-  console.log(
-    `side scene of ${tr.items} items (build + transfer + read): typed arrays ${fmt(tr.packed)} ms, serde-wasm-bindgen objects ${fmt(tr.objects)} ms, JSON ${fmt(tr.json)} ms; ` +
-      `all threads with passes: serde-wasm-bindgen ${fmt(tr.threadsObjects)} ms, JSON ${fmt(tr.threadsJson)} ms`,
-  );
-
   // ---- no errors ----
   const probeErrors = await page.evaluate(() => window.__screwcut.errors);
   check('no console or page errors', problems.length === 0 && probeErrors.length === 0, JSON.stringify([...problems, ...probeErrors]));

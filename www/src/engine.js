@@ -261,13 +261,21 @@ export class Engine {
    * For tests and benchmarks: `view` (what view `name` shows: key,
    * transform, stale, mark, size), `pixels` (the inked pixels of its
    * canvas), `draws` (each view's last drawing time, ms), `labels` (its
-   * labels as placed), `svg` (its SVG export), `result` (keys and thread
-   * list of the last answer).
+   * labels as placed), `svg` (its SVG export), `point` (where the first
+   * item of style `format` is drawn in it, CSS px), `result` (keys and
+   * thread list of the last answer), `items` (the items of style `format`
+   * of the scene it shows, world coordinates).
    */
-  on_inspect({ id, what, name }) {
+  on_inspect({ id, what, name, format }) {
     const v = this.views[name];
     const data = {
-      view: () => v && { key: v.key, transform: v.transform(), stale: v.stale, mark: v.mark, size: [v.cssW, v.cssH], ops: v.list ? v.list.ops.length / 7 : 0 },
+      view: () => {
+        if (!v) return null;
+        const l = v.labels() && v.list;
+        // A digest of the display list: what is painted, to compare two pages.
+        const digest = l ? `${l.ops.length}|${Array.from(l.nums, (x) => Math.round(x * 100)).join(',')}|${l.texts.join('|')}` : '';
+        return { key: v.key, transform: v.transform(), stale: v.stale, mark: v.mark, size: [v.cssW, v.cssH], ops: l ? l.ops.length / 7 : 0, digest, texts: l ? l.texts : [] };
+      },
       pixels: () => {
         if (!v) return null;
         const c = v.canvas;
@@ -279,6 +287,11 @@ export class Engine {
       draws: () => Object.fromEntries(Object.entries(this.views).map(([k, view]) => [k, view.lastDraw])),
       labels: () => v && v.labels(),
       svg: () => v && v.svg(),
+      items: () => this.session.items_of_style(name, format),
+      point: () => {
+        const xf = v && v.transform();
+        return xf ? this.session.locate(name, format, new Float64Array([xf.sx, xf.sy, xf.tx, xf.ty])) : null;
+      },
       result: () => {
         const r = this.result;
         return r && { threads: r.threads, thread: r.thread, shown: r.shown && Array.from(r.shown), stale: r.stale, resumedAt: r.resumedAt };

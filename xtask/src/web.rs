@@ -397,8 +397,10 @@ fn smoke_test(wasm: &Path) -> Result {
         "import fs from 'node:fs';\
          const m = await import({glue:?});\
          m.initSync({{ module: fs.readFileSync({wasm:?}) }});\
-         const r = m.update('G00 X58 Z70\\nX47.1\\nG32 Z13 F2\\nG00 X58\\nZ70\\n', 'gsk980tdc', '', 0, 1, -1);\
-         if (r.threads.length !== 1 || r.side.items.length === 0) throw new Error('the optimised wasm plans wrongly');",
+         const s = new m.Session();\
+         const r = s.update('G00 X58 Z70\\nX47.1\\nG32 Z13 F2\\nG00 X58\\nZ70\\n', 'gsk980tdc', '', 0, 1, -1, undefined, false, false);\
+         const d = s.draw('side', 640, 360, undefined, false, -1, -1, new Uint32Array(0), false);\
+         if (r.threads.length !== 1 || !r.shown[0] || d.ops.length === 0) throw new Error('the optimised wasm plans or draws wrongly');",
         glue = format!("file://{}", path_str(&glue)?),
         wasm = path_str(wasm)?,
     );

@@ -1,5 +1,5 @@
 //! Reading the binding's JS values back in Rust: properties, errors, the
-//! serde-shaped lists (diagnostics, threads, passes) and packed scenes.
+//! serde-shaped lists (diagnostics, threads, passes) and the scenes a session shows.
 
 use js_sys::{Array, Float64Array, JsString, Reflect, Uint32Array};
 use serde::Deserialize;
@@ -225,19 +225,25 @@ pub struct Scene {
     pub items: Vec<Item>,
 }
 
-/// Decodes the packed scene `v` (`{view, bounds, focus, coords, items, lines, labels}`).
-pub fn scene(v: &JsValue) -> Scene {
-    assert!(v.is_object(), "no scene: {v:?}");
-    let styles: Vec<String> = wasm::style_names().iter().map(|s| s.as_string().unwrap()).collect();
-    let shapes: Vec<String> = wasm::shape_names().iter().map(|s| s.as_string().unwrap()).collect();
-    let coords = Float64Array::from(get(v, "coords")).to_vec();
-    let raw = Uint32Array::from(get(v, "items")).to_vec();
-    let lines = Uint32Array::from(get(v, "lines")).to_vec();
-    let labels_text = get(v, "labels").as_string().expect("labels is a string");
-    let labels: Vec<(String, String)> = if labels_text.is_empty() {
+/// The scene view `view` of the default session shows, decoded.
+pub fn shown(view: &str) -> Scene {
+    decode(&wasm::default_scene(view).unwrap_or_else(|| panic!("the {view} view shows nothing")))
+}
+
+/// The key of the scene view `k` (0 side, 1 tooth, 2 starts) shows after answer `r` (0: none).
+pub fn shown_key(r: &JsValue, k: u32) -> f64 {
+    Float64Array::from(get(r, "shown")).get_index(k)
+}
+
+/// A scene decoded through its packed form (`crate::wasm::pack`), with the style and shape names.
+pub fn decode(sc: &crate::diagram::Scene) -> Scene {
+    use crate::wasm::pack::{SHAPES, STRIDE, pack};
+    let p = pack(sc);
+    let styles: Vec<String> = crate::diagram::Style::ALL.iter().map(|s| s.name().to_string()).collect();
+    let labels: Vec<(String, String)> = if p.labels.is_empty() {
         Vec::new()
     } else {
-        labels_text
+        p.labels
             .split('\u{1e}')
             .map(|r| {
                 let (k, v) = r.split_once('\u{1f}').expect("a label record has a key and a value");
@@ -245,32 +251,31 @@ pub fn scene(v: &JsValue) -> Scene {
             })
             .collect()
     };
-    const STRIDE: usize = 10;
-    assert_eq!(raw.len() % STRIDE, 0, "items are whole records");
     let opt = |v: u32| v.checked_sub(1);
-    let items = raw
+    let items = p
+        .items
         .chunks_exact(STRIDE)
         .map(|r| {
             let (c, n) = (r[2] as usize, r[3] as usize);
             let (l, m) = (r[6] as usize, r[7] as usize);
             Item {
-                shape: shapes[r[0] as usize].clone(),
+                shape: SHAPES[r[0] as usize].to_string(),
                 style: styles[r[1] as usize].clone(),
-                coords: coords[c..c + n].to_vec(),
+                coords: p.coords[c..c + n].to_vec(),
                 thread: opt(r[4]),
                 pass: opt(r[5]),
-                lines: lines[l..l + m].to_vec(),
+                lines: p.lines[l..l + m].to_vec(),
                 label: opt(r[8]).map(|k| labels[k as usize].clone()),
                 extra: r[9],
             }
         })
         .collect();
-    Scene {
-        view: get(v, "view").as_string().unwrap_or_default(),
-        bounds: Float64Array::from(get(v, "bounds")).to_vec(),
-        focus: Float64Array::from(get(v, "focus")).to_vec(),
-        items,
-    }
+    let view = match sc.view {
+        crate::diagram::ViewKind::Side => "side",
+        crate::diagram::ViewKind::Tooth => "tooth",
+        crate::diagram::ViewKind::Starts => "starts",
+    };
+    Scene { view: view.to_string(), bounds: p.bounds.to_vec(), focus: p.focus.to_vec(), items }
 }
 
 impl Scene {

@@ -2,7 +2,7 @@
 //! snapshot before an edit and must answer exactly as a plan from scratch;
 //! parts the caller has (by key) are not sent again.
 
-use js_sys::{Float64Array, Uint32Array};
+use js_sys::Float64Array;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -31,35 +31,34 @@ fn edit_line(text: &str, n: isize, f: impl Fn(&str) -> String) -> String {
     lines.join("\n") + "\n"
 }
 
-/// Every key and value of an answer that the app reads, decoded for comparison.
-fn snapshot(r: &JsValue) -> String {
+/// Every key and value of an answer that the app reads, and the scenes
+/// session `s` (the default one when none) shows, decoded for comparison.
+fn snapshot_in(r: &JsValue, s: Option<&wasm::Session>) -> String {
     let diags: Vec<Diag> = field(r, "diagnostics");
     let threads: Vec<ThreadInfo> = field(r, "threads");
     let passes: Vec<PassInfo> = passes(r, "passes");
-    let scene_text = |key: &str| {
-        let v = get(r, key);
-        if v.is_null() {
-            return "null".to_string();
-        }
-        let coords = Float64Array::from(get(&v, "coords")).to_vec();
-        let items = Uint32Array::from(get(&v, "items")).to_vec();
-        let lines = Uint32Array::from(get(&v, "lines")).to_vec();
-        let labels = get(&v, "labels").as_string().unwrap_or_default();
-        let bounds = Float64Array::from(get(&v, "bounds")).to_vec();
-        format!("{coords:?}{items:?}{lines:?}{labels}{bounds:?}")
+    let scene_text = |view: &str| {
+        let sc = match s {
+            Some(s) => s.shown_scene(view),
+            None => wasm::default_scene(view),
+        };
+        sc.map_or("null".to_string(), |sc| format!("{:?}", decode(&sc)))
     };
-    let keys: Vec<f64> = ["diagnosticsKey", "threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"]
-        .iter()
-        .map(|k| num(r, k))
-        .collect();
+    let keys: Vec<f64> = ["diagnosticsKey", "threadsKey", "passesKey"].iter().map(|k| num(r, k)).collect();
+    let shown = Float64Array::from(get(r, "shown")).to_vec();
     format!(
-        "{:?}|{diags:?}|{threads:?}|{passes:?}|{}|{}|{}|{keys:?}|{}",
+        "{:?}|{diags:?}|{threads:?}|{passes:?}|{}|{}|{}|{keys:?}|{shown:?}|{}",
         [num(r, "alarms"), num(r, "warnings"), num(r, "notes"), num(r, "moves")],
         scene_text("side"),
         scene_text("tooth"),
         scene_text("starts"),
         get(r, "thread").as_f64().unwrap_or(-1.0),
     )
+}
+
+/// [`snapshot_in`] of the default session.
+fn snapshot(r: &JsValue) -> String {
+    snapshot_in(r, None)
 }
 
 /// Plans `text` from scratch: another text first, so that nothing is reused.
@@ -127,15 +126,21 @@ fn a_settings_change_plans_from_the_top() {
 
 /// `update` with everything the last answer `r` carried as known.
 fn again(text: &str, r: &JsValue, thread: i32, start: u32) -> JsValue {
-    let known = ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"].iter().map(|k| num(r, k)).collect();
+    let known = ["threadsKey", "passesKey"].iter().map(|k| num(r, k)).collect();
     wasm::update(text, "gsk980tdc", "", thread, start, num(r, "diagnosticsKey"), Some(known))
         .unwrap_or_else(|e| panic!("{}", message(e)))
 }
 
-const PARTS: [&str; 5] = ["threads", "passes", "side", "tooth", "starts"];
+const PARTS: [&str; 2] = ["threads", "passes"];
 
 fn sent(r: &JsValue) -> Vec<&'static str> {
     PARTS.iter().copied().filter(|p| !get(r, p).is_null()).collect()
+}
+
+/// The views whose scene changed from answer `a` to answer `b` (their keys differ).
+fn redrawn(a: &JsValue, b: &JsValue) -> Vec<&'static str> {
+    let views = ["side", "tooth", "starts"];
+    (0..3).filter(|&k| shown_key(a, k) != shown_key(b, k)).map(|k| views[k as usize]).collect()
 }
 
 #[wasm_bindgen_test]
@@ -147,18 +152,21 @@ fn parts_the_caller_has_are_not_sent_again() {
     let same = again(&text, &r, 0, 1);
     assert_eq!(sent(&same), [] as [&str; 0]);
     assert!(get(&same, "diagnostics").is_null());
-    for k in ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"] {
+    for k in ["threadsKey", "passesKey"] {
         assert_eq!(num(&same, k), num(&r, k), "{k}");
     }
+    assert_eq!(redrawn(&r, &same), [] as [&str; 0]);
     // A comment at the top: no motion or thread changed.
     let commented = text.replacen("G50 X100 Z100", "G50 X100 Z100 (datum)", 1);
-    assert_eq!(sent(&again(&commented, &r, 0, 1)), [] as [&str; 0]);
+    let c = again(&commented, &r, 0, 1);
+    assert_eq!((sent(&c), redrawn(&r, &c)), (vec![], vec![]));
     // A pass of the last thread: the thread list and the side section; the
     // first thread's passes, tooth and starts are the same.
     assert_eq!(text.lines().nth(394 - 9), Some("X38.1"));
     let late = edit_line(&text, -9, |_| "X38.0".into());
     let r2 = again(&late, &r, 0, 1);
-    assert_eq!(sent(&r2), ["threads", "side"]);
+    assert_eq!(sent(&r2), ["threads"]);
+    assert_eq!(redrawn(&r, &r2), ["side"]);
     // The thread list comes as the one entry that changed.
     let changes = array(&get(&get(&r2, "threads"), "changes"));
     assert_eq!((changes.len(), num(&get(&r2, "threads"), "length")), (1, 30.0));
@@ -167,27 +175,29 @@ fn parts_the_caller_has_are_not_sent_again() {
     let t: ThreadInfo = serde_wasm_bindgen::from_value(change[1].clone()).unwrap();
     assert_eq!((t.line, t.passes), (386, 2));
     // A caller whose list is not the one last answered gets it whole.
-    let whole = wasm::update(&late, "gsk980tdc", "", 0, 1, -1.0, Some(vec![7.0, -1.0, -1.0, -1.0, -1.0])).unwrap();
+    let whole = wasm::update(&late, "gsk980tdc", "", 0, 1, -1.0, Some(vec![7.0, -1.0])).unwrap();
     let list: Vec<ThreadInfo> = field(&whole, "threads");
     assert_eq!(list.len(), 30);
     let r2 = again(&late, &r, 0, 1);
-    // Choosing the changed thread sends its parts.
+    // Choosing the changed thread sends its passes and draws its tooth and starts.
     let last = num(&r2, "threadsKey");
     let r3 = again(&late, &r2, 29, 1);
-    assert_eq!(sent(&r3), ["passes", "tooth", "starts"]);
+    assert_eq!(sent(&r3), ["passes"]);
+    assert_eq!(redrawn(&r2, &r3), ["tooth", "starts"]);
     assert_eq!(num(&r3, "threadsKey"), last);
     let passes: Vec<PassInfo> = passes(&r3, "passes");
     assert!(close(passes[0].from[0], 38.0), "{:?}", passes[0].from);
-    // Another edit to that pass: its start angles stay as they were, so the starts view is not sent.
+    // Another edit to that pass: its start angles stay as they were, so the starts view is not redrawn.
     let later = edit_line(&late, -9, |_| "X38.05".into());
-    assert_eq!(sent(&again(&later, &r3, 29, 1)), ["threads", "passes", "side", "tooth"]);
+    let r4 = again(&later, &r3, 29, 1);
+    assert_eq!((sent(&r4), redrawn(&r3, &r4)), (vec!["threads", "passes"], vec!["side", "tooth"]));
     // A motion outside every thread: the side section alone.
-    let r4 = again(&edit_line(&late, -1, |l| format!("G00 X90 Z90\n{l}")), &r3, 29, 1);
-    assert_eq!(sent(&r4), ["side"]);
+    let r5 = again(&edit_line(&late, -1, |l| format!("G00 X90 Z90\n{l}")), &r3, 29, 1);
+    assert_eq!((sent(&r5), redrawn(&r3, &r5)), (vec![], vec!["side"]));
     // A caller that passes no keys gets everything.
-    let r5 = wasm::update(&late, "gsk980tdc", "", 29, 1, -1.0, None).unwrap();
-    assert_eq!(sent(&r5), PARTS);
-    assert!(!get(&r5, "diagnostics").is_null());
+    let r6 = wasm::update(&late, "gsk980tdc", "", 29, 1, -1.0, None).unwrap();
+    assert_eq!(sent(&r6), PARTS);
+    assert!(!get(&r6, "diagnostics").is_null());
 }
 
 #[wasm_bindgen_test]
@@ -197,14 +207,11 @@ fn thread_scenes_carry_the_keys_update_uses() {
     let s = wasm::thread_scenes(3, 1).unwrap();
     assert_eq!(num(&s, "thread"), 3.0);
     let r3 = again(&text, &r, 3, 1);
-    for k in ["passesKey", "toothKey", "startsKey"] {
-        assert_eq!(num(&s, k), num(&r3, k), "{k}");
-    }
+    assert_eq!(num(&s, "passesKey"), num(&r3, "passesKey"));
+    assert_eq!(redrawn(&s, &r3), [] as [&str; 0]);
+    assert_eq!(redrawn(&r, &s), ["tooth", "starts"]);
     // With thread 3's keys known, choosing it again sends nothing of it.
-    let known: Vec<f64> = ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"]
-        .iter()
-        .map(|k| if k.starts_with("threads") || k.starts_with("side") { num(&r, k) } else { num(&s, k) })
-        .collect();
+    let known = vec![num(&r, "threadsKey"), num(&s, "passesKey")];
     let r4 = wasm::update(&text, "gsk980tdc", "", 3, 1, num(&r, "diagnosticsKey"), Some(known)).unwrap();
     assert_eq!(sent(&r4), [] as [&str; 0]);
 }
@@ -232,41 +239,6 @@ fn plan_summary_counts_without_drawing() {
     assert!(close(p[0].depth, 1.8));
 }
 
-#[wasm_bindgen_test]
-fn the_side_section_comes_as_pieces_to_a_caller_with_keys() {
-    let text = program(30);
-    let none = Some(vec![-1.0; 5]);
-    let r = wasm::update(&text, "gsk980tdc", "", 0, 1, -1.0, none).unwrap();
-    let side = get(&r, "side");
-    assert_eq!(get(&side, "pieces").as_bool(), Some(true));
-    let order = Float64Array::from(get(&side, "order")).to_vec();
-    let keys = Float64Array::from(get(&side, "keys")).to_vec();
-    // Every distinct piece is sent to a caller that holds none; the axis comes apart.
-    let mut distinct = order.clone();
-    distinct.sort_by(f64::total_cmp);
-    distinct.dedup();
-    assert_eq!(keys.len(), distinct.len());
-    assert!(keys.len() > 60, "{} pieces", keys.len());
-    assert_eq!(Uint32Array::from(get(&side, "ends")).length() as usize, 5 * keys.len());
-    assert_eq!(Uint32Array::from(get(&side, "headItems")).length(), 10);
-    // After an edit to the last thread, only its band, dimensions and passes.
-    let late = edit_line(&text, -9, |_| "X38.0".into());
-    let r2 = again(&late, &r, 0, 1);
-    let side2 = get(&r2, "side");
-    assert_eq!(Float64Array::from(get(&side2, "keys")).length(), 3);
-    assert_eq!(Float64Array::from(get(&side2, "order")).to_vec().len(), order.len());
-    // A caller whose side section is not the last answered gets every piece.
-    let mut stale: Vec<f64> =
-        ["threadsKey", "passesKey", "sideKey", "toothKey", "startsKey"].iter().map(|k| num(&r, k)).collect();
-    stale[2] = 12345.0;
-    let r3 = wasm::update(&text, "gsk980tdc", "", 0, 1, -1.0, Some(stale)).unwrap();
-    assert_eq!(Float64Array::from(get(&get(&r3, "side"), "keys")).length() as usize, keys.len());
-    // Without keys: one packed scene.
-    let full = plan(&text, "gsk980tdc", "");
-    assert!(get(&get(&full, "side"), "pieces").is_undefined());
-    assert!(scene(&get(&full, "side")).items.len() > 500);
-}
-
 /// Every view keeps its own session: two programs planned in turn by two
 /// sessions each resume from their own snapshot after a late edit, where
 /// one shared planner would have re-read the whole program on every switch.
@@ -275,7 +247,7 @@ fn each_view_keeps_its_own_session() {
     let (a, b) = (wasm::Session::new(), wasm::Session::new());
     let text_a = program(40);
     let text_b = program(30).replace("G32 Z13 F2", "G32 Z14 F2");
-    let up = |s: &wasm::Session, t: &str| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    let up = |s: &wasm::Session, t: &str| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     up(&a, &text_a);
     up(&b, &text_b);
     // A late edit to each, alternating: both resume near the end.
@@ -287,5 +259,7 @@ fn each_view_keeps_its_own_session() {
     assert!(num(&ra, "resumedAt") > lines_a / 2.0, "a resumed at {}", num(&ra, "resumedAt"));
     assert!(num(&rb, "resumedAt") > 100.0, "b resumed at {}", num(&rb, "resumedAt"));
     // Each answers as a plan from scratch would.
-    assert_eq!(snapshot(&ra), snapshot(&wasm::Session::new().update(&a2, "gsk980tdc", "", 0, 1, -1.0, None).unwrap()));
+    let fresh = wasm::Session::new();
+    let full = fresh.update(&a2, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    assert_eq!(snapshot_in(&ra, Some(&a)), snapshot_in(&full, Some(&fresh)));
 }

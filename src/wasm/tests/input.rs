@@ -25,7 +25,7 @@ fn sane(text: &str, r: &wasm_bindgen::JsValue) {
     assert_eq!(num(r, "alarms"), count("error"));
     assert_eq!(num(r, "warnings"), count("warning"));
     assert_eq!(num(r, "notes"), count("info"));
-    let side = scene(&get(r, "side"));
+    let side = shown("side");
     for i in &side.items {
         assert!(i.coords.iter().all(|v| v.is_finite()), "{i:?}");
     }
@@ -40,13 +40,13 @@ fn empty_program() {
         assert_eq!(get(&r, "good").as_bool(), Some(false), "{text:?} draws nothing");
         assert_eq!((num(&r, "alarms"), num(&r, "moves")), (0.0, 0.0), "{text:?}");
         assert!(array(&get(&r, "threads")).is_empty());
-        assert!(get(&r, "thread").is_null() && get(&r, "tooth").is_null() && get(&r, "starts").is_null());
-        let side = scene(&get(&r, "side"));
+        assert!(get(&r, "thread").is_null() && shown_key(&r, 1) == 0.0 && shown_key(&r, 2) == 0.0);
+        let side = shown("side");
         assert!(side.of("cut", None).is_empty() && side.of("rapid", None).is_empty());
     }
     assert!(wasm::moves().to_vec().is_empty());
     let s = wasm::thread_scenes(0, 1).unwrap();
-    assert!(get(&s, "thread").is_null() && get(&s, "tooth").is_null());
+    assert!(get(&s, "thread").is_null() && shown_key(&s, 1) == 0.0);
 }
 
 #[wasm_bindgen_test]
@@ -182,7 +182,7 @@ fn large_program_plans() {
     let r = plan(&text, "gsk980tdc", "");
     sane(&text, &r);
     assert_eq!(array(&get(&r, "threads")).len(), 400);
-    let side = scene(&get(&r, "side"));
+    let side = shown("side");
     assert_eq!(side.of("cut", Some("polyline")).len(), 2000);
     // A long line of one word repeated: an alarm at the block, no trap.
     let long = format!("G00 {}\n", "X1 ".repeat(10_000));

@@ -1,28 +1,15 @@
 //! The scenes as the renderer gets them, checked by their numbers.
 
-use js_sys::JSON;
-use wasm_bindgen::JsValue;
+use js_sys::{Float64Array, Uint32Array};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 use super::helpers::*;
 use crate::wasm;
 
 #[wasm_bindgen_test]
-fn style_and_shape_names_index_the_codes() {
-    let shapes: Vec<String> = wasm::shape_names().iter().map(|s| s.as_string().unwrap()).collect();
-    assert_eq!(shapes, ["polyline", "polygon", "circle", "arrow", "dim", "text", "marker"]);
-    let styles: Vec<String> = wasm::style_names().iter().map(|s| s.as_string().unwrap()).collect();
-    for s in
-        ["axis", "outline", "crest", "root", "rapid", "cut", "runout", "screw_in", "area", "tool", "start", "dimension"]
-    {
-        assert!(styles.iter().any(|x| x == s), "style {s} in {styles:?}");
-    }
-}
-
-#[wasm_bindgen_test]
 fn o1006_side_scene_has_five_pass_paths() {
-    let r = plan(O1006, "gsk980tdc", "");
-    let s = scene(&get(&r, "side"));
+    let _r = plan(O1006, "gsk980tdc", "");
+    let s = shown("side");
     assert_eq!(s.view, "side");
     let cuts = s.of("cut", Some("polyline"));
     assert_eq!(cuts.len(), 5);
@@ -56,7 +43,7 @@ fn o1006_side_scene_has_five_pass_paths() {
 #[wasm_bindgen_test]
 fn o1006_tooth_scene_shows_each_depth() {
     let r = plan(O1006, "gsk980tdc", "");
-    let s = scene(&get(&r, "tooth"));
+    let s = shown("tooth");
     assert_eq!(s.view, "tooth");
     // The tool tip of every pass: radial infeed (no shift), depth downward.
     let tips = s.of("tool", Some("marker"));
@@ -98,7 +85,7 @@ fn o1006_tooth_scene_shows_each_depth() {
 #[wasm_bindgen_test]
 fn flank_infeed_moves_the_tool_along_a_flank() {
     let r = plan(G78_ALTERNATING, "gsk980tdc", "");
-    let s = scene(&get(&r, "tooth"));
+    let s = shown("tooth");
     let p: Vec<PassInfo> = passes(&r, "passes");
     let tips = s.of("tool", Some("marker"));
     assert_eq!(tips.len(), p.len());
@@ -109,7 +96,7 @@ fn flank_infeed_moves_the_tool_along_a_flank() {
     assert!(xs[0] < 0.0 && xs[1] > 0.0 && xs[2] < 0.0, "alternating sides: {xs:?}");
     assert!(s.items.iter().any(|i| i.label == Some(("infeed_alternating".into(), String::new()))));
     // The side scene draws the screw-in of every pass.
-    let side = scene(&get(&r, "side"));
+    let side = shown("side");
     assert_eq!(side.of("screw_in", Some("polyline")).len(), p.len());
 }
 
@@ -131,7 +118,7 @@ fn two_start_g32_has_starts_at_0_and_180_degrees() {
     let r = plan(G32_TWO_START, "gsk980tdc", "");
     let t: Vec<ThreadInfo> = field(&r, "threads");
     assert_eq!((t[0].starts, t[0].lead, t[0].pitch), (2, 4.0, 2.0));
-    let s = scene(&get(&r, "starts"));
+    let s = shown("starts");
     assert_eq!(s.view, "starts");
     assert_close(&start_angles(&s), &[0.0, 180.0]);
     let labels = s.labels("start");
@@ -143,8 +130,8 @@ fn two_start_g32_has_starts_at_0_and_180_degrees() {
     let dims = s.labels("dimension");
     assert!(dims.contains(&("lead".into(), "4".into())) && dims.contains(&("pitch".into(), "2".into())), "{dims:?}");
     // The tooth view of the second start is one call away.
-    let other = wasm::thread_scenes(0, 2).unwrap();
-    let tooth = scene(&get(&other, "tooth"));
+    wasm::thread_scenes(0, 2).unwrap();
+    let tooth = shown("tooth");
     assert!(tooth.labels("note").contains(&("start_of".into(), "2/2".into())));
     let tips = tooth.of("tool", Some("marker"));
     assert_eq!(tips.len(), 2);
@@ -153,12 +140,12 @@ fn two_start_g32_has_starts_at_0_and_180_degrees() {
 
 #[wasm_bindgen_test]
 fn two_start_g92_by_l() {
-    let r = plan(G92_TWO_START, "gsk980tdc", "");
-    let s = scene(&get(&r, "starts"));
+    let _r = plan(G92_TWO_START, "gsk980tdc", "");
+    let s = shown("starts");
     assert_close(&start_angles(&s), &[0.0, 180.0]);
     let offsets: Vec<String> = s.labels("start").into_iter().filter(|(k, _)| k.is_empty()).map(|(_, v)| v).collect();
     assert_eq!(offsets, ["1: 0", "2: 1.5"]);
-    let side = scene(&get(&r, "side"));
+    let side = shown("side");
     assert_eq!(side.of("cut", Some("polyline")).len(), 8, "four passes of two starts");
     assert_eq!(side.of("runout", Some("polyline")).len(), 8, "each with the No.019 run-out");
 }
@@ -166,7 +153,7 @@ fn two_start_g92_by_l() {
 #[wasm_bindgen_test]
 fn taper_thread_runs_along_its_cone() {
     let r = plan(O0009, "gsk980tdc", "");
-    let s = scene(&get(&r, "side"));
+    let s = shown("side");
     let cuts = s.of("cut", Some("polyline"));
     assert_eq!(cuts.len(), 2);
     assert_close(&cuts[0].coords, &[3.0, 27.4286 / 2.0, -72.0, 48.8571 / 2.0]);
@@ -180,14 +167,14 @@ fn taper_thread_runs_along_its_cone() {
 fn thread_and_start_choices_are_clamped() {
     let r = wasm::update(G32_TWO_START, "gsk980tdc", "", 99, 99, -1.0, None).unwrap();
     assert_eq!(num(&r, "thread"), 0.0);
-    let tooth = scene(&get(&r, "tooth"));
+    let tooth = shown("tooth");
     assert!(tooth.labels("note").contains(&("start_of".into(), "2/2".into())), "start 99 is the last start");
-    let r = wasm::update(G32_TWO_START, "gsk980tdc", "", 0, 0, -1.0, None).unwrap();
-    assert!(scene(&get(&r, "tooth")).labels("note").contains(&("start_of".into(), "1/2".into())));
+    wasm::update(G32_TWO_START, "gsk980tdc", "", 0, 0, -1.0, None).unwrap();
+    assert!(shown("tooth").labels("note").contains(&("start_of".into(), "1/2".into())));
     let r = wasm::update(G32_TWO_START, "gsk980tdc", "", -1, 1, -1.0, None).unwrap();
-    assert!(get(&r, "thread").is_null() && get(&r, "tooth").is_null() && get(&r, "starts").is_null());
+    assert!(get(&r, "thread").is_null() && shown_key(&r, 1) == 0.0 && shown_key(&r, 2) == 0.0);
     assert!(array(&get(&r, "passes")).is_empty());
-    assert!(get(&r, "side").is_object(), "the side view draws every thread");
+    assert!(shown_key(&r, 0) != 0.0, "the side view draws every thread");
     // Renhe's two threads: the second one chosen.
     let r = wasm::update(RENHE_TAILS, "renhe", "", 1, 1, -1.0, None).unwrap();
     assert_eq!(num(&r, "thread"), 1.0);
@@ -195,69 +182,72 @@ fn thread_and_start_choices_are_clamped() {
     assert_eq!(p[0].lines, [10, 11, 12]);
 }
 
-/// The record layout is defined once in Rust and read by name: every field
-/// of `pack::FIELDS` at its index, the names lists indexed by their codes.
+/// A view's display list from the session: the core's labels placed at the
+/// fit (or at the view's transform), the mark's halos, the pick under the
+/// pointer, and the SVG export written from the same list.
 #[wasm_bindgen_test]
-fn scene_layout_names_every_field() {
-    let l = wasm::scene_layout();
-    assert_eq!(num(&l, "stride") as usize, crate::wasm::pack::STRIDE);
-    let fields = get(&l, "fields");
-    for (i, name) in crate::wasm::pack::FIELDS.iter().enumerate() {
-        assert_eq!(num(&fields, name) as usize, i, "{name}");
-    }
-    let styles = array(&get(&l, "styles"));
-    assert_eq!(styles[crate::diagram::Style::Cut.code() as usize].as_string().as_deref(), Some("cut"));
-    let shapes = array(&get(&l, "shapes"));
-    assert_eq!(shapes[4].as_string().as_deref(), Some("dim"));
-}
-
-/// The layout the app's SVG export passes (`SceneView.svgLayout()`), as JSON.
-fn layout_json(item: usize) -> String {
-    format!(
-        r#"{{"transform":{{"sx":9.5,"sy":14.25,"tx":-60,"ty":420}},
-            "labels":[{{"item":{item},"key":"dia_major","text":"大径 Ø48","lines":["大径 Ø48"],"align":"middle",
-                        "box":[20.5,100,35.5,160.25],"angle":-90,"must":true,"off":-24,"len":40,"lead":null}}]}}"#
-    )
-}
-
-#[wasm_bindgen_test]
-fn the_svg_export_is_the_core_writer_at_the_views_transform_and_labels() {
-    use crate::diagram::scene::Style;
-    use crate::svg::{Layout, Options, svg};
+fn views_draw_pick_and_export_the_sessions_scenes() {
+    use crate::draw::{Transform, View};
     let s = wasm::Session::new();
-    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    let none = Uint32Array::new_with_length(0);
+    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    let d = s.draw("side", 640.0, 360.0, None, true, -1, -1, none.to_vec(), false).unwrap();
+    let xf = Float64Array::from(get(&d, "transform")).to_vec();
+    assert_eq!(xf.len(), 4);
+    let texts: Vec<String> = array(&get(&d, "texts")).iter().map(|t| t.as_string().unwrap()).collect();
+    for want in ["major Ø48", "minor Ø45.4", "Ph 2", "L 57"] {
+        assert!(texts.iter().any(|t| t == want), "{want} in {texts:?}");
+    }
+    assert_eq!(num(&d, "dropped"), 0.0);
+    let ops = Uint32Array::from(get(&d, "ops")).to_vec();
+    assert_eq!(ops.len() % 7, 0);
+    // The same list, written: what `screwcut svg` writes at that transform.
+    let t = Transform { sx: xf[0], sy: xf[1], tx: xf[2], ty: xf[3] };
     let scene = crate::diagram::side(&crate::plan(O1006, &crate::Settings::new(crate::Dialect::Gsk980tdc)));
-    let major = scene.items.iter().position(|i| i.style == Style::Diameter).expect("a diameter");
-    // Without a layout: fitted to the page as the command line does.
-    let fitted = s.svg("side", 0, 1, vec![640.0, 360.0], true, Vec::new(), JsValue::UNDEFINED).unwrap();
-    assert_eq!(fitted, svg(&scene, &Options { width: 640.0, height: 360.0, stretch: true, ..Options::default() }));
-    assert!(fitted.contains("viewBox=\"0 0 640 360\""));
-    // With the view's layout: its transform, its labels where given, in its words.
-    let json = layout_json(major);
-    let given = JSON::parse(&json).unwrap();
-    let drawn = s.svg("side", 0, 1, vec![640.0, 360.0], true, Vec::new(), given).unwrap();
-    let layout: Layout = serde_json::from_str(&json).unwrap();
-    let o = Options { width: 640.0, height: 360.0, stretch: true, layout: Some(layout), ..Options::default() };
-    assert_eq!(drawn, svg(&scene, &o));
-    assert!(drawn.contains("transform=\"rotate(-90 28 130.13)\" fill=\"#111827\""), "{drawn}");
-    assert!(drawn.contains(">大径 Ø48</text>") && drawn.matches("<text ").count() == 1);
-    // A layout that does not fit the scene is an error, never a trap.
-    let cut = scene.items.iter().position(|i| i.style == Style::Cut).unwrap();
-    let bad = [
-        (layout_json(cut), "neither a dimension nor a text"),
-        (layout_json(1 << 20), "not in the scene"),
-        (json.replace("\"sx\":9.5", "\"sx\":0"), "positive scales"),
-        (json.replace("\"middle\"", "\"sideways\""), "the SVG layout"),
-        (json.replace("[\"大径 Ø48\"]", "[]"), "lines"),
-        (r#"{"labels":[]}"#.to_string(), "the SVG layout"),
-        ("\"side\"".to_string(), "the SVG layout"),
-    ];
-    for (text, want) in bad {
-        let e = s.svg("side", 0, 1, vec![640.0, 360.0], false, Vec::new(), JSON::parse(&text).unwrap()).unwrap_err();
-        assert!(message(e).contains(want), "{text}: {want}");
+    let v = View { width: 640.0, height: 360.0, transform: Some(t), ..View::default() };
+    assert_eq!(s.svg("side", 640.0, 360.0, Some(xf.clone()), true).unwrap(), crate::svg::svg(&scene, &v));
+    // In Chinese, the same drawing in the other words.
+    s.set_lang("zh");
+    let zh = s.draw("side", 640.0, 360.0, Some(xf.clone()), true, -1, -1, none.to_vec(), false).unwrap();
+    let texts: Vec<String> = array(&get(&zh, "texts")).iter().map(|t| t.as_string().unwrap()).collect();
+    assert!(texts.iter().any(|t| t == "大径 Ø48"), "{texts:?}");
+    s.set_lang("en");
+    // The pointer over the third cut (Z40, radius 22.95): that pass, its line.
+    let (px, py) = (xf[2] + xf[0] * 40.0, xf[3] - xf[1] * 22.95);
+    let hit = s.pick("side", xf.clone(), px, py).unwrap();
+    assert_eq!((num(&hit, "thread"), num(&hit, "pass")), (0.0, 2.0));
+    assert!(s.pick("side", xf.clone(), 1.0, 1.0).unwrap().is_null());
+    // Marked, the pass's halos come first in the list (beneath the items).
+    let marked = s.draw("side", 640.0, 360.0, Some(xf.clone()), true, 0, 2, none.to_vec(), false).unwrap();
+    let pens = array(&get(&marked, "pens"));
+    let first = Uint32Array::from(get(&marked, "ops")).get_index(1) as usize;
+    assert_eq!(get(&pens[first], "stroke").as_string().as_deref(), Some("#f59e0b"));
+    // Bad views are errors, never traps.
+    for (w, h) in [(f64::NAN, 360.0), (-1.0, 360.0), (1e9, 360.0)] {
+        assert!(s.draw("side", w, h, None, false, -1, -1, none.to_vec(), false).is_err(), "{w}×{h}");
     }
-    for size in [vec![640.0], vec![f64::NAN, 360.0], vec![-1.0, 360.0], vec![1e9, 360.0]] {
-        let e = s.svg("side", 0, 1, size.clone(), false, Vec::new(), JsValue::NULL).unwrap_err();
-        assert!(!message(e).is_empty(), "{size:?}");
-    }
+    assert!(message(s.draw("front", 640.0, 360.0, None, false, -1, -1, none.to_vec(), false).unwrap_err()).contains("unknown view"));
+    assert!(message(s.draw("side", 640.0, 360.0, Some(vec![0.0, 1.0, 0.0, 0.0]), false, -1, -1, none.to_vec(), false).unwrap_err()).contains("positive"));
+    assert!(s.pick("side", vec![1.0], 0.0, 0.0).is_err());
+}
+
+/// The last good drawing: shown greyed while the text has an alarm, once
+/// the page said it was left (`keep`); another program (`fresh`) forgets it.
+#[wasm_bindgen_test]
+fn an_alarm_shows_the_drawing_left_greyed() {
+    let s = wasm::Session::new();
+    let none = Uint32Array::new_with_length(0).to_vec();
+    let good = s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    let broken = O1006.replace("X46.5", "X46..5");
+    let r = s.update(&broken, "gsk980tdc", "", 0, 1, -1.0, None, false, true).unwrap();
+    assert_eq!(get(&r, "stale").as_bool(), Some(true));
+    assert_eq!(shown_key(&r, 0), shown_key(&good, 0), "the good drawing's side section");
+    let d = s.draw("side", 640.0, 360.0, None, false, -1, -1, none.clone(), false).unwrap();
+    assert_eq!(get(&d, "stale").as_bool(), Some(true));
+    let strokes: Vec<String> = array(&get(&d, "pens")).iter().filter_map(|p| get(p, "stroke").as_string()).collect();
+    assert!(!strokes.iter().any(|c| c == "#2563eb"), "grey pens: {strokes:?}");
+    assert!(s.pick("side", Float64Array::from(get(&d, "transform")).to_vec(), 320.0, 180.0).unwrap().is_null());
+    // Another program with an alarm: nothing kept.
+    let other = s.update(&broken, "gsk980tdc", "", 0, 1, -1.0, None, true, false).unwrap();
+    assert_eq!(get(&other, "stale").as_bool(), Some(false));
 }

@@ -19,7 +19,7 @@ fn object(fields: &[(&str, JsValue)]) -> JsValue {
 
 /// Plans `text` as `dialect` in a fresh session.
 fn plan(text: &str, dialect: &str) -> JsValue {
-    wasm::Session::new().update(text, dialect, "", 0, 1, -1.0, None).unwrap()
+    wasm::Session::new().update(text, dialect, "", 0, 1, -1.0, None, false, false).unwrap()
 }
 
 #[wasm_bindgen_test]
@@ -103,7 +103,7 @@ fn a_bad_wizard_request_is_named() {
 #[wasm_bindgen_test]
 fn a_plan_expands_to_blocks_for_another_controller() {
     let s = wasm::Session::new();
-    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     let e = s.expand("linuxcnc").unwrap();
     let program = get(&e, "program").as_string().unwrap();
     assert!(program.contains("G33 X47.1 Z13 K2"), "{program}");
@@ -117,7 +117,7 @@ fn a_plan_expands_to_blocks_for_another_controller() {
     assert!(message(s.expand("bogus").unwrap_err()).contains("unknown dialect"));
     // Notes in the session's language: Renhe has no G96 and writes a G30 tail.
     let css = "G00 X58 Z70\nG96 S120 M03\nG00 X47.1\nG32 Z13 F2\nG00 X58\nZ70\nM30\n";
-    s.update(css, "gsk980tdc", "", 0, 1, -1.0, None).unwrap();
+    s.update(css, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     let notes =
         |e: JsValue| -> Vec<String> { array(&get(&e, "notes")).iter().map(|n| n.as_string().unwrap()).collect() };
     let en = notes(s.expand("gsk980tdc").unwrap());
