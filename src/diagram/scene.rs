@@ -256,11 +256,13 @@ pub enum Style {
     /// the diameter, drawn as a half-section's half dimension (one arrowhead,
     /// at the diameter; its line runs towards the axis).
     Diameter,
+    /// Where the side section's radial scale is broken, and its note.
+    Break,
 }
 
 impl Style {
     /// Every style, in the order of their packed codes.
-    pub const ALL: [Style; 24] = [
+    pub const ALL: [Style; 25] = [
         Style::Axis,
         Style::Outline,
         Style::Crest,
@@ -285,6 +287,7 @@ impl Style {
         Style::Start,
         Style::Ruler,
         Style::Diameter,
+        Style::Break,
     ];
 
     /// The name renderers know the style by (as serialised).
@@ -314,6 +317,7 @@ impl Style {
             Style::Start => "start",
             Style::Ruler => "ruler",
             Style::Diameter => "diameter",
+            Style::Break => "break",
         }
     }
 

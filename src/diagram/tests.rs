@@ -67,13 +67,20 @@ fn o1006_side_has_five_pass_paths_from_z70_to_z13() {
         let items: Vec<&Item> = scene.of_pass(0, k).collect();
         let styles: Vec<Style> = items.iter().map(|i| i.style).collect();
         assert_eq!(styles, vec![Style::Rapid, Style::Cut, Style::Rapid, Style::Rapid], "pass {k}");
+        // The infeed from the retract at X58: beyond half a thread height over
+        // the crest (r 24 + 0.65) the radial scale is broken (diagram::radial):
+        // r 29 is drawn at 24.65 + 0.975·ln(1 + 4.35/0.975) = 26.305.
         let infeed = polyline(items[0]);
-        assert_eq!(infeed[1], [70.0, x / 2.0]);
+        assert_eq!(infeed.len(), 3, "{infeed:?}");
+        assert!((infeed[0][1] - 26.3053).abs() < 1e-4 && infeed[1] == [70.0, 24.65], "{infeed:?}");
+        assert_eq!(infeed[2], [70.0, x / 2.0]);
     }
     // The approach from G50 X0 Z0 belongs to no pass.
     let other: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::OtherRapid).collect();
     assert_eq!(other.len(), 1);
-    assert_eq!(polyline(other[0]), &[[0.0, 0.0], [70.0, 29.0]]);
+    let approach = polyline(other[0]);
+    assert_eq!((approach[0], approach.len()), ([0.0, 0.0], 3));
+    assert!((approach[1][0] - 70.0 * 24.65 / 29.0).abs() < 1e-9 && approach[1][1] == 24.65, "{approach:?}");
     assert_eq!(other[0].lines, vec![4]);
     // Dimensions: major 48 (assumed crest), minor 45.4, lead 2, length 57.
     let d = dims(&scene);
@@ -90,7 +97,11 @@ fn o1006_side_has_five_pass_paths_from_z70_to_z13() {
     assert!(polyline(root).iter().all(|p| close(p[1], 22.7)));
     // Focus: the cuts and the nearby rapids, not the G50 origin nor the final retract to X100 Z100.
     let f = scene.focus;
-    assert!(close(f.x0, 13.0) && close(f.x1, 70.0) && close(f.y0, 22.7) && close(f.y1, 29.0), "{f:?}");
+    // The retract at r 29 is drawn at 26.305 (the broken scale): the passes take a third of the focus's height, not a fifth.
+    assert!(close(f.x0, 13.0) && close(f.x1, 70.0) && close(f.y0, 22.7) && (f.y1 - 26.3053).abs() < 1e-4, "{f:?}");
+    // The break line crosses the focus, with its note.
+    let brk: Vec<&Item> = scene.items.iter().filter(|i| i.style == Style::Break).collect();
+    assert_eq!(brk.len(), 2);
     assert!(close(scene.bounds.y0, 0.0));
     // The axis is the first item and spans the drawing.
     assert_eq!(scene.items[0].style, Style::Axis);

@@ -142,6 +142,15 @@ pub(super) fn fit(scene: &Scene, o: &View, (w, h): (f64, f64)) -> Transform {
         xf = Transform { sx: s, sy: stretched(s, syv), tx: 0.0, ty: 0.0 };
         round += 1;
     }
+    // Places depend on the scale: where the last round's places ask for less
+    // room than those at the final scale, the scale gives way once more.
+    let els = elements(scene, &mut set, &xf, &lines);
+    let sxh = max_scale(&els, |e| e.x, |e| e.l, |e| e.r, aw);
+    let syv = max_scale(&els, |e| -e.y, |e| e.t, |e| e.b, ah);
+    if sxh.min(syv) < xf.sx {
+        let s = sxh.min(syv).max(iso / 3.0);
+        xf = Transform { sx: s, sy: stretched(s, syv.max(s)), tx: 0.0, ty: 0.0 };
+    }
     // Centre the whole: geometry and labels.
     let els = elements(scene, &mut set, &xf, &lines);
     let (mut xa, mut xb, mut ya, mut yb) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);

@@ -34,7 +34,7 @@ fn rank(key: &str) -> i32 {
         "tool_angle" | "infeed_radial" | "infeed_left" | "infeed_right" | "infeed_alternating"
         | "infeed_programmed" | "square_tool" => 10,
         "delta1" | "delta2" => 11,
-        "one_rev" | "axial_offsets" => 12,
+        "one_rev" | "axial_offsets" | "radial_break" => 12,
         "start_angle" => 13,
         "" => 14,
         "pass_depth" => 15,

@@ -35,6 +35,7 @@ pub fn english(key: &str) -> Option<&'static str> {
         "detail_passes" => "every n-th pass drawn (n/all): {}",
         "detail_starts" => "one start drawn, the others cut the same path (1/starts): {}",
         "detail_starts_passes" => "one start and every n-th pass drawn (1/starts n/all): {}",
+        "radial_break" => "radial scale compressed beyond this line",
         _ => return None,
     })
 }
@@ -66,13 +67,14 @@ pub fn chinese(key: &str) -> Option<&'static str> {
         "detail_passes" => "每隔 n 次走刀画一次(n/总数)：{}",
         "detail_starts" => "只画一头，其余各头路径相同(1/头数)：{}",
         "detail_starts_passes" => "只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}",
+        "radial_break" => "此线以外径向比例压缩",
         // δ1, δ2 and the bare values read the same in both languages.
         key => return english(key),
     })
 }
 
 /// The label keys a scene uses.
-pub const LABEL_KEYS: [&str; 28] = [
+pub const LABEL_KEYS: [&str; 29] = [
     "dia_major",
     "dia_minor",
     "lead",
@@ -101,6 +103,7 @@ pub const LABEL_KEYS: [&str; 28] = [
     "detail_passes",
     "detail_starts",
     "detail_starts_passes",
+    "radial_break",
 ];
 
 

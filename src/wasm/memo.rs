@@ -145,7 +145,10 @@ impl SideMemo {
     pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Scene {
         let b = self.build(plan, thread_keys);
         let pieces: Vec<&Chunk> = b.order.iter().map(|k| &self.chunks[k]).collect();
-        join(b.head, &pieces)
+        let mut scene = join(b.head, &pieces);
+        crate::diagram::radial::apply(&mut scene, plan);
+        scene.finish();
+        scene
     }
 
     /// Builds or reuses every piece of `plan`'s side section.

@@ -225,6 +225,8 @@ export class Engine {
    */
   async on_export({ id, name, format, scale }) {
     const v = this.views[name];
+    // Only the tooth and starts views can show nothing: a program without a thread.
+    if (v && v.key === null) throw new Error(`no thread to draw the ${name} view of`);
     let data = null;
     if (v && format === 'svg') data = v.svg();
     else if (v) data = await v.toPNG(scale || 2);

@@ -1,12 +1,14 @@
 // What a person does to a drawing on the page, as operations on its view:
-// resize, pan (drag, arrow keys), zoom (wheel or pinch around the pointer,
-// + and − keys), fit (double-click, 0 or F), hover and pick (pointer, or
-// Enter on the focused drawing). The target is a SceneView on the page or a
+// resize, pan (drag, arrow keys), zoom (wheel or pinch around the pointer;
+// + and − keys around the pointer when it is over the drawing, else around
+// what is marked or the drawing's middle, as the view's display list says),
+// fit (double-click, 0 or F), hover and pick (pointer, or Enter on the focused drawing). The target is a SceneView on the page or a
 // stand-in that forwards the operations to the drawing worker.
 
 /**
  * Binds `canvas`'s events to `target`: `{resize(w, h, dpr), pan(dx, dy),
- * zoom(px, py, k), fit(), hover(x, y, clientX, clientY), leave(), pick(x, y)}`.
+ * zoom(px, py, k) (px, py null: the view's own anchor), fit(), hover(x, y,
+ * clientX, clientY), leave(), pick(x, y)}`.
  * `opts.wheel: 'ctrl'` zooms only with Ctrl (or ⌘) held, so that a page of
  * embedded drawings still scrolls under the wheel. Returns `{destroy()}`.
  */
@@ -21,6 +23,7 @@ export function bindCanvas(canvas, target, opts = {}) {
   size();
   if (!canvas.hasAttribute('tabindex')) canvas.tabIndex = 0;
   let drag = null;
+  let pointer = null; // where the pointer is over the drawing, for the keys' zoom
   const local = (e) => {
     const r = canvas.getBoundingClientRect();
     return [e.clientX - r.left, e.clientY - r.top];
@@ -44,6 +47,7 @@ export function bindCanvas(canvas, target, opts = {}) {
       return;
     }
     const [x, y] = local(e);
+    pointer = [x, y];
     target.hover(x, y, e.clientX, e.clientY);
   });
   on('pointerup', (e) => {
@@ -56,7 +60,10 @@ export function bindCanvas(canvas, target, opts = {}) {
   on('pointercancel', () => {
     drag = null;
   });
-  on('pointerleave', () => target.leave());
+  on('pointerleave', () => {
+    pointer = null;
+    target.leave();
+  });
   on('dblclick', () => target.fit());
   on(
     'wheel',
@@ -76,9 +83,9 @@ export function bindCanvas(canvas, target, opts = {}) {
       ArrowRight: () => target.pan(-step, 0),
       ArrowUp: () => target.pan(0, step),
       ArrowDown: () => target.pan(0, -step),
-      '+': () => target.zoom(r.width / 2, r.height / 2, 1.25),
-      '=': () => target.zoom(r.width / 2, r.height / 2, 1.25),
-      '-': () => target.zoom(r.width / 2, r.height / 2, 0.8),
+      '+': () => target.zoom(pointer?.[0] ?? null, pointer?.[1] ?? null, 1.25),
+      '=': () => target.zoom(pointer?.[0] ?? null, pointer?.[1] ?? null, 1.25),
+      '-': () => target.zoom(pointer?.[0] ?? null, pointer?.[1] ?? null, 0.8),
       0: () => target.fit(),
       f: () => target.fit(),
       F: () => target.fit(),

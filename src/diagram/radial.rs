@@ -1,0 +1,183 @@
+//! The side section's broken radial scale, as a manual draws a long part:
+//! beyond a little above the crest of the threads (below it, for internal
+//! threads) the radial distance is compressed — logarithmically, so the
+//! retract a few millimetres out stays readable while a far return takes
+//! little room — and a break line with a note marks where. The passes, the
+//! crest and the root keep their true scale; the labels keep the true values.
+//! The side section's first fit then frames the thread and its passes.
+
+use super::band::Band;
+use super::scene::{Anchor, Item, Label, Pt, Rect, Scene, Shape, Style};
+use crate::thread::Axis;
+use crate::plan::Plan;
+
+/// How far beyond the crest the true scale goes, in thread heights.
+const KEEP: f64 = 0.5;
+/// The compressed scale's unit, in thread heights: distance `d` beyond the break becomes `S·ln(1 + d/S)`.
+const UNIT: f64 = 0.75;
+/// Distances beyond the break shorter than this many units are not worth breaking for.
+const WORTH: f64 = 4.0;
+
+/// One break: at radius `at`, compressing beyond it outward (`out`: larger radii) or inward.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Break {
+    /// The radius where the true scale ends.
+    pub at: f64,
+    /// The compressed scale's unit (mm).
+    pub unit: f64,
+    /// Compress the radii above `at` (external threads), else below.
+    pub out: bool,
+}
+
+impl Break {
+    /// The drawn radius of radius `r`.
+    pub fn map(&self, r: f64) -> f64 {
+        let d = if self.out { r - self.at } else { self.at - r };
+        if d <= 0.0 || !d.is_finite() {
+            return r;
+        }
+        let c = self.unit * (d / self.unit).ln_1p();
+        if self.out { self.at + c } else { self.at - c }
+    }
+
+    /// The drawn point of world point `p`.
+    fn point(&self, p: Pt) -> Pt {
+        [p[0], self.map(p[1])]
+    }
+
+    /// Where segment a→b crosses the break line, if it does (strictly).
+    fn crossing(&self, a: Pt, b: Pt) -> Option<Pt> {
+        let (da, db) = (a[1] - self.at, b[1] - self.at);
+        if da * db >= 0.0 {
+            return None;
+        }
+        let t = da / (da - db);
+        Some([a[0] + t * (b[0] - a[0]), self.at])
+    }
+
+    /// A path through the break: crossings inserted so that the true-scale part stays straight.
+    fn path(&self, points: &[Pt], closed: bool) -> Vec<Pt> {
+        let mut out = Vec::with_capacity(points.len() + 2);
+        let n = points.len();
+        for (k, &p) in points.iter().enumerate() {
+            out.push(self.point(p));
+            let next = if k + 1 < n { Some(points[k + 1]) } else if closed && n > 2 { Some(points[0]) } else { None };
+            if let Some(c) = next.and_then(|q| self.crossing(p, q)) {
+                out.push(c);
+            }
+        }
+        out
+    }
+}
+
+/// The breaks the side section of `plan` takes: one outward for its
+/// external threads along Z, one inward for its internal ones, each only
+/// where something lies far enough beyond it.
+pub fn breaks(plan: &Plan, scene: &Scene) -> Vec<Break> {
+    let mut out = Vec::new();
+    for internal in [false, true] {
+        let bands: Vec<(Band, f64)> = plan
+            .threads
+            .iter()
+            .filter(|t| t.internal == internal && t.long_axis == Axis::Z)
+            .filter_map(|t| Band::of(t).map(|b| (b, t.height)))
+            .filter(|(b, h)| b.height.is_finite() && *h > 0.0)
+            .collect();
+        if bands.is_empty() {
+            continue;
+        }
+        let h = bands.iter().map(|(b, _)| b.height).fold(0.0, f64::max);
+        let crest = |b: &Band| if internal { b.crest(b.l0).min(b.crest(b.l1)) } else { b.crest(b.l0).max(b.crest(b.l1)) };
+        let at = if internal {
+            bands.iter().map(|(b, _)| crest(b)).fold(f64::INFINITY, f64::min) - KEEP * h
+        } else {
+            bands.iter().map(|(b, _)| crest(b)).fold(f64::NEG_INFINITY, f64::max) + KEEP * h
+        };
+        let unit = UNIT * h;
+        let mut far: f64 = 0.0;
+        for item in scene.items.iter().filter(|i| !matches!(i.style, Style::Axis | Style::Diameter)) {
+            item.each_point(|p| far = far.max(if internal { at - p[1] } else { p[1] - at }));
+        }
+        if far > WORTH * unit && at.is_finite() && (!internal || at > 0.0) {
+            out.push(Break { at, unit, out: !internal });
+        }
+    }
+    out
+}
+
+/// Applies the breaks of `plan` to its side section `scene`: every item's
+/// radii through each break, the bounds and focus too, and a break line
+/// with its note across the focus.
+pub fn apply(scene: &mut Scene, plan: &Plan) {
+    let list = breaks(plan, scene);
+    if list.is_empty() {
+        return;
+    }
+    for b in &list {
+        for item in &mut scene.items {
+            map_shape(&mut item.shape, b);
+        }
+        let map_rect = |r: &mut Rect| {
+            if !r.is_empty() {
+                let (y0, y1) = (b.map(r.y0), b.map(r.y1));
+                (r.y0, r.y1) = (y0.min(y1), y0.max(y1));
+            }
+        };
+        map_rect(&mut scene.bounds);
+        map_rect(&mut scene.focus);
+    }
+    for b in &list {
+        mark(scene, b);
+    }
+}
+
+fn map_shape(shape: &mut Shape, b: &Break) {
+    match shape {
+        Shape::Polyline { points } => *points = b.path(points, false),
+        Shape::Polygon { points } => *points = b.path(points, true),
+        Shape::Circle { center, .. } => *center = b.point(*center),
+        Shape::Arrow { from, to } => (*from, *to) = (b.point(*from), b.point(*to)),
+        Shape::Dim { a, b: q, .. } => (*a, *q) = (b.point(*a), b.point(*q)),
+        Shape::Text { at, .. } | Shape::Marker { at, .. } => *at = b.point(*at),
+    }
+}
+
+/// The break line across the focus (a zigzag in the middle) and its note.
+fn mark(scene: &mut Scene, b: &Break) {
+    let f = scene.focus;
+    if f.is_empty() {
+        return;
+    }
+    let (x0, x1) = (f.x0, f.x1);
+    let (w, y) = ((x1 - x0).max(1e-6), b.at + if b.out { 0.2 } else { -0.2 } * b.unit);
+    let (m, s, a) = ((x0 + x1) / 2.0, 0.008 * w, 0.15 * b.unit);
+    let zig = vec![[x0, y], [m - s, y], [m - s / 2.0, y + a], [m + s / 2.0, y - a], [m + s, y], [x1, y]];
+    scene.push(Item::new(Shape::Polyline { points: zig }, Style::Break), true);
+    // Clear of the line: the note's box (15 px high) sits 4 px above it (below, inward).
+    let dy = if b.out { 12.0 } else { -12.0 };
+    let note = Shape::Text { at: [x0, y], label: Label::new("radial_break", ""), anchor: Anchor::Start, dx: 4.0, dy };
+    scene.push(Item::new(note, Style::Break), false);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_scale_is_true_to_the_break_and_logarithmic_beyond() {
+        let b = Break { at: 24.65, unit: 0.975, out: true };
+        assert_eq!(b.map(23.0), 23.0);
+        assert_eq!(b.map(24.65), 24.65);
+        // The retract at X58 (r 29): 4.35 beyond becomes 0.975·ln(1 + 4.35/0.975) = 1.655.
+        assert!((b.map(29.0) - 26.305).abs() < 1e-3, "{}", b.map(29.0));
+        // The return at X100 (r 50): 25.35 beyond becomes 3.213.
+        assert!((b.map(50.0) - 27.863).abs() < 1e-3, "{}", b.map(50.0));
+        let inward = Break { at: 10.0, unit: 1.0, out: false };
+        assert_eq!(inward.map(12.0), 12.0);
+        assert!((inward.map(0.0) - (10.0 - 11f64.ln())).abs() < 1e-12);
+        // A segment across the break keeps its true-scale part straight: the crossing is inserted.
+        let p = b.path(&[[70.0, 29.0], [70.0, 23.55]], false);
+        assert_eq!(p.len(), 3);
+        assert_eq!(p[1], [70.0, 24.65]);
+    }
+}
