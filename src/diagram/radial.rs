@@ -142,17 +142,20 @@ fn map_shape(shape: &mut Shape, b: &Break) {
     }
 }
 
-/// The break line across the focus (a zigzag in the middle) and its note.
+/// The break line across the focus (a zigzag in the middle) and its note:
+/// halfway between the break and the focus's edge beyond it (the passes'
+/// retract as drawn), clear of the dimensions beside the crest.
 fn mark(scene: &mut Scene, b: &Break) {
     let f = scene.focus;
     if f.is_empty() {
         return;
     }
+    let reach = (if b.out { f.y1 - b.at } else { b.at - f.y0 }).max(0.5 * b.unit);
     let (x0, x1) = (f.x0, f.x1);
-    let (w, y) = ((x1 - x0).max(1e-6), b.at + if b.out { 0.2 } else { -0.2 } * b.unit);
+    let (w, y) = ((x1 - x0).max(1e-6), b.at + if b.out { 0.5 } else { -0.5 } * reach);
     let (m, s, a) = ((x0 + x1) / 2.0, 0.008 * w, 0.15 * b.unit);
     let zig = vec![[x0, y], [m - s, y], [m - s / 2.0, y + a], [m + s / 2.0, y - a], [m + s, y], [x1, y]];
-    scene.push(Item::new(Shape::Polyline { points: zig }, Style::Break), true);
+    scene.push(Item::new(Shape::Polyline { points: zig }, Style::Break), false);
     // Clear of the line: the note's box (15 px high) sits 4 px above it (below, inward).
     let dy = if b.out { 12.0 } else { -12.0 };
     let note = Shape::Text { at: [x0, y], label: Label::new("radial_break", ""), anchor: Anchor::Start, dx: 4.0, dy };
