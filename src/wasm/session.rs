@@ -35,6 +35,8 @@ pub(super) struct State {
     pub(super) shown: Shown,
     /// The chosen thread (its dimensions are drawn when the side section has many).
     pub(super) thread: usize,
+    /// Plans made so far (each plan's number).
+    plans: u64,
 }
 
 /// A planning session of one view (see the module documentation).
@@ -59,7 +61,7 @@ impl Session {
     /// and returns what the page lists:
     /// `{dialect, units, alarms, warnings, notes, moves, timeS (threading time, s; null without S), good, settingErrors,
     /// diagnostics, diagnosticsKey, threads, threadsKey, thread, passes,
-    /// passesKey, shown: [side, tooth, starts keys], stale, resumedAt}`:
+    /// passesKey, shown: [side, tooth, starts keys], stale, plan, goodPlan, resumedAt}`:
     /// `threads` are summaries (a pass count instead of the passes), `passes` are
     /// the chosen thread's. `diagnostics` is null when its key equals
     /// `known_diagnostics` (the key of the list the caller already has); so is
@@ -70,7 +72,9 @@ impl Session {
     /// thread (−1: none) and start drawn in the tooth and starts views.
     /// `good` is true when the plan draws something (threads or motions) and
     /// has no alarm. `shown` are the keys of the scenes the views show and
-    /// `stale` whether they are the last good drawing, greyed (see
+    /// `stale` whether they are the last good drawing, greyed; `plan` numbers
+    /// this plan and `goodPlan` the plan of the good drawing kept (null: none;
+    /// a page shows that plan's lists while the drawing is greyed) (see
     /// [`super::shown`]: `fresh`, the text is another program's; `keep`, the
     /// drawing on screen before this edit was left).
     ///
@@ -104,6 +108,7 @@ impl Session {
                 threads: ThreadsSent::default(),
                 shown: Shown::default(),
                 thread: 0,
+                plans: 0,
             },
         };
         session.planner.plan(text);
@@ -111,7 +116,8 @@ impl Session {
         if let Some(plan) = session.planner.last_mut() {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
-        let State { planner, side, threads, shown, thread: chosen } = &mut session;
+        session.plans += 1;
+        let State { planner, side, threads, shown, thread: chosen, plans } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {
@@ -121,6 +127,7 @@ impl Session {
                 let (tooth, starts) = thread_scenes_of(plan, picked, start);
                 let side_scene = Rc::new(side.side(plan, &keys.threads));
                 let scenes = Scenes {
+                    plan: *plans,
                     scenes: [Some(side_scene), tooth.0, starts.0],
                     keys: [js_key(keys.side), tooth.1, starts.1],
                 };
@@ -129,6 +136,8 @@ impl Session {
                 answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(|o| {
                     set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
                     set(&o, "stale", &shown.stale().into());
+                    set(&o, "plan", &(*plans as f64).into());
+                    set(&o, "goodPlan", &shown.good_plan().map_or(JsValue::NULL, |g| (g as f64).into()));
                     set(&o, "resumedAt", &planner.resumed_at().into());
                     o.into()
                 })

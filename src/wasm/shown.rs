@@ -36,6 +36,8 @@ impl Which {
 /// One plan's scenes with their content keys.
 #[derive(Clone, Default)]
 pub struct Scenes {
+    /// Which plan they are of (the session counts its plans).
+    pub plan: u64,
     /// The scenes, by [`Which`].
     pub scenes: [Option<Rc<Scene>>; 3],
     /// Their keys (0: none).
@@ -85,6 +87,11 @@ impl Shown {
         self.stale
     }
 
+    /// The plan of the good drawing, if one is kept (the page keeps that plan's lists to show with it).
+    pub fn good_plan(&self) -> Option<u64> {
+        self.good.as_ref().map(|g| g.plan)
+    }
+
     fn showing(&self) -> &Scenes {
         match (&self.good, self.stale) {
             (Some(g), true) => g,
@@ -110,7 +117,7 @@ mod tests {
 
     fn scenes(key: f64) -> Scenes {
         let s = Rc::new(Scene::new(ViewKind::Side));
-        Scenes { scenes: [Some(s), None, None], keys: [key, 0.0, 0.0] }
+        Scenes { plan: key as u64, scenes: [Some(s), None, None], keys: [key, 0.0, 0.0] }
     }
 
     #[test]
@@ -124,13 +131,13 @@ mod tests {
         // Fixed: a candidate again; left; then an alarm shows it greyed.
         s.planned(scenes(3.0), true, false, false, false);
         s.planned(scenes(4.0), false, true, false, true);
-        assert_eq!((s.keys()[0], s.stale()), (3.0, true));
+        assert_eq!((s.keys()[0], s.stale(), s.good_plan()), (3.0, true, Some(3)));
         // Still an alarm: still the good drawing, greyed.
         s.planned(scenes(5.0), false, true, false, false);
         assert_eq!((s.keys()[0], s.stale()), (3.0, true));
         // Another program: forgotten.
         s.planned(scenes(6.0), false, true, true, false);
-        assert_eq!((s.keys()[0], s.stale()), (6.0, false));
+        assert_eq!((s.keys()[0], s.stale(), s.good_plan()), (6.0, false, None));
         assert!(s.scene(Which::Tooth).is_none());
     }
 }

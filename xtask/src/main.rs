@@ -48,8 +48,8 @@ fn main() -> ExitCode {
 /// Error type of the tasks: a message.
 pub type Result<T = ()> = std::result::Result<T, String>;
 
-/// Every test, in the order that fails fastest: formatting and lints, the
-/// native tests, the wasm tests (Node and headless Chromium), the browser test.
+/// Every test, in the order that fails fastest: formatting and lints (Rust
+/// and JavaScript), the native tests, the wasm tests (Node and headless Chromium), the browser test.
 fn test(args: &[String]) -> Result {
     if let Some(a) = args.first() {
         return Err(format!("test: unknown option '{a}' (usage: cargo xtask test)"));
@@ -58,6 +58,10 @@ fn test(args: &[String]) -> Result {
     let step = |name: &str| eprintln!("\n== {name} ({:.0} s)", started.elapsed().as_secs_f64());
     step("formatting");
     install::run("cargo", &["fmt", "--all", "--", "--check"], None)?;
+    step("JavaScript: Biome's lints and formatting (www/biome.json)");
+    let www = install::root().join("www");
+    install::ensure_npm(&www)?;
+    install::run("node", &["node_modules/@biomejs/biome/bin/biome", "check", "--error-on-warnings"], Some(&www))?;
     step("clippy (native and wasm32)");
     install::run("cargo", &["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"], None)?;
     install::ensure_wasm_target()?;

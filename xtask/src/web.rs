@@ -283,7 +283,7 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let esbuild = path_str(&www.join("node_modules").join(".bin").join("esbuild"))?;
     let entries =
-        [("src/main.js", "app.js"), ("src/worker.js", "worker.js"), ("src/embed/element.js", "screwcut-preview.js")];
+        [("src/app/main.js", "app.js"), ("src/engine/worker.js", "worker.js"), ("src/embed/element.js", "screwcut-preview.js")];
     for (entry, file) in entries {
         let outfile = format!("--outfile={}", path_str(&out.join(file))?);
         let mut args = vec![entry, "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];
@@ -509,12 +509,12 @@ mod tests {
     }
 
     /// The app and the element check a dialect name against the planner's
-    /// list in JavaScript (www/src/fragment.js), so they must know every
+    /// list in JavaScript (www/src/shared/fragment.js), so they must know every
     /// spelling the planner accepts (src/dialect.rs `NAMES`).
     #[test]
     fn the_front_end_knows_every_dialect_spelling() {
         let names = read(&root().join("src").join("dialect.rs")).unwrap();
-        let js = read(&root().join("www").join("src").join("fragment.js")).unwrap();
+        let js = read(&root().join("www").join("src").join("shared").join("fragment.js")).unwrap();
         let table = names.split("const NAMES").nth(1).expect("src/dialect.rs has NAMES");
         let table = &table[..table.find("];").expect("NAMES ends")];
         let mut seen = 0;
@@ -524,7 +524,7 @@ mod tests {
             for alias in aliases {
                 assert!(
                     js.contains(&format!("{alias}: '{name}'")),
-                    "www/src/fragment.js lacks the spelling {alias} of {name}"
+                    "www/src/shared/fragment.js lacks the spelling {alias} of {name}"
                 );
                 seen += 1;
             }

@@ -58,7 +58,14 @@ const SAFE = new Set(['http:', 'https:']);
 export function safeUrl(value, base) {
   if (typeof value !== 'string' || !value.trim()) return null;
   // What the URL parser ignores: tabs and line breaks anywhere, controls and spaces at the ends.
-  const plain = value.replace(/[\t\n\r]/g, '').replace(/^[\u0000-\u0020]+|[\u0000-\u0020]+$/g, '');
+  // (C0 controls and space: U+0000 to U+0020, as the URL standard strips them.)
+  const c0 = (c) => c.charCodeAt(0) <= 0x20;
+  let plain = value.replace(/[\t\n\r]/g, '');
+  let a = 0;
+  let b = plain.length;
+  while (a < b && c0(plain[a])) a++;
+  while (b > a && c0(plain[b - 1])) b--;
+  plain = plain.slice(a, b);
   let url;
   try {
     url = new URL(value, base);

@@ -2,7 +2,7 @@
 // loaded the first time an element starts, and one IntersectionObserver
 // that starts each element when it comes near the viewport.
 
-import init, { Session, dialects as dialectsOf } from '../../pkg/screwcut.js';
+import init, { dialects as dialectsOf, Session } from '../../pkg/screwcut.js';
 
 /**
  * The directory of this script: the wasm and, by default, the app are next

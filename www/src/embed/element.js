@@ -24,16 +24,16 @@
 // `result` (the planner's last answer), `start()`. Event `screwcut-plan`
 // after every plan, with counts in `detail`.
 
+import { HeldParts } from '../engine/parts.js';
+import { DEFAULT_DIALECT, jsonFragment, knownDialect } from '../shared/fragment.js';
+import { textIn } from '../shared/i18n.js';
+import { passHead, passObjects, passRow, threadName, VirtualRows } from '../shared/lists.js';
+import { esc, num } from '../shared/table.js';
+import { bindCanvas } from '../view/input.js';
 import { SceneView } from '../view/sceneview.js';
-import { bindCanvas } from '../input.js';
-import { textIn } from '../i18n.js';
-import { esc, num } from '../table.js';
-import { VirtualRows, passHead, passRow, passObjects, threadName } from '../lists.js';
-import { jsonFragment, knownDialect, DEFAULT_DIALECT } from '../fragment.js';
-import { HERE, loadCore, startWhenVisible, forget, fetchProgram } from './core.js';
-import { HeldParts } from '../parts.js';
+import { dedent, parseHeight, parseThread, parseViews, readSettings, safeUrl, settingsLines } from './attrs.js';
+import { fetchProgram, forget, HERE, loadCore, startWhenVisible } from './core.js';
 import { STYLE } from './style.js';
-import { parseViews, parseHeight, parseThread, readSettings, settingsLines, dedent, safeUrl } from './attrs.js';
 
 /** Most diagnostics listed under an embedded drawing. */
 const MAX_LISTED = 6;
@@ -159,11 +159,7 @@ export class ScrewcutPreview extends HTMLElement {
       .join('');
     this.shadowRoot.innerHTML =
       `<style>${STYLE}</style><div class="box" part="box" style="--h:${h}px"><div class="views">${panes}</div>` +
-      (editable
-        ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>`
-        : this.hasAttribute('hide-code')
-          ? ''
-          : `<pre class="code" part="code"></pre>`) +
+      (editable ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>` : this.hasAttribute('hide-code') ? '' : `<pre class="code" part="code"></pre>`) +
       `<div class="bar"><span class="sum">${esc(this._t('loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
       `<a class="open" target="_blank" rel="noopener" part="open">${esc(this._t('open_in_editor'))} ↗</a></div>` +
       `<ul class="diags"${editable ? ' data-editable' : ''}></ul><div class="tip" hidden></div></div>`;
@@ -382,9 +378,7 @@ export class ScrewcutPreview extends HTMLElement {
     if (stale) sum += ` · ${this._t('stale')}`;
     this._sum.textContent = sum;
     this._sum.classList.toggle('stale', stale || r.alarms > 0);
-    const options = r.threads
-      .map((x, i) => `<option value="${i}">${i + 1}: ${esc(threadName(x, (k) => this._t(k)))} · ${esc(this._t('lead_of', { v: num(x.lead) }))} · L${x.line}–${x.end_line}</option>`)
-      .join('');
+    const options = r.threads.map((x, i) => `<option value="${i}">${i + 1}: ${esc(threadName(x, (k) => this._t(k)))} · ${esc(this._t('lead_of', { v: num(x.lead) }))} · L${x.line}–${x.end_line}</option>`).join('');
     if (this._select.dataset.html !== options) {
       this._select.innerHTML = options;
       this._select.dataset.html = options;
@@ -397,9 +391,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._diagList = list || [];
     const problems = this.problems.map((p) => `<li class="warning problem" data-attribute="${esc(p.attribute)}"><b>${esc(p.attribute)}</b> ${esc(p.message)}</li>`);
     const shown = this._diagList.filter((d) => d.severity !== 'info');
-    const items = shown
-      .slice(0, MAX_LISTED)
-      .map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}</li>`);
+    const items = shown.slice(0, MAX_LISTED).map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}</li>`);
     if (shown.length > MAX_LISTED) items.push(`<li>${esc(this._t('more', { n: shown.length - MAX_LISTED }))}</li>`);
     const html = problems.concat(items).join('');
     if (this._diags.dataset.html !== html) {

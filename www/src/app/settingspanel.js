@@ -3,8 +3,8 @@
 // range), the rows changed from the default marked, and the planner's
 // setting errors shown on their rows.
 
-import { esc, num } from './table.js';
-import { unitText, choiceText } from './i18n.js';
+import { choiceText, unitText } from '../shared/i18n.js';
+import { esc, num } from '../shared/table.js';
 
 export class SettingsPanel {
   /**
@@ -59,10 +59,7 @@ export class SettingsPanel {
     if (!name) return false;
     const def = this.table.find((s) => s.name === name);
     const value = el.type === 'checkbox' ? (el.checked ? '1' : '0') : el.value.trim();
-    const isDefault =
-      def &&
-      def.kind !== 'text' &&
-      ((def.kind === 'choice' && def.choices[def.default] === value) || (def.kind !== 'choice' && value !== '' && Number(value) === def.default));
+    const isDefault = def && def.kind !== 'text' && ((def.kind === 'choice' && def.choices[def.default] === value) || (def.kind !== 'choice' && value !== '' && Number(value) === def.default));
     if (isDefault || value === '') delete mine[name];
     else mine[name] = value;
     el.closest('.setting').classList.toggle('changed', !isDefault && value !== '');

@@ -58,7 +58,7 @@ const EN = {
   wizard: 'Thread wizard…',
   expand: 'Expand to blocks…',
   wz_title: 'Thread wizard',
-  wz_help: 'A designation (or, with the designation cleared, a major diameter and a lead), the thread\'s length or end Z, a controller and a form: the program is written as you type.',
+  wz_help: "A designation (or, with the designation cleared, a major diameter and a lead), the thread's length or end Z, a controller and a form: the program is written as you type.",
   wz_designation: 'Designation',
   wz_major: 'Major Ø (mm)',
   wz_lead: 'Lead (mm)',
@@ -78,7 +78,8 @@ const EN = {
   wz_open: 'Open as a new program',
   wz_cancel: 'Cancel',
   ex_title: 'Expand to blocks',
-  ex_help: 'The program as planned, written block by block for a controller: every pass with its approach, cut, run-out, retract and return; multi-start by start angle where the controller has one, else by axial offset. It opens as a new program; this one stays.',
+  ex_help:
+    'The program as planned, written block by block for a controller: every pass with its approach, cut, run-out, retract and return; multi-start by start angle where the controller has one, else by axial offset. It opens as a new program; this one stays.',
   ex_to: 'Write for',
   ex_alarms: 'The program has {n} alarm(s): the expansion writes what was planned up to them.',
   col_even: 'Even area',
@@ -105,7 +106,7 @@ const EN = {
   check_nose: 'tool r {r} assumed (full profile)',
   check_wires: 'M {m} over Ø{w} wires ({min}…{max})',
   check_wires_help: 'What the operator measures over three wires of the best size: M = d2 + 3w − 0.866025·P',
-  check_nose_range: 'd2 within limits for r {lo}…{hi}; set tool.nose_radius to your insert\'s',
+  check_nose_range: "d2 within limits for r {lo}…{hi}; set tool.nose_radius to your insert's",
   check_nose_none: 'no nose radius puts d2 within limits',
   check_limits: 'limits {min}…{max} {u}',
   check_dx_help: 'Change of the final pass X (diameter) that puts the pitch diameter in the middle of its tolerance',
@@ -375,9 +376,7 @@ export function t(key, vars) {
 export function textIn(l, key, vars) {
   let s = (TABLES[l] || EN)[key] ?? EN[key] ?? key;
   if (vars) {
-    s = s.replace(/\{(\w+)#([^|}]*)\|([^}]*)\}/g, (m, k, one, other) =>
-      k in vars ? `${vars[k]} ${Number(vars[k]) === 1 ? one : other}` : m,
-    );
+    s = s.replace(/\{(\w+)#([^|}]*)\|([^}]*)\}/g, (m, k, one, other) => (k in vars ? `${vars[k]} ${Number(vars[k]) === 1 ? one : other}` : m));
     s = s.replace(/\{(\w+)\}/g, (_, k) => (k in vars ? vars[k] : `{${k}}`));
   }
   return s;

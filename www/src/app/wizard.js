@@ -5,7 +5,7 @@
 // is shown as it is written, with the wizard's notes; "Open as a new
 // program" hands it to the caller, which keeps the user's own program.
 
-import { esc } from './table.js';
+import { esc } from '../shared/table.js';
 
 /** The fields of the form: [name, i18n key, input attributes, default]. */
 const FIELDS = [
@@ -46,8 +46,7 @@ export async function openWizard({ request, t, dialect, onOpen }) {
   const dlg = document.createElement('dialog');
   dlg.className = 'wizard';
   dlg.setAttribute('aria-labelledby', 'wz-title');
-  const field = ([name, key, attrs, value]) =>
-    `<label class="wz-field"><span>${esc(t(key))}</span><input name="${name}" ${attrs} value="${esc(value)}"></label>`;
+  const field = ([name, key, attrs, value]) => `<label class="wz-field"><span>${esc(t(key))}</span><input name="${name}" ${attrs} value="${esc(value)}"></label>`;
   dlg.innerHTML = `<form method="dialog" class="wz-form">
     <h2 id="wz-title">${esc(t('wz_title'))}</h2>
     <p class="wz-help">${esc(t('wz_help'))}</p>

@@ -18,7 +18,6 @@ export const MAX_PROGRAMS = 50;
 /** Most characters of stored entries in all (localStorage holds about 5 million per site). */
 export const MAX_STORED_CHARS = 3 * 1024 * 1024;
 
-
 const NAME_MAX = 60;
 
 /**

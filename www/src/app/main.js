@@ -4,20 +4,22 @@
 // browser has them (client.js) — so typing never waits for them. A program
 // with an alarm keeps the last good drawing and table, greyed.
 
-import { createEditor } from './editor.js';
-import { t, setLang, getLang, EDITOR_PHRASES_ZH } from './i18n.js';
-import { openFile, fileName, fillPrintSheet } from './files.js';
-import { encodeFragment, knownDialect, DEFAULT_DIALECT } from './share.js';
-import { Library, inherited } from './programs.js';
-import { num, esc } from './table.js';
-import { download, toast, shareLink } from './pageutil.js';
-import { startEngine } from './client.js';
-import { VirtualRows, passHead, passRow, passLines, passVia, diagnosticRow, tipText, threadName, patchRows } from './lists.js';
-import { patchList } from './parts.js';
+import { createEditor } from '../editor/editor.js';
+import { startEngine } from '../engine/client.js';
+import { patchList } from '../engine/parts.js';
+import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
+import { diagnosticRow, passHead, passLines, passRow, passVia, patchRows, threadName, tipText, VirtualRows } from '../shared/lists.js';
+import { esc, num } from '../shared/table.js';
 import { bindListKeys, labelViews } from './a11y.js';
-import { DESIGNATION, renderCheck, bindDesignation } from './check.js';
+import { bindDesignation, DESIGNATION, renderCheck } from './check.js';
+import { fileName, fillPrintSheet, openFile } from './files.js';
+import { download, shareLink, toast } from './pageutil.js';
+import { Planning } from './planning.js';
+import { inherited, Library } from './programs.js';
 import { SettingsPanel } from './settingspanel.js';
-import { openWizard, openExpand } from './wizard.js';
+import { DEFAULT_DIALECT, encodeFragment, knownDialect } from './share.js';
+import { bindViewBar } from './viewbar.js';
+import { openExpand, openWizard } from './wizard.js';
 
 const $ = (id) => document.getElementById(id);
 /** Sets an element's text unless it already reads so (a new text node means a new layout). */
@@ -41,21 +43,10 @@ let settingsPanel;
 let dialects = [];
 let editor;
 let result = null; // the lists of the last answer (threads, passes as columns, diagnostics)
-let lastGood = null; // the lists of the last answer without alarm that the user left (see replan)
-let candidate = null; // the last answer without alarm, until the next edit says whether it was left
-let candidateAt = 0; // when it was shown
-let candidateTyped = false; // whether a keystroke in the editor made it (else a setting, a file, a program opened)
-/** A drawing shown this long before the next edit was one the user left (not a keystroke on the way). */
-const LEFT_MS = 1000;
-let fresh = false; // the next plan is another program's: no last good drawing of this one yet
 let thread = 0;
 let start = 1;
 let hover = null;
-let seq = 0;
-let inFlight = null; // {seq, text} of the plan the engine is working on
-let wanted = false; // the text changed while a plan was in flight
-let pendingInput = null; // timeStamp of the keystroke the next plan answers
-const inputs = new Map(); // seq → timeStamp of its keystroke
+let planning; // plans in flight, keystrokes, the good plan's lists (planning.js)
 let passRows;
 const lists = []; // the keyboard-operated lists (a11y.js)
 let diagnosticsShown = [];
@@ -85,9 +76,7 @@ async function showProgram(s) {
   state.settings = s.settings && typeof s.settings === 'object' ? s.settings : {};
   state.program = s.program;
   $('dialect').value = state.dialect;
-  lastGood = null;
-  candidate = null;
-  fresh = true;
+  planning.another();
   // What was chosen in the last program (a thread, a start, a hovered pass) is not this one's.
   thread = 0;
   start = 1;
@@ -109,40 +98,18 @@ function editorWords() {
 function makeEditor(doc) {
   if (editor) editor.view.destroy();
   editor = createEditor($('editor'), { doc, onChange: replan, onCursor, words: editorWords() });
-  editor.view.dom.addEventListener('keydown', (e) => (pendingInput = e.timeStamp), true);
-  editor.view.dom.addEventListener(
-    'beforeinput',
-    (e) => {
-      if (pendingInput === null) pendingInput = e.timeStamp;
-    },
-    true,
-  );
+  editor.view.dom.addEventListener('keydown', (e) => planning.input(e.timeStamp), true);
+  editor.view.dom.addEventListener('beforeinput', (e) => planning.input(e.timeStamp, true), true);
 }
 
 // ---- planning ----
 
 /** Sends the text to the engine; while a plan is in flight, only the latest text follows it. */
 function replan() {
-  if (inFlight) {
-    wanted = true;
-    return;
-  }
-  wanted = false;
   const text = editor.text();
+  if (!planning.plan({ text, dialect: state.dialect, settings: settingsText(), thread, start }, editor.view.state.doc)) return;
   state.program = text;
   persist();
-  seq += 1;
-  inFlight = { seq, text, doc: editor.view.state.doc, t0: performance.now(), typed: pendingInput !== null };
-  // The good plan on screen becomes the one kept for alarms when it was left a while (or is the first).
-  const keep = !!candidate && (lastGood === null || !candidateTyped || performance.now() - candidateAt >= LEFT_MS);
-  if (keep) lastGood = candidate;
-  candidate = null;
-  if (pendingInput !== null) {
-    inputs.set(seq, pendingInput);
-    pendingInput = null;
-  }
-  client.send({ type: 'plan', seq, text, dialect: state.dialect, settings: settingsText(), thread, start, input: inputs.get(seq) ?? null, fresh, keep });
-  fresh = false;
 }
 
 function onMessage(m) {
@@ -158,7 +125,7 @@ function onMessage(m) {
     case 'error':
       probe.errors.push(m.message);
       if (m.crashed) {
-        inFlight = null;
+        planning.failed();
         banner(t('crashed'));
       }
       return undefined;
@@ -181,25 +148,16 @@ function onResult(m) {
   result = r;
   probe.result = r;
   thread = r.thread ?? 0;
-  if (r.good) {
-    candidate = r;
-    candidateAt = performance.now();
-    candidateTyped = !!(inFlight && inFlight.seq === m.seq && inFlight.typed);
-  }
+  const a = planning.answered(r, m.seq, editor.view.state.doc);
   renderLists(r);
   const t1 = performance.now();
   if (m.timing) {
-    const total = inFlight && inFlight.seq === m.seq ? performance.now() - inFlight.t0 : null;
-    probe.updates.push({ seq: m.seq, ...m.timing, lists: t1 - t0, total, lines: editor.view.state.doc.lines, resumedAt: r.resumedAt, sent: inFlight?.t0, received: t0 });
+    const total = a.t0 === null ? null : performance.now() - a.t0;
+    probe.updates.push({ seq: m.seq, ...m.timing, lists: t1 - t0, total, lines: editor.view.state.doc.lines, resumedAt: r.resumedAt, sent: a.t0 ?? undefined, received: t0 });
     if (probe.updates.length > 200) probe.updates.shift();
     setText($('timing'), t('timing', { plan: m.timing.plan.toFixed(1), draw: m.timing.views.toFixed(1) }));
   }
-  if (inFlight && inFlight.seq === m.seq) {
-    const sent = inFlight.doc;
-    inFlight = null;
-    // The document is immutable: another one is another text (no walk of a long program to compare).
-    if (wanted || editor.view.state.doc !== sent) replan();
-  }
+  if (a.again) replan();
   if (!probe.ready) {
     probe.ready = true;
     document.body.dataset.ready = 'true';
@@ -208,9 +166,8 @@ function onResult(m) {
 
 /** The drawing that includes an edit is on screen: mark it for whoever measures. */
 function onFrame(m) {
-  const input = m.input ?? inputs.get(m.seq);
-  inputs.delete(m.seq);
-  if (input === undefined || input === null) return;
+  const input = planning.frameInput(m.seq, m.input);
+  if (input === null) return;
   performance.mark('screwcut:frame', { detail: { input } });
   probe.frames.push({ seq: m.seq, frame: performance.now() - input });
   if (probe.frames.length > 200) probe.frames.shift();
@@ -219,15 +176,13 @@ function onFrame(m) {
 // ---- lists ----
 
 function renderLists(r) {
-  const stale = r.stale && lastGood && lastGood !== r;
+  const { shown, stale } = planning.shown();
   setText(
     $('summary'),
-    t('summary', { threads: r.threads.length, moves: r.moves, alarms: r.alarms, warnings: r.warnings, notes: r.notes }) +
-      (r.timeS != null ? ` · ${t('summary_time', { s: r.timeS.toFixed(1) })}` : ''),
+    t('summary', { threads: r.threads.length, moves: r.moves, alarms: r.alarms, warnings: r.warnings, notes: r.notes }) + (r.timeS != null ? ` · ${t('summary_time', { s: r.timeS.toFixed(1) })}` : ''),
   );
   banner(stale ? t('stale') : null);
-  renderThreads(stale ? lastGood : r, stale);
-  const shown = stale ? lastGood : r;
+  renderThreads(shown, stale);
   const problem = (r.settingErrors || []).find((e) => e.setting.toLowerCase() === DESIGNATION);
   const strip = { input: $('designation'), verdict: $('check-verdict'), figures: $('check-figures') };
   const shownThread = shown.threads[shown.thread];
@@ -380,7 +335,8 @@ async function buildSettings() {
 }
 
 function onSettingInput(e) {
-  if (settingsPanel.change(e.target, (state.settings[state.dialect] ||= {}))) {
+  state.settings[state.dialect] ||= {};
+  if (settingsPanel.change(e.target, state.settings[state.dialect])) {
     persist();
     replan();
   }
@@ -407,9 +363,7 @@ function renderExamples() {
   const sel = $('examples');
   const list = JSON.parse(sel.dataset.list || '[]');
   const zh = getLang() === 'zh';
-  sel.innerHTML =
-    `<option value="">${esc(t('example_pick'))}</option>` +
-    list.map((e, i) => `<option value="${i}">${esc(zh && e.title_zh ? e.title_zh : e.title)}</option>`).join('');
+  sel.innerHTML = `<option value="">${esc(t('example_pick'))}</option>` + list.map((e, i) => `<option value="${i}">${esc(zh && e.title_zh ? e.title_zh : e.title)}</option>`).join('');
 }
 
 /** Opens an example as a program of its own (the open one stays in the Programs menu). */
@@ -427,26 +381,6 @@ async function setDialect(name, plan = true) {
   if (plan) replan();
 }
 
-function bindViewBar(panelId, name) {
-  $(panelId)
-    .querySelector('.bar')
-    .addEventListener('click', async (e) => {
-      const act = e.target.dataset && e.target.dataset.act;
-      if (act === 'fit') client.send({ type: 'input', name, op: 'fit' });
-      if (act === 'stretch') e.target.setAttribute('aria-pressed', String(await client.request('input', { name, op: 'stretch' })));
-      if (act === 'svg' || act === 'png') {
-        try {
-          const data = await client.request('export', { name, format: act, scale: 2 });
-          if (data) download(`screwcut-${name}.${act}`, act === 'svg' ? new Blob([data], { type: 'image/svg+xml' }) : data);
-          else toast(t('export_empty', { view: t(name) }));
-        } catch (err) {
-          const why = /no thread/.test(String(err && err.message)) ? t('export_no_thread') : String((err && err.message) || err);
-          toast(t('export_failed', { view: t(name), why }));
-        }
-      }
-    });
-}
-
 // ---- start ----
 
 async function main() {
@@ -459,6 +393,7 @@ async function main() {
     onMessage,
   });
   client = started.client;
+  planning = new Planning((m) => client.send(m));
   settingsPanel = new SettingsPanel($('settings-form'), { table: (dialect) => client.request('table', { what: 'settings', dialect }), t, lang: getLang });
   dialects = started.dialects;
   probe.mode = client.mode;
@@ -497,9 +432,7 @@ async function main() {
   client.bindView('tooth', $('tooth'));
   client.bindView('starts', $('starts'));
   document.querySelector('#side-panel [data-act="stretch"]').setAttribute('aria-pressed', 'true');
-  bindViewBar('side-panel', 'side');
-  bindViewBar('tooth-panel', 'tooth');
-  bindViewBar('starts-panel', 'starts');
+  for (const name of ['side', 'tooth', 'starts']) bindViewBar($(`${name}-panel`), name, client);
 
   const scroller = $('passes').closest('.scroll');
   passRows = new VirtualRows(scroller, $('passes').tBodies[0], {
@@ -550,11 +483,10 @@ function finishSetup() {
   const tool = (m) => client.request('tool', m);
   const open = ({ text, dialect }) => library.openNew({ dialect, settings: inherited(state.settings), program: text });
   $('wizard').addEventListener('click', () => openWizard({ request: tool, t, dialect: state.dialect, onOpen: open }).catch((e) => toast(e.message)));
-  $('expand').addEventListener('click', () =>
-    openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: result ? result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)),
-  );
+  $('expand').addEventListener('click', () => openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: result ? result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)));
   bindDesignation($('designation'), (v) => {
-    const mine = (state.settings[state.dialect] ||= {});
+    state.settings[state.dialect] ||= {};
+    const mine = state.settings[state.dialect];
     if (v) mine[DESIGNATION] = v;
     else delete mine[DESIGNATION];
     persist();
@@ -603,7 +535,7 @@ function finishSetup() {
     $('lang').textContent = state.lang === 'zh' ? 'English' : '中文';
     renderExamples();
     editor.setWords(editorWords());
-    lists.forEach((l) => l.relabel());
+    for (const l of lists) l.relabel();
     await buildSettings();
     persist();
     if (result) renderLists(result);

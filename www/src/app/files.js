@@ -5,16 +5,20 @@
 // in view, so printing lays the program and the lists out in full in
 // #print-sheet first.
 
-import { esc } from './table.js';
+import { diagnosticRow, passHead, passRow } from '../shared/lists.js';
+import { esc } from '../shared/table.js';
 import { programName } from './store.js';
-import { passHead, passRow, diagnosticRow } from './lists.js';
 
 /** Largest file Open… reads (the planner's own limit is a setting; this keeps a tab alive). */
 const MAX_MB = 20;
 
 /** A file name for the program `text` of `dialect`: its name (O number, comment), safe characters only. */
 export function fileName(text, dialect) {
-  const base = programName(text).replace(/[^\w.-]+/g, '_').replace(/^_+|_+$/g, '').slice(0, 60) || 'program';
+  const base =
+    programName(text)
+      .replace(/[^\w.-]+/g, '_')
+      .replace(/^_+|_+$/g, '')
+      .slice(0, 60) || 'program';
   return `${base}.${dialect === 'linuxcnc' ? 'ngc' : 'nc'}`;
 }
 

@@ -7,8 +7,8 @@
 // shown is computed by the planner (src/shop, `thread.shop`); this module
 // only lays it out.
 
-import { esc, num } from './table.js';
-import { getLang } from './i18n.js';
+import { getLang } from '../shared/i18n.js';
+import { esc, num } from '../shared/table.js';
 
 /** The setting the designation field edits. */
 export const DESIGNATION = 'thread.designation';

@@ -3,7 +3,7 @@
 // The first message is `{type: 'init', wasm}` (the wasm file's URL); the
 // engine (engine.js) answers every other.
 
-import init, * as core from '../pkg/screwcut.js';
+import init, * as core from '../../pkg/screwcut.js';
 import { Engine } from './engine.js';
 
 let engine = null;

@@ -7,8 +7,8 @@
 // - each drawing (a focusable canvas, operated by input.js) has role img
 //   and a label saying what it shows, in numbers, and how to move it.
 
-import { num } from './table.js';
-import { passLines, passVia, passText, threadName } from './lists.js';
+import { passLines, passText, passVia, threadName } from '../shared/lists.js';
+import { num } from '../shared/table.js';
 
 /** A live region for short announcements (created once, visually hidden). */
 function liveRegion() {

@@ -22,8 +22,8 @@
 // kept. A full list refuses to grow and says so; nothing is evicted.
 // The storage itself is store.js.
 
-import { readFragment, sanitizeLinked, cleanSettings, knownDialect, titleOf, DEFAULT_DIALECT, LINK_MAX_BYTES } from './share.js';
-import { Programs, programName, newIdFor, INDEX, MAX_PROGRAMS, MAX_STORED_CHARS } from './store.js';
+import { cleanSettings, DEFAULT_DIALECT, knownDialect, LINK_MAX_BYTES, readFragment, sanitizeLinked, titleOf } from './share.js';
+import { INDEX, MAX_PROGRAMS, MAX_STORED_CHARS, newIdFor, Programs, programName } from './store.js';
 
 const EN = {
   programs: 'Programs',
@@ -77,7 +77,7 @@ const ZH = {
   stored_dialect: '“{name}”保存时的控制器“{dialect}”未知：按 {title} 打开。',
 };
 
-const lang = () => (document.documentElement.lang || '').startsWith('zh') ? 'zh' : 'en';
+const lang = () => ((document.documentElement.lang || '').startsWith('zh') ? 'zh' : 'en');
 
 /** Text of `key` in the page's language, `{name}` fields filled from `vars`. */
 

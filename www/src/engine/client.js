@@ -4,16 +4,11 @@
 // answers; canvases' sizes and what a person does to them (input.js) are
 // forwarded as operations.
 
-import { bindCanvas } from './input.js';
+import { bindCanvas } from '../view/input.js';
 
 /** Whether this browser can draw the app in a worker. */
 export function canDrawInWorker() {
-  return (
-    typeof Worker === 'function' &&
-    typeof OffscreenCanvas === 'function' &&
-    typeof HTMLCanvasElement !== 'undefined' &&
-    'transferControlToOffscreen' in HTMLCanvasElement.prototype
-  );
+  return typeof Worker === 'function' && typeof OffscreenCanvas === 'function' && typeof HTMLCanvasElement !== 'undefined' && 'transferControlToOffscreen' in HTMLCanvasElement.prototype;
 }
 
 /** Runs `f` in a new task: after a frame callback, once the frame is committed. */
@@ -98,10 +93,14 @@ export async function startEngine({ wasmUrl, workerUrl, mode, onMessage }) {
       onMessage({ type: 'note', message: `drawing on the page: ${e.message}` });
     }
   }
-  const [glue, { Engine }] = await Promise.all([import('../pkg/screwcut.js'), import('./engine.js')]);
+  const [glue, { Engine }] = await Promise.all([import('../../pkg/screwcut.js'), import('./engine.js')]);
   await glue.default({ module_or_path: wasmUrl });
   let client = null;
-  const engine = new Engine(glue, (m) => client.receive(m), (f) => requestAnimationFrame(() => afterTask(f)));
+  const engine = new Engine(
+    glue,
+    (m) => client.receive(m),
+    (f) => requestAnimationFrame(() => afterTask(f)),
+  );
   client = new Client('page', (m) => queueMicrotask(() => engine.handle(m)), onMessage);
   return { client, dialects: glue.dialects() };
 }

@@ -17,9 +17,9 @@
 // Every refusal and change is said in words for the page to show.
 
 import { deflateSync, Inflate, strToU8 } from 'fflate';
-import { toBase64Url, fromBase64Url, knownDialect, DEFAULT_DIALECT } from './fragment.js';
+import { DEFAULT_DIALECT, fromBase64Url, knownDialect, toBase64Url } from '../shared/fragment.js';
 
-export { knownDialect, DEFAULT_DIALECT };
+export { DEFAULT_DIALECT, knownDialect };
 
 /** Most bytes of JSON a link may carry once decoded (and inflated): 8 MiB. */
 export const LINK_MAX_BYTES = 8 * 1024 * 1024;
@@ -134,7 +134,8 @@ export function cleanSettings(settings, dialects, limits = null) {
       notes.push(`settings for '${String(d).slice(0, 40)}' ignored (not a known controller)`);
       continue;
     }
-    const mine = (out[dialect] ||= {});
+    out[dialect] ||= {};
+    const mine = out[dialect];
     for (const [name, raw] of Object.entries(values)) {
       if (++count > MAX_SETTINGS) {
         notes.push(`more than ${MAX_SETTINGS} settings: the rest ignored`);

@@ -9,7 +9,7 @@
 // the chosen thread's passes as columns), frame (once the drawing that
 // includes an edit is on screen), hover, pick, reply, error.
 
-import { SceneView } from './view/sceneview.js';
+import { SceneView } from '../view/sceneview.js';
 import { HeldParts } from './parts.js';
 
 /** The views, in the order of the session's `shown` keys. */
@@ -143,7 +143,9 @@ export class Engine {
 
   /** Each view shows the scene of its key (`shown`: side, tooth, starts). */
   show(shown, stale) {
-    VIEWS.forEach((name, i) => this.views[name]?.setShown(shown[i] || null, stale));
+    VIEWS.forEach((name, i) => {
+      this.views[name]?.setShown(shown[i] || null, stale);
+    });
   }
 
   /** Posts what the page's lists need; lists it already has are not sent again. */
@@ -168,6 +170,8 @@ export class Engine {
         timeS: r.timeS,
         good: r.good,
         stale: r.stale,
+        plan: r.plan,
+        goodPlan: r.goodPlan,
         settingErrors: r.settingErrors,
         diagnostics: r.diagnostics,
         diagnosticsKey: r.diagnosticsKey,

@@ -8,9 +8,9 @@
 // editor shows: an edit costs the same in a program of any length, with no
 // parse of the whole document behind it.
 
-import { EditorState, RangeSetBuilder } from '@codemirror/state';
-import { EditorView, ViewPlugin, Decoration } from '@codemirror/view';
 import { StringStream } from '@codemirror/language';
+import { EditorState, RangeSetBuilder } from '@codemirror/state';
+import { Decoration, EditorView, ViewPlugin } from '@codemirror/view';
 
 const FULL = /[\uFF01-\uFF5E]/;
 const ascii = (c) => (c && FULL.test(c) ? String.fromCharCode(c.charCodeAt(0) - 0xfee0) : c);
@@ -54,7 +54,7 @@ const gcodeParser = {
     if (letter && /[A-Z]/.test(letter)) {
       stream.next();
       const start = stream.pos;
-      while (!stream.eol() && /[0-9.+\-]/.test(ascii(stream.peek()))) stream.next();
+      while (!stream.eol() && /[0-9.+-]/.test(ascii(stream.peek()))) stream.next();
       const hasNumber = stream.pos > start;
       if (letter === 'O') return 'meta';
       if (letter === 'N') return 'labelName';
@@ -66,7 +66,7 @@ const gcodeParser = {
       return 'number';
     }
     stream.next();
-    return /[0-9.+\-]/.test(c) ? 'number' : 'invalid';
+    return /[0-9.+-]/.test(c) ? 'number' : 'invalid';
   },
   blankLine(state) {
     state.comment = false;

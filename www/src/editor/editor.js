@@ -4,20 +4,11 @@
 // hover), highlighted lines for what the pointer is over in a drawing, and
 // a hint in an empty program.
 
-import { EditorState, StateEffect, StateField, RangeSetBuilder, Compartment } from '@codemirror/state';
-import {
-  EditorView,
-  Decoration,
-  keymap,
-  lineNumbers,
-  highlightActiveLine,
-  highlightActiveLineGutter,
-  drawSelection,
-  placeholder,
-} from '@codemirror/view';
-import { search, searchKeymap, highlightSelectionMatches } from '@codemirror/search';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
-import { setDiagnostics, lintGutter, lintKeymap } from '@codemirror/lint';
+import { lintGutter, lintKeymap, setDiagnostics } from '@codemirror/lint';
+import { highlightSelectionMatches, search, searchKeymap } from '@codemirror/search';
+import { Compartment, EditorState, RangeSetBuilder, StateEffect, StateField } from '@codemirror/state';
+import { Decoration, drawSelection, EditorView, highlightActiveLine, highlightActiveLineGutter, keymap, lineNumbers, placeholder } from '@codemirror/view';
 import { gcode } from './gcode.js';
 
 const setMarked = StateEffect.define();
