@@ -305,6 +305,9 @@ try {
     const px = await inked(id);
     check(`… and the ${id} canvas is drawn`, px.n > 300, `${px.n} pixels`);
   }
+  // Where a drawing's time goes: the core's display list (wasm) and the canvas calls (the JS painter). Printed, not asserted.
+  const paints = await page.evaluate(() => window.__screwcut.inspect('paints'));
+  console.log(`drawing at 5,000 lines: ${Object.entries(paints).map(([k, v]) => `${k} ${fmt(v.draw)} ms (${fmt(v.draw - v.paint)} display list, ${fmt(v.paint)} painting ${v.ops} operations, ${v.numbers} numbers)`).join('; ')}`);
   // ---- no errors ----
   const probeErrors = await page.evaluate(() => window.__screwcut.errors);
   check('no console or page errors', problems.length === 0 && probeErrors.length === 0, JSON.stringify([...problems, ...probeErrors]));

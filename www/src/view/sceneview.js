@@ -31,6 +31,7 @@ export class SceneView {
     this.cssW = 1;
     this.cssH = 1;
     this.lastDraw = 0;
+    this.lastPaint = 0; // of lastDraw, the milliseconds the canvas calls took (the rest: the core's display list)
     this.drawTime = 0; // milliseconds spent drawing since the owner last zeroed it
     this.list = null; // the display list of the last draw
   }
@@ -161,7 +162,9 @@ export class SceneView {
       this.xf = Array.from(list.transform);
       const dpr = this.canvas.width / this.cssW;
       ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+      const t1 = performance.now();
       paint(ctx, list);
+      this.lastPaint = performance.now() - t1;
     }
     this.lastDraw = performance.now() - t0;
     this.drawTime += this.lastDraw;
