@@ -1,7 +1,7 @@
 //! Drawing, decided once: a [`Scene`] and a [`View`] (page size, transform
 //! or fit, language, chosen thread, stale, highlight) become a
 //! [`DisplayList`] — the pens, the paths in page pixels, the labels placed —
-//! that the canvas painter and the SVG writer ([`crate::svg`]) execute
+//! that the canvas painter and the SVG writer (`svg`) execute
 //! without deciding anything. The app's canvas, its SVG export and
 //! `screwcut svg` of one view at one size show the same labels at the same places.
 //!

@@ -37,7 +37,10 @@ pub fn write(list: &DisplayList) -> String {
             }
             Op::Circle { pen, center, r } => {
                 let a = attrs(&list.pens[*pen], true);
-                push(&mut body, format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {a}/>\n", f(center[0]), f(center[1]), f(*r)));
+                push(
+                    &mut body,
+                    format_args!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {a}/>\n", f(center[0]), f(center[1]), f(*r)),
+                );
             }
             Op::Text { pen, halo, at, text, anchor, angle } => {
                 let (fill, halo) = (&list.pens[*pen], &list.pens[*halo]);
@@ -85,7 +88,9 @@ fn document(list: &DisplayList, body: &str) -> String {
     let id = format!("screwcut-{}-{:016x}", title(list.view).replace(' ', "-"), fnv(body));
     push(
         &mut doc,
-        format_args!("<defs><clipPath id=\"{id}\"><rect x=\"0\" y=\"0\" width=\"{ws}\" height=\"{hs}\"/></clipPath></defs>\n"),
+        format_args!(
+            "<defs><clipPath id=\"{id}\"><rect x=\"0\" y=\"0\" width=\"{ws}\" height=\"{hs}\"/></clipPath></defs>\n"
+        ),
     );
     push(&mut doc, format_args!("<g stroke-linejoin=\"round\" clip-path=\"url(#{id})\">\n"));
     doc.push_str(body);

@@ -211,7 +211,8 @@ fn parse_dialect(s: &str) -> Result<Dialect, String> {
 
 /// The transform of `screwcut svg --transform`: four numbers, positive scales.
 fn parse_transform(s: &str) -> Result<screwcut::draw::Transform, String> {
-    let v: Vec<f64> = s.split(',').map(|x| x.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|e| format!("'{s}': {e}"))?;
+    let v: Vec<f64> =
+        s.split(',').map(|x| x.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|e| format!("'{s}': {e}"))?;
     let [sx, sy, tx, ty] = v[..] else { return Err(format!("'{s}' is not four numbers SX,SY,TX,TY")) };
     let t = screwcut::draw::Transform { sx, sy, tx, ty };
     if t.is_valid() { Ok(t) } else { Err(format!("'{s}': the scales must be positive and every number finite")) }

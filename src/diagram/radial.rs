@@ -8,8 +8,8 @@
 
 use super::band::Band;
 use super::scene::{Anchor, Item, Label, Pt, Rect, Scene, Shape, Style};
-use crate::thread::Axis;
 use crate::plan::Plan;
+use crate::thread::Axis;
 
 /// How far beyond the crest the true scale goes, in thread heights.
 const KEEP: f64 = 0.5;
@@ -61,7 +61,13 @@ impl Break {
         let n = points.len();
         for (k, &p) in points.iter().enumerate() {
             out.push(self.point(p));
-            let next = if k + 1 < n { Some(points[k + 1]) } else if closed && n > 2 { Some(points[0]) } else { None };
+            let next = if k + 1 < n {
+                Some(points[k + 1])
+            } else if closed && n > 2 {
+                Some(points[0])
+            } else {
+                None
+            };
             if let Some(c) = next.and_then(|q| self.crossing(p, q)) {
                 out.push(c);
             }
@@ -87,7 +93,8 @@ pub fn breaks(plan: &Plan, scene: &Scene) -> Vec<Break> {
             continue;
         }
         let h = bands.iter().map(|(b, _)| b.height).fold(0.0, f64::max);
-        let crest = |b: &Band| if internal { b.crest(b.l0).min(b.crest(b.l1)) } else { b.crest(b.l0).max(b.crest(b.l1)) };
+        let crest =
+            |b: &Band| if internal { b.crest(b.l0).min(b.crest(b.l1)) } else { b.crest(b.l0).max(b.crest(b.l1)) };
         let at = if internal {
             bands.iter().map(|(b, _)| crest(b)).fold(f64::INFINITY, f64::min) - KEEP * h
         } else {

@@ -8,7 +8,7 @@
 use super::labels::{EDGE, Kind, Label, Room, dim_frame, scene_labels};
 use super::lines::{LineIndex, scene_lines};
 use super::place::{dim_segment, place};
-use super::{View, Transform};
+use super::{Transform, View};
 use crate::diagram::scene::{Pt, Scene};
 
 /// The geometry keeps this far from the page's edges.

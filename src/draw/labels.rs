@@ -4,7 +4,7 @@
 //! candidate places, best first; placement chooses among them.
 
 use super::text::{measure, wrap};
-use super::{FONT_SIZE, MAX_ANNOTATED, View, Transform};
+use super::{FONT_SIZE, MAX_ANNOTATED, Transform, View};
 use crate::diagram::scene::{Anchor, Pt, Scene, Shape, Style};
 
 /// Height of a label's box: 12 px text and its halo.

@@ -1,7 +1,7 @@
 //! The display list: what a view shows, resolved — pens, paths in page
 //! coordinates, circles and texts with their halos, in painting order. The
 //! canvas painter (`www/src/view/paint.js`) and the SVG writer
-//! ([`crate::svg`]) execute it and decide nothing.
+//! (`svg`) execute it and decide nothing.
 
 use std::collections::HashMap;
 
@@ -174,7 +174,11 @@ fn rgba(c: &str) -> Option<[f64; 4]> {
         return Some([ch(0)?, ch(2)?, ch(4)?, 1.0]);
     }
     let (kind, rest) = c.split_once('(')?;
-    let v: Vec<f64> = rest.strip_suffix(')')?.split(',').map(|x| x.trim().trim_end_matches('%').parse().ok()).collect::<Option<_>>()?;
+    let v: Vec<f64> = rest
+        .strip_suffix(')')?
+        .split(',')
+        .map(|x| x.trim().trim_end_matches('%').parse().ok())
+        .collect::<Option<_>>()?;
     if v.len() < 3 {
         return None;
     }

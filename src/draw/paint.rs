@@ -79,6 +79,9 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Pl
     }
 }
 
+/// Halos of one shape kind and width (closed, the width's bits): their points and where each path starts.
+type HaloGroup = ((bool, u64), Vec<Pt>, Vec<usize>);
+
 struct Painter<'a> {
     b: &'a mut Builder,
     xf: &'a Transform,
@@ -91,7 +94,7 @@ impl Painter<'_> {
     fn halos(&mut self, scene: &Scene, set: &HashSet<usize>, light: bool, by_item: &HashMap<usize, &Placed>) {
         let alpha = if light { 0.3 } else { 0.5 };
         let grow = if light { 4.0 } else { 6.0 };
-        let mut groups: Vec<((bool, u64), Vec<Pt>, Vec<usize>)> = Vec::new();
+        let mut groups: Vec<HaloGroup> = Vec::new();
         let mut add = |closed: bool, width: f64, pts: Vec<Pt>| {
             let key = (closed, width.to_bits());
             let g = match groups.iter().position(|g| g.0 == key) {
@@ -165,7 +168,8 @@ impl Painter<'_> {
                 batches.len() - 1
             });
             let b = &mut batches[k];
-            let eighths: Vec<i64> = pts.iter().flat_map(|p| [(p[0] * 8.0).round() as i64, (p[1] * 8.0).round() as i64]).collect();
+            let eighths: Vec<i64> =
+                pts.iter().flat_map(|p| [(p[0] * 8.0).round() as i64, (p[1] * 8.0).round() as i64]).collect();
             if b.seen.insert(eighths) {
                 b.starts.push(b.points.len());
                 b.points.extend(pts);
@@ -207,10 +211,11 @@ impl Painter<'_> {
         self.b.path(&[a, b], false, pen.pen.clone());
         let t = (b[1] - a[1]).atan2(b[0] - a[0]);
         let (l, s) = (9.0, 0.42);
-        let head = [[b[0] - l * (t - s).cos(), b[1] - l * (t - s).sin()], b, [
-            b[0] - l * (t + s).cos(),
-            b[1] - l * (t + s).sin(),
-        ]];
+        let head = [
+            [b[0] - l * (t - s).cos(), b[1] - l * (t - s).sin()],
+            b,
+            [b[0] - l * (t + s).cos(), b[1] - l * (t + s).sin()],
+        ];
         let head_pen = Pen { fill: pen.pen.stroke.clone(), dash: Vec::new(), ..pen.pen.clone() };
         self.b.path(&head, true, head_pen);
     }

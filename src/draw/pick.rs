@@ -59,7 +59,10 @@ pub fn distance(item: &Item, xf: &Transform, p: Pt) -> f64 {
                 }
                 let (a, b) = (pts[k], pts[j]);
                 best = best.min(segment_distance(p, a, b));
-                if closed && (a[1] > p[1]) != (b[1] > p[1]) && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0] {
+                if closed
+                    && (a[1] > p[1]) != (b[1] > p[1])
+                    && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
+                {
                     inside = !inside;
                 }
             }

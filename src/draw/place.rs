@@ -9,11 +9,11 @@
 use std::collections::HashMap;
 
 use super::labels::{
-    At, DimFrame, EDGE, Kind, LINE, Label, Slot, Room, dim_candidates, dim_frame, scene_labels, text_candidates,
+    At, DimFrame, EDGE, Kind, LINE, Label, Room, Slot, dim_candidates, dim_frame, scene_labels, text_candidates,
     text_frame,
 };
 use super::lines::{LineIndex, scene_lines, segment_hits_box};
-use super::{View, Placed, Transform};
+use super::{Placed, Transform, View};
 use crate::diagram::scene::{Anchor, Pt, Scene};
 
 /// Whether boxes `a` and `b` overlap.

@@ -106,7 +106,6 @@ pub const LABEL_KEYS: [&str; 29] = [
     "radial_break",
 ];
 
-
 /// The text of a label in `lang`: its key's template with `value` in place
 /// of `{}`; a bare value for an empty key; a key without a template as the
 /// key and the value.

@@ -133,14 +133,16 @@ impl Session {
                 };
                 let drawable = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
                 shown.planned(scenes, drawable, plan.has_alarm(), fresh, keep);
-                answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(|o| {
-                    set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
-                    set(&o, "stale", &shown.stale().into());
-                    set(&o, "plan", &(*plans as f64).into());
-                    set(&o, "goodPlan", &shown.good_plan().map_or(JsValue::NULL, |g| (g as f64).into()));
-                    set(&o, "resumedAt", &planner.resumed_at().into());
-                    o.into()
-                })
+                answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(
+                    |o| {
+                        set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
+                        set(&o, "stale", &shown.stale().into());
+                        set(&o, "plan", &(*plans as f64).into());
+                        set(&o, "goodPlan", &shown.good_plan().map_or(JsValue::NULL, |g| (g as f64).into()));
+                        set(&o, "resumedAt", &planner.resumed_at().into());
+                        o.into()
+                    },
+                )
             }
             None => Err(err("the planner kept no plan")),
         };

@@ -127,7 +127,14 @@ impl Session {
     /// list as [`Session::draw`] without the mark): at `width × height` px,
     /// transform `xf` (omitted: fitted, with `stretch`). The same as
     /// `screwcut svg` of the program at that size and transform.
-    pub fn svg(&self, view: &str, width: f64, height: f64, xf: Option<Vec<f64>>, stretch: bool) -> Result<String, JsValue> {
+    pub fn svg(
+        &self,
+        view: &str,
+        width: f64,
+        height: f64,
+        xf: Option<Vec<f64>>,
+        stretch: bool,
+    ) -> Result<String, JsValue> {
         let which = which(view)?;
         let lang = self.lang();
         self.with_state(|st| {
@@ -158,7 +165,11 @@ fn transform(xf: Option<&[f64]>) -> Result<Option<Transform>, JsValue> {
         None | Some([]) => Ok(None),
         Some(&[sx, sy, tx, ty]) => {
             let t = Transform { sx, sy, tx, ty };
-            if t.is_valid() { Ok(Some(t)) } else { Err(err(format!("the transform {xf:?} needs finite numbers and positive scales"))) }
+            if t.is_valid() {
+                Ok(Some(t))
+            } else {
+                Err(err(format!("the transform {xf:?} needs finite numbers and positive scales")))
+            }
         }
         Some(v) => Err(err(format!("a transform is [sx, sy, tx, ty], not {} numbers", v.len()))),
     }
@@ -188,7 +199,15 @@ fn list_to_js(list: &DisplayList) -> Result<JsValue, JsValue> {
                 let first_span = spans.len() as u32;
                 spans.extend(starts.iter().map(|&s| n + 2 * s as u32));
                 nums.extend(points.iter().flatten());
-                ops.extend([0, *pen as u32, u32::from(*closed), n, 2 * points.len() as u32, first_span, starts.len() as u32]);
+                ops.extend([
+                    0,
+                    *pen as u32,
+                    u32::from(*closed),
+                    n,
+                    2 * points.len() as u32,
+                    first_span,
+                    starts.len() as u32,
+                ]);
             }
             Op::Circle { pen, center, r } => {
                 nums.extend([center[0], center[1], *r]);

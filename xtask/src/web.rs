@@ -282,8 +282,11 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     }
     std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let esbuild = path_str(&www.join("node_modules").join(".bin").join("esbuild"))?;
-    let entries =
-        [("src/app/main.js", "app.js"), ("src/engine/worker.js", "worker.js"), ("src/embed/element.js", "screwcut-preview.js")];
+    let entries = [
+        ("src/app/main.js", "app.js"),
+        ("src/engine/worker.js", "worker.js"),
+        ("src/embed/element.js", "screwcut-preview.js"),
+    ];
     for (entry, file) in entries {
         let outfile = format!("--outfile={}", path_str(&out.join(file))?);
         let mut args = vec![entry, "--bundle", "--format=esm", "--target=es2022", "--charset=utf8", &outfile];

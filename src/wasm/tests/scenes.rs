@@ -227,8 +227,17 @@ fn views_draw_pick_and_export_the_sessions_scenes() {
     for (w, h) in [(f64::NAN, 360.0), (-1.0, 360.0), (1e9, 360.0)] {
         assert!(s.draw("side", w, h, None, false, -1, -1, none.to_vec(), false).is_err(), "{w}×{h}");
     }
-    assert!(message(s.draw("front", 640.0, 360.0, None, false, -1, -1, none.to_vec(), false).unwrap_err()).contains("unknown view"));
-    assert!(message(s.draw("side", 640.0, 360.0, Some(vec![0.0, 1.0, 0.0, 0.0]), false, -1, -1, none.to_vec(), false).unwrap_err()).contains("positive"));
+    assert!(
+        message(s.draw("front", 640.0, 360.0, None, false, -1, -1, none.to_vec(), false).unwrap_err())
+            .contains("unknown view")
+    );
+    assert!(
+        message(
+            s.draw("side", 640.0, 360.0, Some(vec![0.0, 1.0, 0.0, 0.0]), false, -1, -1, none.to_vec(), false)
+                .unwrap_err()
+        )
+        .contains("positive")
+    );
     assert!(s.pick("side", vec![1.0], 0.0, 0.0).is_err());
 }
 

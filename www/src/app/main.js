@@ -42,15 +42,20 @@ let client;
 let settingsPanel;
 let dialects = [];
 let editor;
-let result = null; // the lists of the last answer (threads, passes as columns, diagnostics)
-let thread = 0;
-let start = 1;
-let hover = null;
+/**
+ * What the page shows and points at, as one value changed only by `update`
+ * (a new value each time): the lists of the last answer (threads, passes as
+ * columns, diagnostics), the chosen thread and start, what is hovered, the
+ * severities the diagnostics list shows and the rows it shows.
+ */
+let ui = Object.freeze({ result: null, thread: 0, start: 1, hover: null, severities: new Set(['error', 'warning', 'info']), diagnosticsShown: [] });
+/** The next `ui`: the last one with the fields of `patch`. */
+function update(patch) {
+  ui = Object.freeze({ ...ui, ...patch });
+}
 let planning; // plans in flight, keystrokes, the good plan's lists (planning.js)
 let passRows;
 const lists = []; // the keyboard-operated lists (a11y.js)
-let diagnosticsShown = [];
-let severities = new Set(['error', 'warning', 'info']);
 
 function settingsText() {
   const s = state.settings[state.dialect] || {};
@@ -78,9 +83,7 @@ async function showProgram(s) {
   $('dialect').value = state.dialect;
   planning.another();
   // What was chosen in the last program (a thread, a start, a hovered pass) is not this one's.
-  thread = 0;
-  start = 1;
-  hover = null;
+  update({ thread: 0, start: 1, hover: null });
   makeEditor(state.program);
   await buildSettings();
   replan();
@@ -107,7 +110,7 @@ function makeEditor(doc) {
 /** Sends the text to the engine; while a plan is in flight, only the latest text follows it. */
 function replan() {
   const text = editor.text();
-  if (!planning.plan({ text, dialect: state.dialect, settings: settingsText(), thread, start }, editor.view.state.doc)) return;
+  if (!planning.plan({ text, dialect: state.dialect, settings: settingsText(), thread: ui.thread, start: ui.start }, editor.view.state.doc)) return;
   state.program = text;
   persist();
 }
@@ -139,15 +142,14 @@ function onMessage(m) {
 
 function onResult(m) {
   const r = m.r;
-  if (r.threads === undefined) r.threads = result ? result.threads : [];
-  else if (r.threads.changes) r.threads = patchList(result ? result.threads : [], r.threads);
-  if (r.passes === undefined) r.passes = result ? result.passes : null;
-  if (r.diagnostics === null) r.diagnostics = result ? result.diagnostics : [];
+  if (r.threads === undefined) r.threads = ui.result ? ui.result.threads : [];
+  else if (r.threads.changes) r.threads = patchList(ui.result ? ui.result.threads : [], r.threads);
+  if (r.passes === undefined) r.passes = ui.result ? ui.result.passes : null;
+  if (r.diagnostics === null) r.diagnostics = ui.result ? ui.result.diagnostics : [];
   else editor.setDiagnosticsSoon(r.diagnostics);
   const t0 = performance.now();
-  result = r;
+  update({ result: r, thread: r.thread ?? 0 });
   probe.result = r;
-  thread = r.thread ?? 0;
   const a = planning.answered(r, m.seq, editor.view.state.doc);
   renderLists(r);
   const t1 = performance.now();
@@ -189,7 +191,7 @@ function renderLists(r) {
   // A thread's figures are in the units its words were written in (the program may switch G20/G21).
   const units = (shownThread && shownThread.units) || shown.units;
   renderCheck(strip, shownThread, units, t, (state.settings[state.dialect] || {})[DESIGNATION], problem && problem.message);
-  labelViews(shown, shown.thread ?? 0, start, t);
+  labelViews(shown, shown.thread ?? 0, ui.start, t);
   renderDiagnostics(r.diagnostics);
   renderSettingErrors(r.settingErrors);
 }
@@ -226,7 +228,7 @@ function renderThreads(r, stale) {
       s.innerHTML = opts;
       s.dataset.html = opts;
     }
-    s.value = String(Math.min(start, th.starts));
+    s.value = String(Math.min(ui.start, th.starts));
   }
   $('no-threads').hidden = r.threads.length > 0;
   const head = passHead(t, (th && th.units) || r.units);
@@ -238,7 +240,7 @@ function renderThreads(r, stale) {
   const c = r.passes;
   // The Start selector filters the table to one start of a multi-start thread.
   const order = [];
-  if (c) for (let i = 0; i < c.n; i++) if (!th || th.starts <= 1 || c.start[i] === start) order.push(i);
+  if (c) for (let i = 0; i < c.n; i++) if (!th || th.starts <= 1 || c.start[i] === ui.start) order.push(i);
   passRows.order = order;
   passRows.set(order.length, (k, hot) => passRow(c, order[k], t, hot, stale));
 }
@@ -247,10 +249,10 @@ function renderThreads(r, stale) {
 let rendered = { list: null, severities: null, lang: null };
 
 function renderDiagnostics(list) {
-  if (list === rendered.list && severities === rendered.severities && getLang() === rendered.lang) return;
-  rendered = { list, severities, lang: getLang() };
-  const shown = list.map((d, i) => [d, i]).filter(([d]) => severities.has(d.severity));
-  diagnosticsShown = shown;
+  if (list === rendered.list && ui.severities === rendered.severities && getLang() === rendered.lang) return;
+  rendered = { list, severities: ui.severities, lang: getLang() };
+  const shown = list.map((d, i) => [d, i]).filter(([d]) => ui.severities.has(d.severity));
+  update({ diagnosticsShown: shown });
   const MAX = 2000;
   const rows = shown.slice(0, MAX).map(([d, i]) => diagnosticRow(d, i, t, false));
   const more = shown.length > MAX ? `<li class="more">${esc(t('more', { n: shown.length - MAX }))}</li>` : '';
@@ -265,29 +267,29 @@ function renderDiagnostics(list) {
 
 /** Highlights what `hover` points at, else what the cursor line draws. */
 function refreshHighlight() {
-  const lines = hover ? hover.lines : [];
-  client.send({ type: 'highlight', hover, cursor: editor.cursorLine() });
-  editor.markLines(lines, (hover && hover.via) || []);
-  const k = hover && hover.pass >= 0 && hover.thread === thread ? passRows.order.indexOf(hover.pass) : -1;
-  passRows.mark(k, hover && hover.fromView);
+  const lines = ui.hover ? ui.hover.lines : [];
+  client.send({ type: 'highlight', hover: ui.hover, cursor: editor.cursorLine() });
+  editor.markLines(lines, (ui.hover && ui.hover.via) || []);
+  const k = ui.hover && ui.hover.pass >= 0 && ui.hover.thread === ui.thread ? passRows.order.indexOf(ui.hover.pass) : -1;
+  passRows.mark(k, ui.hover && ui.hover.fromView);
 }
 
 function onViewHover(m) {
   const info = m.info;
-  hover = info && (info.pass >= 0 || info.lines.length) ? { thread: info.thread, pass: info.pass, lines: passLinesOf(info), via: passViaOf(info), fromView: true } : null;
+  update({ hover: info && (info.pass >= 0 || info.lines.length) ? { thread: info.thread, pass: info.pass, lines: passLinesOf(info), via: passViaOf(info), fromView: true } : null });
   refreshHighlight();
   tip(info, m.clientX, m.clientY);
 }
 
 /** The lines a hovered item stands for: its pass's four blocks when it is a pass of the chosen thread. */
 function passLinesOf(info) {
-  if (info.pass >= 0 && info.thread === thread && result && result.passes) return passLines(result.passes, info.pass);
+  if (info.pass >= 0 && info.thread === ui.thread && ui.result && ui.result.passes) return passLines(ui.result.passes, info.pass);
   return info.lines;
 }
 
 /** The calls that cut a hovered pass of the chosen thread (marked apart from its own lines). */
 function passViaOf(info) {
-  return info.pass >= 0 && info.thread === thread && result && result.passes ? passVia(result.passes, info.pass) : [];
+  return info.pass >= 0 && info.thread === ui.thread && ui.result && ui.result.passes ? passVia(ui.result.passes, info.pass) : [];
 }
 
 /** A tooltip for what the pointer is over in a drawing. */
@@ -297,7 +299,7 @@ function tip(info, x, y) {
     el.hidden = true;
     return;
   }
-  const text = tipText(info, result, thread, t);
+  const text = tipText(info, ui.result, ui.thread, t);
   el.textContent = text;
   el.hidden = false;
   el.style.left = `${Math.min(x + 14, window.innerWidth - el.offsetWidth - 8)}px`;
@@ -306,26 +308,25 @@ function tip(info, x, y) {
 
 function onPick(info) {
   if (!info) return;
-  if (info.thread >= 0 && info.thread !== thread) selectThread(info.thread);
+  if (info.thread >= 0 && info.thread !== ui.thread) selectThread(info.thread);
   const line = info.lines.length ? info.lines[0] : null;
   if (line) editor.goto(line);
 }
 
 /** Chooses the thread (and start) the tooth and starts views and the table show. */
 function selectThread(ti, st = 1) {
-  if (!result || ti === null || ti < 0 || ti >= result.threads.length) return;
-  if (ti === thread && st === start && result.passes) return;
-  thread = ti;
-  start = st;
+  if (!ui.result || ti === null || ti < 0 || ti >= ui.result.threads.length) return;
+  if (ti === ui.thread && st === ui.start && ui.result.passes) return;
+  update({ thread: ti, start: st });
   client.send({ type: 'select', thread: ti, start: st });
 }
 
 function onCursor(line) {
-  if (result) {
-    const ti = result.threads.findIndex((th) => line >= th.line && line <= th.end_line);
-    if (ti >= 0 && ti !== thread) selectThread(ti);
+  if (ui.result) {
+    const ti = ui.result.threads.findIndex((th) => line >= th.line && line <= th.end_line);
+    if (ti >= 0 && ti !== ui.thread) selectThread(ti);
   }
-  if (!hover) client.send({ type: 'highlight', hover: null, cursor: line });
+  if (!ui.hover) client.send({ type: 'highlight', hover: null, cursor: line });
 }
 
 // ---- settings (settingspanel.js) ----
@@ -445,11 +446,11 @@ async function main() {
       passes: scroller,
       diagnostics: $('diagnostics'),
       rows: passRows,
-      result: () => result,
-      thread: () => thread,
-      shown: () => diagnosticsShown,
+      result: () => ui.result,
+      thread: () => ui.thread,
+      shown: () => ui.diagnosticsShown,
       setHover: (h) => {
-        hover = h;
+        update({ hover: h });
         refreshHighlight();
       },
       goto: (line, column) => editor.goto(line, column),
@@ -483,7 +484,7 @@ function finishSetup() {
   const tool = (m) => client.request('tool', m);
   const open = ({ text, dialect }) => library.openNew({ dialect, settings: inherited(state.settings), program: text });
   $('wizard').addEventListener('click', () => openWizard({ request: tool, t, dialect: state.dialect, onOpen: open }).catch((e) => toast(e.message)));
-  $('expand').addEventListener('click', () => openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: result ? result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)));
+  $('expand').addEventListener('click', () => openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: ui.result ? ui.result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)));
   bindDesignation($('designation'), (v) => {
     state.settings[state.dialect] ||= {};
     const mine = state.settings[state.dialect];
@@ -523,7 +524,7 @@ function finishSetup() {
     download(fileName(text, state.dialect), new Blob([text], { type: 'text/plain;charset=utf-8' }));
   });
   $('print').addEventListener('click', () => window.print());
-  window.addEventListener('beforeprint', () => fillPrintSheet($('print-sheet'), { text: editor.text(), result, thread, t }));
+  window.addEventListener('beforeprint', () => fillPrintSheet($('print-sheet'), { text: editor.text(), result: ui.result, thread: ui.thread, t }));
   $('plan-json').addEventListener('click', async () => {
     const json = await client.request('json');
     download('screwcut-plan.json', new Blob([json], { type: 'application/json' }));
@@ -538,13 +539,13 @@ function finishSetup() {
     for (const l of lists) l.relabel();
     await buildSettings();
     persist();
-    if (result) renderLists(result);
+    if (ui.result) renderLists(ui.result);
   });
   $('thread').addEventListener('change', (e) => selectThread(Number(e.target.value), 1));
   $('start').addEventListener('change', (e) => {
-    start = Number(e.target.value);
-    selectThread(thread, start);
-    if (result) renderThreads(result, false);
+    update({ start: Number(e.target.value) });
+    selectThread(ui.thread, ui.start);
+    if (ui.result) renderThreads(ui.result, false);
   });
   const tbody = $('passes').tBodies[0];
   const rowPass = (e) => {
@@ -553,18 +554,18 @@ function finishSetup() {
   };
   tbody.addEventListener('mouseover', (e) => {
     const i = rowPass(e);
-    if (i < 0 || !result || !result.passes) return;
-    hover = { thread, pass: i, lines: passLines(result.passes, i), via: passVia(result.passes, i) };
+    if (i < 0 || !ui.result || !ui.result.passes) return;
+    update({ hover: { thread: ui.thread, pass: i, lines: passLines(ui.result.passes, i), via: passVia(ui.result.passes, i) } });
     refreshHighlight();
     $('tip').hidden = true;
   });
   tbody.addEventListener('mouseleave', () => {
-    hover = null;
+    update({ hover: null });
     refreshHighlight();
   });
   tbody.addEventListener('click', (e) => {
     const i = rowPass(e);
-    if (i >= 0 && result && result.passes) editor.goto(passLines(result.passes, i)[0]);
+    if (i >= 0 && ui.result && ui.result.passes) editor.goto(passLines(ui.result.passes, i)[0]);
   });
   $('diagnostics').addEventListener('click', (e) => {
     const to = e.target.closest('button.switch');
@@ -574,16 +575,17 @@ function finishSetup() {
       return;
     }
     const li = e.target.closest('li[data-i]');
-    const d = li && result ? result.diagnostics[Number(li.dataset.i)] : null;
+    const d = li && ui.result ? ui.result.diagnostics[Number(li.dataset.i)] : null;
     if (d) editor.goto(d.line, d.column);
   });
   $('sev-filter').addEventListener('change', (e) => {
     const sev = e.target.closest('[data-sev]')?.dataset.sev;
     if (!sev) return;
+    const severities = new Set(ui.severities);
     if (e.target.checked) severities.add(sev);
     else severities.delete(sev);
-    severities = new Set(severities);
-    if (result) renderDiagnostics(result.diagnostics);
+    update({ severities });
+    if (ui.result) renderDiagnostics(ui.result.diagnostics);
   });
   // A link followed while the app is open: a new program, checked as at start.
   window.addEventListener('hashchange', () => library.openLink(location.hash));

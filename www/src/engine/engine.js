@@ -291,7 +291,10 @@ export class Engine {
         return { n, w: c.width, h: c.height };
       },
       draws: () => Object.fromEntries(Object.entries(this.views).map(([k, view]) => [k, view.lastDraw])),
-      paints: () => Object.fromEntries(Object.entries(this.views).map(([k, view]) => [k, { draw: view.lastDraw, paint: view.lastPaint, ops: view.list ? view.list.ops.length / 7 : 0, numbers: view.list ? view.list.nums.length : 0 }])),
+      paints: () =>
+        Object.fromEntries(
+          Object.entries(this.views).map(([k, view]) => [k, { draw: view.lastDraw, paint: view.lastPaint, ops: view.list ? view.list.ops.length / 7 : 0, numbers: view.list ? view.list.nums.length : 0 }]),
+        ),
       labels: () => v && v.labels(),
       svg: () => v && v.svg(),
       items: () => this.session.items_of_style(name, format),
