@@ -100,11 +100,13 @@ pub fn finish_thread(
 ) {
     let window_start = if i == 0 { 0 } else { threads[i - 1].first_move };
     let t = &mut threads[i];
-    if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92 | Source::LinuxG33) {
-        return;
-    }
     let end = t.first_move.min(moves.len());
     let window = &moves[window_start.min(end)..end];
+    if !matches!(t.source, Source::G32 | Source::Renhe | Source::G92 | Source::LinuxG33) {
+        // A cycle's crest is its own; the surface the program turned for it is measured apart.
+        t.turned = turned_by_program(t, window, s);
+        return;
+    }
     finish_one(t, window, s, stated, s.flag(P::Advice), diags, spans);
 }
 
@@ -252,6 +254,17 @@ pub fn measured_clearances(threads: &[Thread], i: usize, moves: &[Move], s: &Set
     let h = s.get(P::DepthFactor) * t.pitch / 2.0;
     let crest = outline_crest(t, window, deepest, h)?;
     Some(work_clearances(t, &crest, window, deepest))
+}
+
+/// The diameter (a face thread's Z) of the surface the program turned for
+/// cycle thread `t` among `moves`, at its first pass, if it turned one.
+fn turned_by_program(t: &Thread, moves: &[Move], s: &Settings) -> Option<f64> {
+    let deepest = deepest_pass(t)?;
+    let h = s.get(P::DepthFactor) * t.pitch / 2.0;
+    let piece = outline_crest(t, moves, deepest, h)?;
+    let long = t.long_axis;
+    let c = Frame(long).line_at(piece.from, piece.to, Frame(long).long(t.passes[0].from));
+    Some(if long == Axis::Z { 2.0 * c } else { c })
 }
 
 /// The turned surface a thread is cut on, when the program turned it.

@@ -442,6 +442,7 @@ fn build(cuts: &[Chain]) -> Thread {
         tool_angle: c0.tool_angle,
         crest: 0.0,
         crest_source: CrestSource::Assumed,
+        turned: None,
         height: 0.0,
         taper,
         passes,

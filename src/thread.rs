@@ -269,6 +269,12 @@ pub struct Thread {
     pub crest: f64,
     /// Where `crest` came from.
     pub crest_source: CrestSource,
+    /// A cycle's thread (whose crest is the cycle's) cut on a surface the
+    /// program turned before it: that surface's diameter at the first pass
+    /// (its Z for a face thread), which the thread check measures the major
+    /// (an internal thread's minor) against.
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "ser_round_opt")]
+    pub turned: Option<f64>,
     /// Total depth of the deepest pass.
     #[serde(serialize_with = "ser_round")]
     pub height: f64,

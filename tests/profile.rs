@@ -93,3 +93,59 @@ fn a_missing_end_of_contour_is_an_alarm() {
     let d = plan.diagnostics.iter().find(|d| d.code == Code::JumpTarget).expect("an alarm");
     assert_eq!((d.line, d.column), (5, 9));
 }
+
+/// A G76 after G70: the cycle's crest is its own (X27.4 + 2 × 1.3 = 30), and
+/// the thread check measures the major the program turned for it against
+/// the designation's limits — M30×2-6g: major 29.682 … 29.962 (ISO 965-2,
+/// table of limits for 6g; d = 30, es = −0.038, Td = 0.28). Turned at X30 the
+/// major is outside; at X29.8 it gauges.
+#[test]
+fn a_cycle_thread_checks_the_major_the_program_turned() {
+    let text = |major: &str| {
+        format!(
+            "O0072 (M30x2-6g)\nG21 G97 S800 M03 T0101\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n\
+             N10 G00 X26.\nG01 X{major} Z-2. F0.1\nZ-40.\nX44.\nZ-60.\nN20 X52.\nG70 P10 Q20\nG00 X100. Z100.\n\
+             T0303 S500\nG00 X32. Z5.\nG76 P020060 Q100 R0.1\nG76 X27.4 Z-36. P1300 Q400 F2.\nG00 X100. Z100.\nM30\n"
+        )
+    };
+    let plan = plan_with(&text("30."), Dialect::Fanuc0i, &[]);
+    no_alarm(&plan);
+    let t = &plan.threads[0];
+    assert_eq!(t.crest_source, screwcut::thread::CrestSource::Cycle);
+    eq(t.crest, 30.0);
+    eq(t.turned.expect("the turned surface under the thread"), 30.0);
+    let fail = plan.with_code(Code::GaugeFail).next().expect("the turned major is outside 6g");
+    assert!(fail.message.contains("the turned major diameter X30 is outside 29.682 … 29.962"), "{}", fail.message);
+    let plan = plan_with(&text("29.8"), Dialect::Fanuc0i, &[]);
+    eq(plan.threads[0].turned.unwrap(), 29.8);
+    assert!(plan.with_code(Code::GaugeFail).next().is_none(), "{:?}", plan.diagnostics);
+    assert!(plan.with_code(Code::GaugeOk).next().is_some());
+}
+
+/// The part in the side section: the finished outline G70 runs, filled
+/// down to the spindle axis behind everything (GSK980TDc, G32 passes cut on
+/// the diameter it turned: crest X30 from the outline, no assumed crest).
+#[test]
+fn the_part_is_filled_under_its_turned_outline() {
+    use screwcut::diagram::{Shape, Style, side};
+    let text = "O0073\nG50 X100. Z100.\nT0101 S800 M03\nG00 X52. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n\
+                N10 G00 X26.\nG01 X30. Z-2. F0.1\nZ-40.\nX44.\nZ-60.\nN20 X52.\nG70 P10 Q20\nG00 X100. Z100.\n\
+                T0303 S500\nG00 X32. Z5.\nX29.1\nG32 Z-36. F2.\nG00 X32.\nZ5.\nX27.4\nG32 Z-36. F2.\nG00 X32.\nZ5.\nM30\n";
+    let plan = plan_with(text, Dialect::Gsk980tdc, &[]);
+    no_alarm(&plan);
+    assert_eq!(plan.threads[0].crest_source, screwcut::thread::CrestSource::Outline);
+    eq(plan.threads[0].crest, 30.0);
+    assert!(plan.with_code(Code::CrestAssumed).next().is_none());
+    let scene = side(&plan);
+    let parts: Vec<_> = scene.items.iter().filter(|i| i.style == Style::Material).collect();
+    assert_eq!(parts.len(), 1, "one run of feeds from X26 Z2 to X52 Z-60");
+    assert_eq!(scene.items.iter().position(|i| i.style == Style::Material), Some(1), "behind all but the axis");
+    let Shape::Polygon { points } = &parts[0].shape else { panic!("a polygon") };
+    // From the axis under the contour's start, along it, back to the axis under its end.
+    // (The shoulder at r 22 lies beyond the radial break at r 15 + 0.65: drawn compressed, diagram::radial.)
+    // The chamfer starts at X26 Z2, where N10's rapid left the tool.
+    assert_eq!(points.first(), Some(&[2.0, 0.0]));
+    assert_eq!(&points[1..4], &[[2.0, 13.0], [-2.0, 15.0], [-40.0, 15.0]]);
+    assert_eq!(points.last().map(|p| p[0]), Some(-60.0));
+    assert!(parts[0].lines.is_empty(), "hovering the part marks nothing");
+}

@@ -268,6 +268,7 @@ fn thread(g: &G76, passes: Vec<Pass>) -> Thread {
         tool_angle: g.tool_angle,
         crest: 2.0 * (g.x0 + s * g.i.abs()),
         crest_source: CrestSource::Cycle,
+        turned: None,
         height: g.k.abs(),
         taper: 0.0,
         passes,

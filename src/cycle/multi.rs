@@ -162,6 +162,7 @@ impl MultiPlan<'_> {
             tool_angle: m.angle,
             crest: 2.0 * (g.root_start.r() + g.out * k),
             crest_source: CrestSource::Cycle,
+            turned: None,
             height: k,
             taper: g.root_start.r() - g.root_end.r(),
             passes,

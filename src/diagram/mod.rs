@@ -16,6 +16,7 @@ pub mod band;
 pub mod detail;
 pub mod radial;
 pub mod scene;
+pub mod section;
 pub mod side;
 pub mod starts;
 pub mod tooth;

@@ -304,6 +304,7 @@ pub fn side(plan: &Plan) -> Scene {
     grow_focus(&mut scene.focus, rapids);
     // The spindle axis across everything, behind the rest.
     scene.items[0].shape = axis(&mut scene.bounds);
+    super::section::apply(&mut scene, plan);
     super::radial::apply(&mut scene, plan);
     scene.finish();
     scene

@@ -138,7 +138,7 @@ impl LineIndex {
 
 /// Styles whose lines labels may cross: centre lines and filled zones.
 fn crossable(style: Style) -> bool {
-    matches!(style, Style::Axis | Style::ThreadZone | Style::Delta1 | Style::Delta2)
+    matches!(style, Style::Axis | Style::ThreadZone | Style::Delta1 | Style::Delta2 | Style::Material)
 }
 
 /// The segments of one item: paths (polygons closed), arrows, circles as 24 chords.

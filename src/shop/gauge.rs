@@ -350,18 +350,20 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
     if cut.on_nose {
         note(g, &msg::NOTE_ON_NOSE, args![]);
     }
-    let outline = t.crest_source == CrestSource::Outline;
+    // The crest the program turned: the thread's own (from the outline), or the surface turned for a cycle's thread.
+    let turned = if t.crest_source == CrestSource::Outline { Some(t.crest) } else { t.turned };
+    let (outline, crest) = (turned.is_some(), turned.unwrap_or(t.crest));
     if t.internal {
         g.major_diameter = Some(cut.root);
-        g.minor_diameter = outline.then_some(t.crest);
+        g.minor_diameter = turned;
         if dm.major.min.is_some_and(|v| cut.root < v - eps) {
             g.ok = false;
             note(g, &msg::NOTE_ROOT_BELOW_MAJOR, args![root = cut.root, min = dm.major.min.unwrap_or(0.0)]);
         }
-        crest_check(g, outline, t.crest, dm.minor, &msg::BORE);
+        crest_check(g, outline, crest, dm.minor, &msg::BORE);
     } else {
         g.minor_diameter = Some(cut.root);
-        g.major_diameter = outline.then_some(t.crest);
+        g.major_diameter = turned;
         if dm.minor.max.is_some_and(|v| cut.root > v + eps) {
             g.ok = false;
             note(g, &msg::NOTE_ROOT_ABOVE_MINOR, args![root = cut.root, max = dm.minor.max.unwrap_or(0.0)]);
@@ -369,7 +371,7 @@ fn straight(t: &Thread, tool: Tool, pitch: f64, dm: &Diameters, g: &mut Gauge) -
         if dm.minor.min.is_some_and(|v| cut.root < v - eps) {
             note(g, &msg::NOTE_ROOT_BELOW_MINOR, args![root = cut.root, min = dm.minor.min.unwrap_or(0.0)]);
         }
-        crest_check(g, outline, t.crest, dm.major, &msg::MAJOR);
+        crest_check(g, outline, crest, dm.major, &msg::MAJOR);
     }
     if let Some(m) = mid {
         g.delta_x = delta_x(t, tool, pitch, z, &groups[worst], m);

@@ -143,6 +143,7 @@ pub fn thread_key(t: &Thread) -> u64 {
         tool_angle,
         crest,
         crest_source,
+        turned,
         height,
         taper,
         passes,
@@ -165,6 +166,7 @@ pub fn thread_key(t: &Thread) -> u64 {
     f(&mut h, *tool_angle);
     f(&mut h, *crest);
     discriminant(crest_source).hash(&mut h);
+    opt(&mut h, *turned);
     f(&mut h, *height);
     f(&mut h, *taper);
     h.write_usize(passes.len());

@@ -146,6 +146,7 @@ impl SideMemo {
         let b = self.build(plan, thread_keys);
         let pieces: Vec<&Chunk> = b.order.iter().map(|k| &self.chunks[k]).collect();
         let mut scene = join(b.head, &pieces);
+        crate::diagram::section::apply(&mut scene, plan);
         crate::diagram::radial::apply(&mut scene, plan);
         scene.finish();
         scene
