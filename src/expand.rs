@@ -267,7 +267,7 @@ impl<'p> Writer<'p> {
     fn plain(&mut self, m: &Move, to: Point) {
         match m.kind {
             MoveKind::Rapid => self.rapid(to),
-            MoveKind::Feed => self.feed(to),
+            MoveKind::Feed | MoveKind::Rough => self.feed(to),
             MoveKind::Arc => self.arc(m),
             MoveKind::Thread | MoveKind::ScrewIn | MoveKind::Runout => {
                 self.note(Remark::new(&tools::EX_STRAY_THREAD_MOVE, args![line = m.line]));

@@ -104,6 +104,10 @@ pub enum G {
     ThreadCycle,
     /// Known to the controller and without effect on the drawing (work offsets, path control, tool length).
     Accepted,
+    /// A stock-removal cycle, G71 (cuts along Z) or G72 (along X): its first
+    /// block sets the depth of cut and the escape, its second (with P and Q)
+    /// roughs over the contour N(P) … N(Q).
+    Rough(crate::cycle::rough::Along),
     /// Known to the controller but not drawn; `returns` says whether the tool ends where it started.
     NotSimulated {
         /// What it is.

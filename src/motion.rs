@@ -74,6 +74,8 @@ pub enum MoveKind {
     Rapid,
     /// Straight feed (G01, turning cycles).
     Feed,
+    /// A roughing cut of a stock-removal cycle (G71/G72): a feed, not the part's outline.
+    Rough,
     /// Circular feed (G02/G03).
     Arc,
     /// Spindle-synchronised thread cut.
@@ -116,4 +118,44 @@ pub struct Move {
     /// Arc centre and direction, for arcs.
     #[serde(skip_serializing_if = "Option::is_none", flatten)]
     pub arc: Option<ArcData>,
+}
+
+/// The points of an arc motion, tessellated (at most 3° per chord).
+pub fn arc_points(m: &Move) -> Vec<[f64; 2]> {
+    let world = |p: Point| [p.z, p.x / 2.0];
+    let (a, b) = (world(m.from), world(m.to));
+    let Some(arc) = m.arc else { return vec![a, b] };
+    let c = world(arc.center);
+    let r = ((a[0] - c[0]).powi(2) + (a[1] - c[1]).powi(2)).sqrt();
+    if !(r.is_finite() && r > 0.0) {
+        return vec![a, b];
+    }
+    let a0 = (a[1] - c[1]).atan2(a[0] - c[0]);
+    let a1 = (b[1] - c[1]).atan2(b[0] - c[0]);
+    let tau = std::f64::consts::TAU;
+    let mut sweep = a1 - a0;
+    if arc.cw {
+        while sweep >= 0.0 {
+            sweep -= tau;
+        }
+        if sweep <= -tau {
+            sweep += tau;
+        }
+    } else {
+        while sweep <= 0.0 {
+            sweep += tau;
+        }
+        if sweep >= tau {
+            sweep -= tau;
+        }
+    }
+    let n = ((sweep.abs() / 3f64.to_radians()).ceil() as usize).clamp(2, 120);
+    let mut pts: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let t = a0 + sweep * i as f64 / n as f64;
+            [c[0] + r * t.cos(), c[1] + r * t.sin()]
+        })
+        .collect();
+    pts.push(b);
+    pts
 }

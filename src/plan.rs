@@ -19,7 +19,7 @@ use crate::exec::reads::Reads;
 use crate::exec::{Ctx, Exec, Flow};
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
-use crate::motion::Move;
+use crate::motion::{Move, MoveKind, Point};
 use crate::num::ser_round_opt;
 use crate::settings::{P, Settings};
 use crate::span::{LineIndex, Shift, Span};
@@ -199,7 +199,47 @@ impl Reading {
 
     /// Reads one block.
     pub fn block(&mut self, b: &Block) {
+        if self.exec.capturing() {
+            return self.capture(b);
+        }
         self.it.step(b, &mut self.events, &mut self.diags);
+        self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
+    }
+
+    /// A block of a stock-removal cycle's contour: read, its motions' end
+    /// points kept, nothing drawn or said (G70 runs the contour, and says
+    /// what is wrong with it, where it does).
+    fn capture(&mut self, b: &Block) {
+        let mut quiet = Diagnostics::with_limit(1);
+        self.it.step(b, &mut self.events, &mut quiet);
+        for e in self.events.drain(..) {
+            match e {
+                Event::Rapid { mv: Some(m), .. } => self.exec.capture_point(m.to),
+                Event::Motion(m) if m.kind == MoveKind::Arc => {
+                    for p in crate::motion::arc_points(&m).into_iter().skip(1) {
+                        self.exec.capture_point(Point { x: 2.0 * p[1], z: p[0] });
+                    }
+                }
+                Event::Motion(m) => self.exec.capture_point(m.to),
+                _ => {}
+            }
+        }
+    }
+
+    /// A contour read for a stock-removal cycle is complete: back to the
+    /// modal state at the cycle block, and the roughing passes planned as
+    /// motions of that block.
+    fn rough(&mut self, c: crate::exec::Capture) {
+        self.it.m = *c.modal;
+        self.it.m.rough_call = None;
+        let moves = crate::cycle::rough::passes(&c.rough, c.start, &c.points, c.line, c.span);
+        self.events.push(Event::Close);
+        for m in moves {
+            self.events.push(match m.kind {
+                MoveKind::Rapid => Event::Rapid { mv: Some(m), x: true, z: true, line: c.line },
+                _ => Event::Motion(m),
+            });
+        }
         self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
     }
 
@@ -259,7 +299,11 @@ impl Reading {
             return (flow, jump);
         }
         let ended = self.it.m.ended;
-        self.step_flow(text, here, next, |ex, ctx| ex.after(ctx, block, ended))
+        let out = self.step_flow(text, here, next, |ex, ctx| ex.after(ctx, block, ended));
+        if let Some(c) = self.exec.captured.take() {
+            self.rough(*c);
+        }
+        out
     }
 
     /// Runs `f` on the program flow with a context for the line at `here`.

@@ -242,6 +242,10 @@ pub struct Modal {
     pub drilling: bool,
     /// The G codes (×10) whose "not simulated" note was given: once per code.
     pub noted: Vec<i64>,
+    /// The depth of cut and escape of G71 and G72 (their first blocks), in program units.
+    pub rough_regs: [Option<(f64, f64)>; 2],
+    /// A G71/G72 with P and Q just read: its cycle, for the program flow to rough over the contour.
+    pub rough_call: Option<crate::cycle::rough::Rough>,
 }
 
 impl Default for Modal {
@@ -279,6 +283,8 @@ impl Default for Modal {
             said: 0,
             drilling: false,
             noted: Vec::new(),
+            rough_regs: [None, None],
+            rough_call: None,
         }
     }
 }

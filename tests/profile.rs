@@ -5,11 +5,13 @@
 //! itself (Fanuc 0i-TF operator's manual, multiple repetitive cycles
 //! G70–G76: "the move commands of the finishing shape are specified in the
 //! blocks from sequence number ns to nf"; GSK980TDc user manual §3.20 has
-//! the same two-block forms). The roughing passes themselves are not
-//! planned yet: a not-simulated note says so.
+//! the same two-block forms). G71 and G72 rough over the contour
+//! (`cycle::rough`, Series 21i-TB manual B-63604EN §13.2.1–2); G73's
+//! pattern repeating is not planned: a not-simulated note says so.
 
 mod common;
 use common::*;
+use screwcut::motion::MoveKind;
 use screwcut::{Code, Dialect, Plan};
 
 const CONTOUR: &str = "\
@@ -38,10 +40,11 @@ fn same_moves(a: &Plan, b: &Plan) {
     }
 }
 
-/// G71 then G70: the contour runs once, where G70 is, and the thread's
-/// crest is the diameter it turned (X47.8).
+/// G71 then G70: the roughing passes are motions of the G71 block, the
+/// contour runs once, where G70 is, and the thread's crest is the diameter
+/// it turned (X47.8).
 #[test]
-fn g71_reads_its_contour_and_g70_runs_it() {
+fn g71_roughs_over_its_contour_and_g70_runs_it() {
     for dialect in [Dialect::Fanuc0i, Dialect::Gsk980tdc] {
         let cycle = plan_with(
             &program(&format!("G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n{CONTOUR}"), "G70 P10 Q20\n"),
@@ -50,18 +53,33 @@ fn g71_reads_its_contour_and_g70_runs_it() {
         );
         let written = plan_with(&program("", CONTOUR), dialect, &[]);
         no_alarm(&cycle);
-        same_moves(&cycle, &written);
+        // Without the roughing (the G71 block's motions), the moves are those of the contour written in line.
+        let mut without = cycle.clone();
+        without.moves.retain(|m| m.line != 5);
+        same_moves(&without, &written);
         assert_eq!(cycle.threads.len(), 1);
         eq(cycle.threads[0].crest, 47.8);
         // The contour's moves come from its own lines, run by G70 on line 13.
         let contour: Vec<_> = cycle.moves.iter().filter(|m| (6..=12).contains(&m.line)).collect();
         assert_eq!(contour.len(), 7, "{dialect:?}");
-        let g71 = cycle.with_code(Code::NotSimulated).find(|d| d.line == 4).expect("the roughing noted");
-        assert!(g71.message.contains("roughing of G71"), "{}", g71.message);
+        assert!(cycle.with_code(Code::NotSimulated).all(|d| d.line != 5), "G71 is roughed, not noted");
+        // The roughing (B-63604EN §13.2.1): from A (X62 Z2) at depths of 2 (radius) towards the contour's
+        // start shifted by Δu/2 = 0.2 and Δw = 0.1 (r 22.2): r 29, 27, 25, 23 and 22.2; each cut along Z
+        // to the shifted contour: the face at Z-44.9, the face at Z-29.9 (twice), the chamfer at Z-0.7, the start at Z0.1.
+        let cuts: Vec<_> = cycle.moves.iter().filter(|m| m.kind == MoveKind::Rough && m.from.z == 2.0).collect();
+        let got: Vec<(f64, f64)> = cuts.iter().map(|m| (m.from.x / 2.0, (m.to.z * 1e6).round() / 1e6)).collect();
+        assert_eq!(got, [(29.0, -44.9), (27.0, -29.9), (25.0, -29.9), (23.0, -0.7), (22.2, 0.1)], "{dialect:?}");
+        // Then the cut along the shifted contour, ending at X62.4 Z-44.9, and the rapid back to A.
+        let last_rough = cycle.moves.iter().filter(|m| m.kind == MoveKind::Rough).last().unwrap();
+        pt(last_rough.to, 62.4, -44.9);
+        let back = cycle.moves.iter().filter(|m| m.line == 5).last().unwrap();
+        assert_eq!(back.kind, MoveKind::Rapid);
+        pt(back.to, 62.0, 2.0);
     }
 }
 
 /// Roughing alone (no G70): the contour is read, not run: no moves on its lines.
+/// G73 (pattern repeating) is read, not roughed.
 #[test]
 fn without_g70_the_contour_is_not_run() {
     let plan = plan_with(

@@ -10,6 +10,7 @@
 pub mod infeed;
 pub mod linuxcnc;
 pub mod multi;
+pub mod rough;
 pub mod runout;
 pub mod schedule;
 

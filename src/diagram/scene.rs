@@ -258,11 +258,13 @@ pub enum Style {
     Diameter,
     /// Where the side section's radial scale is broken, and its note.
     Break,
+    /// A roughing cut of a stock-removal cycle (drawn faintly).
+    Roughing,
 }
 
 impl Style {
     /// Every style, in the order of their packed codes.
-    pub const ALL: [Style; 25] = [
+    pub const ALL: [Style; 26] = [
         Style::Axis,
         Style::Outline,
         Style::Crest,
@@ -288,6 +290,7 @@ impl Style {
         Style::Ruler,
         Style::Diameter,
         Style::Break,
+        Style::Roughing,
     ];
 
     /// The name renderers know the style by (as serialised).
@@ -318,6 +321,7 @@ impl Style {
             Style::Ruler => "ruler",
             Style::Diameter => "diameter",
             Style::Break => "break",
+            Style::Roughing => "roughing",
         }
     }
 

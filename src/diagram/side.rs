@@ -28,44 +28,7 @@ fn line(a: Pt, b: Pt) -> Shape {
     Shape::Polyline { points: vec![a, b] }
 }
 
-/// The points of an arc motion, tessellated (at most 3° per chord).
-pub fn arc_points(m: &Move) -> Vec<Pt> {
-    let (a, b) = (world(m.from), world(m.to));
-    let Some(arc) = m.arc else { return vec![a, b] };
-    let c = world(arc.center);
-    let r = ((a[0] - c[0]).powi(2) + (a[1] - c[1]).powi(2)).sqrt();
-    if !(r.is_finite() && r > 0.0) {
-        return vec![a, b];
-    }
-    let a0 = (a[1] - c[1]).atan2(a[0] - c[0]);
-    let a1 = (b[1] - c[1]).atan2(b[0] - c[0]);
-    let tau = std::f64::consts::TAU;
-    let mut sweep = a1 - a0;
-    if arc.cw {
-        while sweep >= 0.0 {
-            sweep -= tau;
-        }
-        if sweep <= -tau {
-            sweep += tau;
-        }
-    } else {
-        while sweep <= 0.0 {
-            sweep += tau;
-        }
-        if sweep >= tau {
-            sweep -= tau;
-        }
-    }
-    let n = ((sweep.abs() / 3f64.to_radians()).ceil() as usize).clamp(2, 120);
-    let mut pts: Vec<Pt> = (0..n)
-        .map(|i| {
-            let t = a0 + sweep * i as f64 / n as f64;
-            [c[0] + r * t.cos(), c[1] + r * t.sin()]
-        })
-        .collect();
-    pts.push(b);
-    pts
-}
+pub use crate::motion::arc_points;
 
 /// The motions of one pass, as ranges of `plan.moves` (each pass carries
 /// them: [`crate::thread::PassMoves`]).
@@ -200,6 +163,7 @@ pub fn motion_item(m: &Move, has_threads: bool) -> (Item, bool) {
     let (shape, style, focus) = match m.kind {
         MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
         MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
+        MoveKind::Rough => (line(world(m.from), world(m.to)), Style::Roughing, !has_threads),
         MoveKind::Arc => (Shape::Polyline { points: arc_points(m) }, Style::Outline, !has_threads),
         MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),
         MoveKind::Runout => (line(world(m.from), world(m.to)), Style::Runout, true),

@@ -222,6 +222,7 @@ fn cycle_plan() -> Plan {
         tool_angle: 60.0,
         crest,
         crest_source: CrestSource::Cycle,
+        turned: None,
         height: 1.1,
         taper: 0.0,
         passes,

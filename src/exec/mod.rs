@@ -89,6 +89,27 @@ pub struct Frame {
     pub site: u32,
     /// A G70 running a contour: the sequence number of its last block.
     pub until: Option<u32>,
+    /// A G71/G72 reading its contour to rough over it: what it reads.
+    pub capture: Option<Box<Capture>>,
+}
+
+/// A stock-removal cycle reading its contour: the cycle, where the tool
+/// was, the modal state to go back to, the contour's points as read, and
+/// the cycle block's line and span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Capture {
+    /// The cycle's words.
+    pub rough: crate::cycle::rough::Rough,
+    /// The start point A (the tool at the cycle block).
+    pub start: crate::motion::Point,
+    /// The modal state at the cycle block, restored when the contour is read.
+    pub modal: Box<crate::state::Modal>,
+    /// The end points of the contour's motions, in order.
+    pub points: Vec<crate::motion::Point>,
+    /// The cycle block's line.
+    pub line: u32,
+    /// The cycle block's span.
+    pub span: Span,
 }
 
 /// A modal macro call (`G66`) in force: the macro runs after each block
@@ -156,6 +177,8 @@ pub struct Exec {
     pub broke: bool,
     /// LinuxCNC: a continue's flag (its loop's label), which makes a break of another loop do nothing.
     pub continued: Option<Box<str>>,
+    /// A contour read for a stock-removal cycle, complete: the reading roughs over it next.
+    pub captured: Option<Box<Capture>>,
 }
 
 impl Exec {
@@ -179,6 +202,7 @@ impl Exec {
             repeats: Vec::new(),
             broke: false,
             continued: None,
+            captured: None,
         }
     }
 
@@ -377,6 +401,7 @@ impl Exec {
             args: None,
             site,
             until: None,
+            capture: None,
         });
         self.set_via();
         if kind == CallKind::Macro {
@@ -384,6 +409,20 @@ impl Exec {
         }
         self.go(ctx, body);
         true
+    }
+
+    /// Whether the blocks read now are a stock-removal cycle's contour (read, not run).
+    pub fn capturing(&self) -> bool {
+        self.frames.last().is_some_and(|f| f.capture.is_some())
+    }
+
+    /// Adds point `p` to the contour being read.
+    pub fn capture_point(&mut self, p: crate::motion::Point) {
+        if let Some(c) = self.frames.last_mut().and_then(|f| f.capture.as_mut()) {
+            if c.points.len() < crate::cycle::rough::MAX_CUTS {
+                c.points.push(p);
+            }
+        }
     }
 
     /// Leaves the innermost call, back to its caller.

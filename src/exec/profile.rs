@@ -10,7 +10,7 @@
 //! The roughing passes of G71–G73 are not planned (their blocks get a
 //! not-simulated note); G70's return to its start point is not drawn.
 
-use super::{CallKind, Ctx, Exec, Flow, Macros};
+use super::{CallKind, Capture, Ctx, Exec, Flow, Macros};
 use crate::args;
 use crate::block::Block;
 use crate::message as msg;
@@ -31,8 +31,33 @@ pub fn after(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Op
         return Some(Flow::Run);
     };
     if g != 70 {
-        // The roughing cycle has read its contour: on after N(nf).
-        ex.go(ctx, end.next);
+        let known = ctx.modal.pos.kx && ctx.modal.pos.kz;
+        let Some(rough) = ctx.modal.rough_call.filter(|_| g != 73 && known) else {
+            // Not roughed: on after N(nf).
+            ex.go(ctx, end.next);
+            return Some(Flow::Run);
+        };
+        // G71/G72: read the contour (its blocks move the tool, not drawn), rough over it, on after N(nf).
+        let Some(start) = ctx.sequence(ns, ctx.here.offset) else {
+            ctx.diag(&msg::SEQUENCE_NOT_FOUND, p.span, args![n = ns as i64]);
+            ex.go(ctx, end.next);
+            return Some(Flow::Run);
+        };
+        let capture = Capture {
+            rough,
+            start: ctx.modal.pos.p,
+            modal: Box::new(ctx.modal.clone()),
+            points: Vec::new(),
+            line: ctx.here.line,
+            span: block.span,
+        };
+        if ex.call(ctx, CallKind::Sub, start.at, 0, block.span, macros) {
+            if let Some(f) = ex.frames.last_mut() {
+                f.until = Some(nf);
+                f.ret = end.next;
+                f.capture = Some(Box::new(capture));
+            }
+        }
         return Some(Flow::Run);
     }
     let Some(start) = ctx.sequence(ns, ctx.here.offset) else {
@@ -54,6 +79,8 @@ pub fn contour_end(ex: &mut Exec, ctx: &mut Ctx, block: &Block) -> bool {
     if last.is_none() || n.map(|n| n as u32) != last {
         return false;
     }
-    ex.return_from(ctx);
+    if let Some(c) = ex.return_from(ctx).and_then(|f| f.capture) {
+        ex.captured = Some(c);
+    }
     true
 }
