@@ -70,9 +70,9 @@ fn g71_roughs_over_its_contour_and_g70_runs_it() {
         let got: Vec<(f64, f64)> = cuts.iter().map(|m| (m.from.x / 2.0, (m.to.z * 1e6).round() / 1e6)).collect();
         assert_eq!(got, [(29.0, -44.9), (27.0, -29.9), (25.0, -29.9), (23.0, -0.7), (22.2, 0.1)], "{dialect:?}");
         // Then the cut along the shifted contour, ending at X62.4 Z-44.9, and the rapid back to A.
-        let last_rough = cycle.moves.iter().filter(|m| m.kind == MoveKind::Rough).last().unwrap();
+        let last_rough = cycle.moves.iter().rfind(|m| m.kind == MoveKind::Rough).unwrap();
         pt(last_rough.to, 62.4, -44.9);
-        let back = cycle.moves.iter().filter(|m| m.line == 5).last().unwrap();
+        let back = cycle.moves.iter().rfind(|m| m.line == 5).unwrap();
         assert_eq!(back.kind, MoveKind::Rapid);
         pt(back.to, 62.0, 2.0);
     }
