@@ -214,6 +214,10 @@ codes! {
     InsertRange = "insert-range", Warning;
     /// A pass of a thread cut at another spindle speed than its first pass.
     SpeedBetweenPasses = "speed-between-passes", Warning;
+    /// The helix asks for another shim than the holder's standard 1°.
+    Shim = "shim", Info;
+    /// The standard shim leaves the insert leaning off the helix by more than the makers' window: a flank rubs.
+    ShimRub = "shim-rub", Warning;
     /// Lead-in δ1 shorter than n·L/500 (`machine.delta1_divisor`).
     Delta1Speed = "delta1-speed", Warning;
     /// Run-out δ2 shorter than n·L/1800 (`machine.delta2_divisor`).

@@ -280,6 +280,26 @@ const CASES: &[Case] = &[
         1,
         "moves 0.1 along the axis, 18°",
     ),
+    // Lead 3 on about X30: λ = arctan(3 / (π·29.4)) ≈ 1.86°: a 2° shim (Sandvik: the nearest degree), within 1° of the standard 1°.
+    (
+        Code::Shim,
+        G,
+        &[],
+        "G00 X34 Z5\nX29.1\nG32 Z-30 F3\nG00 X34\nZ5\nX28.2\nG32 Z-30\nG00 X34\n",
+        2,
+        1,
+        "use a 2° shim",
+    ),
+    // Four starts of lead 8 on X30 (the example, about 5°): the standard 1° shim is 3.9° off: a flank rubs (Mitsubishi: 1° for 60° forms).
+    (
+        Code::ShimRub,
+        G,
+        &[],
+        "G00 X34 Z5\nG92 X29.2 Z-30 F8 L4\nX28.6\nX28.2\nG00 X100 Z100\n",
+        2,
+        1,
+        "use a 4° shim (the steepest made",
+    ),
     // An internal insert on an external thread, made for pitch 1.5 (threading.md §11: E/I, full profile pitch).
     (
         Code::InsertSide,

@@ -40,6 +40,12 @@ templates! {
     INSERT_RANGE = InsertRange:
         "the partial-profile insert {insert} (setting tool.insert) cuts pitches from {min} to {max} mm; this thread's pitch is {pitch} mm",
         "部分牙型刀片 {insert}（设置“tool.insert”）适用螺距 {min} 到 {max} mm，而这个螺纹的螺距是 {pitch} mm";
+    SHIM = Shim:
+        "helix angle {lambda}° ({hand}): use a {shim}° shim under the insert instead of the holder's standard 1° (Sandvik Coromant: the shim nearest the helix angle)",
+        "螺旋升角 {lambda}°（{hand}）：刀片下应换用 {shim}° 刀垫，而不是刀杆标配的 1° 刀垫（山特维克：选最接近螺旋升角的刀垫）";
+    SHIM_RUB = ShimRub:
+        "helix angle {lambda}° ({hand}): on the holder's standard 1° shim the insert leans {off}° off the helix, more than the {win}° the makers allow for this form, so a flank rubs; use a {shim}° shim{reach}",
+        "螺旋升角 {lambda}°（{hand}）：用刀杆标配的 1° 刀垫时刀片倾角与螺旋线相差 {off}°，超过刀具厂商对此牙型允许的 {win}°，一侧牙面会摩擦；应换用 {shim}° 刀垫{reach}";
     SPEED_BETWEEN_PASSES = SpeedBetweenPasses:
         "pass {n} (start {start}) is cut at S{s}, the thread's first pass at S{first}: the axis lags the spindle by more the faster it turns, so this pass starts elsewhere on the helix and cuts across the thread; keep S the same for every pass{shift}",
         "第 {n} 刀（第 {start} 头）的转速是 S{s}，而本螺纹第一刀是 S{first}：转速越高，进给轴滞后主轴越多，这一刀的起点落在螺旋线的别处，会把螺纹切乱；各刀应使用相同的 S{shift}";
@@ -73,6 +79,10 @@ templates! {
 }
 
 phrases! {
+    RIGHT_HAND: "right-hand thread, cut towards −Z", "右旋螺纹，向 −Z 切削";
+    LEFT_HAND: "left-hand thread, cut towards +Z: negative shims", "左旋螺纹，向 +Z 切削：用负角度刀垫";
+    SHIM_WITHIN: "", "";
+    SHIM_BEYOND: " (the steepest made: the helix is beyond the shims, −2° … 4°)", "（已是最大的刀垫：螺旋升角超出刀垫范围 −2° … 4°）";
     TURN_MAJOR: "turn this thread's major diameter", "车出这个螺纹的大径";
     TURN_MINOR: "turn this thread's minor diameter", "车出这个螺纹的小径";
     FACE_CREST: "face the crest of this face thread", "车出这个端面螺纹的牙顶端面";

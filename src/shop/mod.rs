@@ -23,6 +23,7 @@ pub mod gauge;
 pub mod insert;
 pub mod limits;
 pub mod load;
+pub mod shim;
 mod speed;
 pub mod time;
 
@@ -82,6 +83,7 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
         None => gauge::cut_pitch_diameter(t, t.pitch, ctx),
     };
     shop.helix_angle_deg = helix_angle(t, shop.pitch_diameter);
+    shim::check(t, shop.helix_angle_deg, ctx, diags);
     threads[i].shop = shop;
 }
 
