@@ -24,6 +24,7 @@ pub mod block;
 pub mod chip;
 pub mod code;
 pub mod comment;
+pub mod compare;
 pub mod controller;
 pub mod cycle;
 pub mod diagnostic;

@@ -10,6 +10,8 @@ use screwcut::num::fmt;
 use screwcut::settings::{Kind, Settings};
 use screwcut::{Code, Dialect};
 
+#[path = "screwcut/compare.rs"]
+mod compare;
 #[path = "screwcut/summary.rs"]
 mod summary;
 
@@ -64,6 +66,27 @@ enum Command {
         /// Language of the notes: en or zh.
         #[arg(long, default_value = "en", value_parser = parse_lang)]
         lang: Lang,
+    },
+    /// Plan two programs and list, pass by pass, what differs (X, Z, depth,
+    /// lead, start, infeed side, time). Exit 0 when they cut the same
+    /// passes, 1 when not, 2 on an error.
+    Compare {
+        /// The first program, or '-' for standard input.
+        a: String,
+        /// The second program.
+        b: String,
+        /// Dialect of the first program.
+        #[arg(long, short, default_value = "gsk980tdc", value_parser = parse_dialect)]
+        dialect: Dialect,
+        /// Dialect of the second program (default: the first's).
+        #[arg(long = "dialect-b", value_parser = parse_dialect)]
+        dialect_b: Option<Dialect>,
+        /// Set a parameter or setting for both programs (repeatable).
+        #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Print the comparison as JSON.
+        #[arg(long)]
+        json: bool,
     },
     /// Write a threading program: a designation (or --major and --lead), its
     /// length (or --end-z), a controller and a form.
@@ -224,6 +247,9 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json, lang } => plan(&file, dialect, &set, json, lang),
         Command::Expand { file, dialect, to, set, lang } => expand(&file, dialect, to.unwrap_or(dialect), &set, lang),
         Command::Generate(a) => generate(a),
+        Command::Compare { a, b, dialect, dialect_b, set, json } => {
+            compare_files(&a, &b, dialect, dialect_b.unwrap_or(dialect), &set, json)
+        }
         Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, transform } => {
             let (settings, text) = match input(&file, dialect, &set) {
                 Ok(v) => v,
@@ -323,6 +349,22 @@ fn expand(file: &str, dialect: Dialect, to: Dialect, set: &[String], lang: Lang)
     }
     emit(&e.program);
     ExitCode::SUCCESS
+}
+
+fn compare_files(a: &str, b: &str, da: Dialect, db: Dialect, set: &[String], json: bool) -> ExitCode {
+    let read = |file: &str, d: Dialect| input(file, d, set).map(|(s, text)| screwcut::plan(&text, &s));
+    let (pa, pb) = match (read(a, da), read(b, db)) {
+        (Ok(x), Ok(y)) => (x, y),
+        (Err(code), _) | (_, Err(code)) => return code,
+    };
+    let c = screwcut::compare::compare(&pa, &pb);
+    if json {
+        let v = serde_json::json!({ "same": c.same(), "a": a, "b": b, "comparison": c });
+        emit(&(v.to_string() + "\n"));
+    } else {
+        emit(&compare::text(&c, a, b));
+    }
+    if c.same() { ExitCode::SUCCESS } else { ExitCode::from(1) }
 }
 
 fn plan(file: &str, dialect: Dialect, set: &[String], json: bool, lang: Lang) -> ExitCode {

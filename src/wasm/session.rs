@@ -228,7 +228,8 @@ impl Session {
 
     /// The motions of the last plan, seven numbers each:
     /// `[kind, x0, z0, x1, z1, line, cw]` with kind 0 rapid, 1 feed, 2 arc,
-    /// 3 thread, 4 run-out, 5 screw-in and `cw` 1 for clockwise arcs (X as a diameter).
+    /// 3 thread, 4 run-out, 5 screw-in, 6 a roughing cut and `cw` 1 for
+    /// clockwise arcs (X as a diameter).
     pub fn moves(&self) -> Float64Array {
         let mut out = Vec::new();
         let _ = self.with_last(|p| {
@@ -242,6 +243,7 @@ impl Session {
                     Thread => 3.0,
                     Runout => 4.0,
                     ScrewIn => 5.0,
+                    Rough => 6.0,
                 };
                 let cw = m.arc.map_or(0.0, |a| if a.cw { 1.0 } else { 0.0 });
                 out.extend_from_slice(&[kind, m.from.x, m.from.z, m.to.x, m.to.z, m.line as f64, cw]);
