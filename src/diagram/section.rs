@@ -7,8 +7,7 @@
 //! a thread is internal (the stock's outside is not in the program).
 
 use super::scene::{Item, Pt, Scene, Shape, Style};
-use super::side::{arc_points, world};
-use crate::motion::{Move, MoveKind};
+use crate::motion::{Move, MoveKind, Point, arc_points};
 use crate::plan::Plan;
 
 /// Most points the filled section takes (a huge program's outline is not filled past them).
@@ -47,6 +46,11 @@ pub fn pieces(plan: &Plan) -> Vec<Item> {
     }
     close(&mut chain, &mut out);
     out
+}
+
+/// The drawing's point of a plan point: (Z, radius).
+fn world(p: Point) -> Pt {
+    [p.z, p.x / 2.0]
 }
 
 /// Adds the points of feed `m` after its start.
