@@ -214,6 +214,8 @@ codes! {
     InsertRange = "insert-range", Warning;
     /// A pass of a thread cut at another spindle speed than its first pass.
     SpeedBetweenPasses = "speed-between-passes", Warning;
+    /// The tool's leading flank cuts into a shoulder at the end of a pass.
+    ToolShoulder = "tool-shoulder", Warning;
     /// The helix asks for another shim than the holder's standard 1°.
     Shim = "shim", Info;
     /// The standard shim leaves the insert leaning off the helix by more than the makers' window: a flank rubs.

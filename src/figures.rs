@@ -78,6 +78,32 @@ pub struct Shop {
     pub chip: Vec<ChipLoad>,
     /// The thread check against its designation, when one is named.
     pub gauge: Option<Gauge>,
+    /// Where the tool comes nearest a shoulder at the end of the cut, when one stands there.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shoulder: Option<Shoulder>,
+}
+
+/// The tool against a shoulder the program turned beyond the thread's end:
+/// where its leading flank comes nearest the shoulder's face.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Shoulder {
+    /// The face's Z.
+    #[serde(serialize_with = "crate::num::ser_round")]
+    pub z: f64,
+    /// The face's edge the flank must clear: its outer diameter (an internal thread's: its inner one).
+    #[serde(serialize_with = "crate::num::ser_round")]
+    pub edge_x: f64,
+    /// The pass (0-based) whose tool comes nearest.
+    pub pass: usize,
+    /// The tool's tip there: X (diameter) and Z.
+    #[serde(serialize_with = "crate::num::ser_round_pair")]
+    pub tip: [f64; 2],
+    /// How far the flank stays clear of the face at its edge, along Z (negative: that far into it).
+    #[serde(serialize_with = "crate::num::ser_round")]
+    pub clearance: f64,
+    /// The distance the tip must stay from the face for the flank to clear it, along Z.
+    #[serde(serialize_with = "crate::num::ser_round")]
+    pub needed: f64,
 }
 
 fn ser_round_vec<S: serde::Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {

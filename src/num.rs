@@ -55,6 +55,15 @@ pub fn fmt(v: f64) -> String {
     if s == "-0" { "0".into() } else { s.to_string() }
 }
 
+/// Serialises a pair of numbers rounded for output.
+pub fn ser_round_pair<S: Serializer>(v: &[f64; 2], s: S) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeTuple;
+    let mut t = s.serialize_tuple(2)?;
+    t.serialize_element(&round_out(v[0]))?;
+    t.serialize_element(&round_out(v[1]))?;
+    t.end()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

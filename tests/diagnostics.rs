@@ -280,6 +280,16 @@ const CASES: &[Case] = &[
         1,
         "moves 0.1 along the axis, 18°",
     ),
+    // M48x2 ending 0.3 before a shoulder turned up to X56: a 60° flank at the root (r 22.7) needs (28 − 22.7)·tan 30° = 3.06.
+    (
+        Code::ToolShoulder,
+        G,
+        &[],
+        "G00 X60 Z2\nG01 X48 F0.2\nZ-40\nX56\nZ-60\nG00 X60\nZ5\nX45.4\nG32 Z-39.7 F2\nG00 X60\n",
+        9,
+        1,
+        "cuts 2.76 into the shoulder at Z-40",
+    ),
     // Lead 3 on about X30: λ = arctan(3 / (π·29.4)) ≈ 1.86°: a 2° shim (Sandvik: the nearest degree), within 1° of the standard 1°.
     (
         Code::Shim,

@@ -260,11 +260,13 @@ pub enum Style {
     Break,
     /// A roughing cut of a stock-removal cycle (drawn faintly).
     Roughing,
+    /// Where the tool cuts into the part (a shoulder), in red.
+    Collision,
 }
 
 impl Style {
     /// Every style, in the order of their packed codes.
-    pub const ALL: [Style; 26] = [
+    pub const ALL: [Style; 27] = [
         Style::Axis,
         Style::Outline,
         Style::Crest,
@@ -291,6 +293,7 @@ impl Style {
         Style::Diameter,
         Style::Break,
         Style::Roughing,
+        Style::Collision,
     ];
 
     /// The name renderers know the style by (as serialised).
@@ -322,6 +325,7 @@ impl Style {
             Style::Diameter => "diameter",
             Style::Break => "break",
             Style::Roughing => "roughing",
+            Style::Collision => "collision",
         }
     }
 

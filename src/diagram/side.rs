@@ -360,6 +360,9 @@ pub fn thread_items(
     front: &mut Vec<(Item, bool)>,
 ) {
     let Some(band) = Band::of(t) else { return };
+    if let Some(sh) = &t.shop.shoulder {
+        front.extend(shoulder_items(ti, t, sh).into_iter().map(|i| (i, true)));
+    }
     let lines: Vec<u32> = vec![t.line];
     let own = |shape: Shape, style: Style| Item::new(shape, style).lines(lines.clone()).of(ti, None);
     let (lo, hi) = (band.lo, band.hi);
@@ -458,4 +461,32 @@ pub fn thread_items(
             false,
         ));
     }
+}
+
+/// The tool at the pass that comes nearest a shoulder: its outline (tip and
+/// flanks up to the shoulder's edge) and, where it cuts into the shoulder,
+/// the face it cuts in red with the depth; else how far it clears it.
+fn shoulder_items(ti: usize, t: &Thread, sh: &crate::figures::Shoulder) -> Vec<Item> {
+    let p0 = &t.passes[0];
+    let sense = (p0.to.z - p0.from.z).signum();
+    let out: f64 = if t.internal { -1.0 } else { 1.0 };
+    let tan = (t.tool_angle / 2.0).to_radians().tan();
+    let (tz, tr, edge) = (sh.tip[1], sh.tip[0] / 2.0, sh.edge_x / 2.0);
+    let reach = ((edge - tr) * tan).abs();
+    let lines: Vec<u32> = t.passes.get(sh.pass).map(|p| p.drawn_lines().collect()).unwrap_or_default();
+    let own = |shape: Shape, style: Style| Item::new(shape, style).lines(lines.clone()).of(ti, Some(sh.pass));
+    let tool = vec![[tz + sense * reach, edge], [tz, tr], [tz - sense * reach, edge]];
+    let mut out_items = vec![own(Shape::Polyline { points: tool }, Style::Tool)];
+    let label = if sh.clearance < 0.0 {
+        let ahead = ((sh.z - tz) * sense).max(0.0);
+        let cross = tr + out * ahead / tan;
+        out_items.push(own(line([sh.z, cross], [sh.z, edge]), Style::Collision));
+        Label::new("shoulder_into", num(-sh.clearance))
+    } else {
+        Label::new("shoulder_clear", num(sh.clearance))
+    };
+    let style = if sh.clearance < 0.0 { Style::Collision } else { Style::Note };
+    let text = Shape::Text { at: [sh.z, edge], label, anchor: Anchor::Middle, dx: 0.0, dy: 14.0 * out };
+    out_items.push(own(text, style));
+    out_items
 }

@@ -35,6 +35,8 @@ fn rank(key: &str) -> i32 {
         | "infeed_programmed" | "square_tool" => 10,
         "delta1" | "delta2" => 11,
         "one_rev" | "axial_offsets" | "radial_break" => 12,
+        "shoulder_into" => 3,
+        "shoulder_clear" => 13,
         "start_angle" => 13,
         "" => 14,
         "pass_depth" => 15,

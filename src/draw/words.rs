@@ -36,6 +36,8 @@ pub fn english(key: &str) -> Option<&'static str> {
         "detail_starts" => "one start drawn, the others cut the same path (1/starts): {}",
         "detail_starts_passes" => "one start and every n-th pass drawn (1/starts n/all): {}",
         "radial_break" => "radial scale compressed beyond this line",
+        "shoulder_into" => "the tool cuts {} into the shoulder",
+        "shoulder_clear" => "the tool clears the shoulder by {}",
         _ => return None,
     })
 }
@@ -68,13 +70,15 @@ pub fn chinese(key: &str) -> Option<&'static str> {
         "detail_starts" => "只画一头，其余各头路径相同(1/头数)：{}",
         "detail_starts_passes" => "只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}",
         "radial_break" => "此线以外径向比例压缩",
+        "shoulder_into" => "刀具切入台阶 {}",
+        "shoulder_clear" => "刀具离台阶 {}",
         // δ1, δ2 and the bare values read the same in both languages.
         key => return english(key),
     })
 }
 
 /// The label keys a scene uses.
-pub const LABEL_KEYS: [&str; 29] = [
+pub const LABEL_KEYS: [&str; 31] = [
     "dia_major",
     "dia_minor",
     "lead",
@@ -104,6 +108,8 @@ pub const LABEL_KEYS: [&str; 29] = [
     "detail_starts",
     "detail_starts_passes",
     "radial_break",
+    "shoulder_into",
+    "shoulder_clear",
 ];
 
 /// The text of a label in `lang`: its key's template with `value` in place

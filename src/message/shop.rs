@@ -40,6 +40,9 @@ templates! {
     INSERT_RANGE = InsertRange:
         "the partial-profile insert {insert} (setting tool.insert) cuts pitches from {min} to {max} mm; this thread's pitch is {pitch} mm",
         "部分牙型刀片 {insert}（设置“tool.insert”）适用螺距 {min} 到 {max} mm，而这个螺纹的螺距是 {pitch} mm";
+    TOOL_SHOULDER = ToolShoulder:
+        "pass {n} (start {start}) ends with the tool's tip at X{tipx} Z{tipz}: its leading flank ({angle}° form) cuts {into} into the shoulder at Z{z} (up to X{x}); the tip must stay {need} from the shoulder along Z: end the thread earlier, or turn a relief groove",
+        "第 {n} 刀（第 {start} 头）结束时刀尖在 X{tipx} Z{tipz}：刀具前侧刃（{angle}° 牙型）切入 Z{z} 处的台阶 {into}（台阶至 X{x}）；刀尖沿 Z 向须离台阶 {need}：应提前结束螺纹，或车出退刀槽";
     SHIM = Shim:
         "helix angle {lambda}° ({hand}): use a {shim}° shim under the insert instead of the holder's standard 1° (Sandvik Coromant: the shim nearest the helix angle)",
         "螺旋升角 {lambda}°（{hand}）：刀片下应换用 {shim}° 刀垫，而不是刀杆标配的 1° 刀垫（山特维克：选最接近螺旋升角的刀垫）";

@@ -24,6 +24,7 @@ pub mod insert;
 pub mod limits;
 pub mod load;
 pub mod shim;
+pub mod shoulder;
 mod speed;
 pub mod time;
 
@@ -84,6 +85,7 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
     };
     shop.helix_angle_deg = helix_angle(t, shop.pitch_diameter);
     shim::check(t, shop.helix_angle_deg, ctx, diags);
+    shop.shoulder = shoulder::check(threads, i, ctx, diags);
     threads[i].shop = shop;
 }
 

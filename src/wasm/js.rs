@@ -168,6 +168,7 @@ fn thread_figures(s: &Shop) -> Shop {
         helix_angle_deg,
         chip: _,
         gauge,
+        shoulder,
     } = s;
     Shop {
         cut_time_s: *cut_time_s,
@@ -183,6 +184,7 @@ fn thread_figures(s: &Shop) -> Shop {
         clearance_source: *clearance_source,
         pitch_diameter: *pitch_diameter,
         helix_angle_deg: *helix_angle_deg,
+        shoulder: *shoulder,
         chip: Vec::new(),
         gauge: gauge.clone(),
     }

@@ -149,7 +149,7 @@ pub fn thread_key(t: &Thread) -> u64 {
         passes,
         depth_dir,
         first_move: _, // not drawn
-        shop: _,       // not drawn
+        shop,          // not drawn but for the shoulder
     } = t;
     let mut h = KeyHasher::default();
     h.write_u32(*line);
@@ -172,6 +172,7 @@ pub fn thread_key(t: &Thread) -> u64 {
     h.write_usize(passes.len());
     passes.iter().for_each(|p| hash_pass(&mut h, p));
     f(&mut h, *depth_dir);
+    hash_shoulder(&mut h, shop.shoulder.as_ref());
     h.finish()
 }
 
@@ -204,6 +205,7 @@ pub fn shop_key(s: &Shop) -> u64 {
         helix_angle_deg,
         chip,
         gauge,
+        shoulder,
     } = s;
     let mut h = KeyHasher::default();
     for v in [
@@ -235,7 +237,20 @@ pub fn shop_key(s: &Shop) -> u64 {
         }
         None => h.write_u8(0),
     }
+    hash_shoulder(&mut h, shoulder.as_ref());
     h.finish()
+}
+
+/// A shoulder clash (drawn in the side section: in the thread's key too).
+fn hash_shoulder(h: &mut KeyHasher, s: Option<&crate::figures::Shoulder>) {
+    match s {
+        Some(s) => {
+            h.write_u8(1);
+            [s.z, s.edge_x, s.tip[0], s.tip[1], s.clearance, s.needed].into_iter().for_each(|v| f(h, v));
+            h.write_usize(s.pass);
+        }
+        None => h.write_u8(0),
+    }
 }
 
 fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
