@@ -216,6 +216,8 @@ codes! {
     SpeedBetweenPasses = "speed-between-passes", Warning;
     /// The tool's leading flank cuts into a shoulder at the end of a pass.
     ToolShoulder = "tool-shoulder", Warning;
+    /// A pass starts inside the turned part: its infeed plunges into it in rapid.
+    ApproachIntoPart = "approach-into-part", Warning;
     /// The helix asks for another shim than the holder's standard 1°.
     Shim = "shim", Info;
     /// The standard shim leaves the insert leaning off the helix by more than the makers' window: a flank rubs.

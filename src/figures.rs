@@ -81,6 +81,22 @@ pub struct Shop {
     /// Where the tool comes nearest a shoulder at the end of the cut, when one stands there.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shoulder: Option<Shoulder>,
+    /// The insert (setting `tool.insert`) as the tooth section draws it, when one is given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub insert: Option<InsertForm>,
+}
+
+/// The insert's form where the thread is cut: a full profile forms the
+/// standard's root (its nose radius) and crest; a partial one only the root.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct InsertForm {
+    /// The designation as the setting gives it.
+    pub name: String,
+    /// A full profile (root and crest), else a partial one (root only).
+    pub full: bool,
+    /// The nose radius, program units (0: not known, drawn sharp).
+    #[serde(serialize_with = "crate::num::ser_round")]
+    pub nose_radius: f64,
 }
 
 /// The tool against a shoulder the program turned beyond the thread's end:

@@ -290,6 +290,16 @@ const CASES: &[Case] = &[
         1,
         "cuts 2.76 into the shoulder at Z-40",
     ),
+    // A thread starting at Z-5, inside the work turned to X48 from Z2: the infeed at X47.1 plunges into it.
+    (
+        Code::ApproachIntoPart,
+        G,
+        &[],
+        "G00 X60 Z2\nG01 X48 F0.2\nZ-40\nG00 X60\nZ-5\nX47.1\nG32 Z-35 F2\nG00 X60\n",
+        7,
+        1,
+        "where the program turned the part to X48",
+    ),
     // Lead 3 on about X30: λ = arctan(3 / (π·29.4)) ≈ 1.86°: a 2° shim (Sandvik: the nearest degree), within 1° of the standard 1°.
     (
         Code::Shim,

@@ -36,3 +36,59 @@ fn a_thread_ending_by_a_shoulder_cuts_into_it_unless_the_flank_clears() {
     let o1006 = plan_with(include_str!("../examples/o1006.nc"), Dialect::Gsk980tdc, &[]);
     assert!(o1006.threads[0].shop.shoulder.is_none());
 }
+
+/// The insert in the tooth section (setting `tool.insert`): a full profile
+/// forms the standard's root — its nose, r = 0.125·P = 0.25 for P 2
+/// (ISO 965-1's smallest root radius), tangent to the 60° flanks — and the
+/// crest (its edges P/8 along the crest line); a partial profile only the
+/// root, with its maker's nose (setting `tool.nose_radius`).
+#[test]
+fn the_tooth_section_draws_the_insert() {
+    use screwcut::diagram::{Shape, Style, tooth};
+    let o1006 = include_str!("../examples/o1006.nc");
+    let full = plan_with(o1006, Dialect::Gsk980tdc, &["tool.insert=16ER 2.0 ISO"]);
+    let form = full.threads[0].shop.insert.clone().expect("the insert");
+    assert!(form.full && (form.nose_radius - 0.25).abs() < 1e-12, "{form:?}");
+    let scene = tooth(&full, 0, 1).unwrap();
+    let last = 4; // the finishing pass, depth 1.3
+    let tools: Vec<_> = scene.items.iter().filter(|i| i.style == Style::Tool && i.pass == Some(last)).collect();
+    // The V of the pass, its tip marker, the insert's outline and its two crest edges.
+    assert_eq!(tools.len(), 5, "{tools:#?}");
+    let Shape::Polyline { points } = &tools[2].shape else { panic!("the insert's outline") };
+    // The nose's lowest point: r/sin 30° − r = 0.25 above the V's apex at −1.3.
+    let lowest = points.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+    assert!((lowest - (-1.3 + 0.25)).abs() < 1e-9, "{lowest}");
+    let notes: Vec<_> = scene
+        .items
+        .iter()
+        .filter_map(|i| match &i.shape {
+            Shape::Text { label, .. } if label.key == "insert_full" => Some(label.value.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(notes, ["16ER 2.0 ISO r 0.25"]);
+    let partial = plan_with(o1006, Dialect::Gsk980tdc, &["tool.insert=16ER AG60", "tool.nose_radius=0.2"]);
+    let form = partial.threads[0].shop.insert.clone().unwrap();
+    assert!(!form.full && (form.nose_radius - 0.2).abs() < 1e-12);
+    let scene = tooth(&partial, 0, 1).unwrap();
+    let tools = scene.items.iter().filter(|i| i.style == Style::Tool && i.pass == Some(last)).count();
+    assert_eq!(tools, 3, "the V, the marker and the insert: no crest edges");
+    // No insert given: nothing drawn of one.
+    let none = plan_with(o1006, Dialect::Gsk980tdc, &[]);
+    assert!(none.threads[0].shop.insert.is_none());
+}
+
+/// The approach (`approach-into-part`): a thread whose passes start inside
+/// the turned part plunges into it in rapid.
+#[test]
+fn a_thread_starting_inside_the_part_plunges_into_it() {
+    let inside =
+        "G00 X60 Z2\nG01 X48 F0.2\nZ-40\nG00 X60\nZ-5\nX47.1\nG32 Z-35 F2\nG00 X60\nZ-5\nX46.5\nG32 Z-35\nG00 X60\n";
+    let plan = plan_with(inside, Dialect::Gsk980tdc, &[]);
+    let d = plan.with_code(Code::ApproachIntoPart).collect::<Vec<_>>();
+    assert_eq!(d.len(), 1, "once per thread");
+    assert_eq!(d[0].line, 7);
+    // Starting before the work (Z5): clear.
+    let outside = inside.replace("Z-5", "Z5");
+    assert!(plan_with(&outside, Dialect::Gsk980tdc, &[]).with_code(Code::ApproachIntoPart).next().is_none());
+}

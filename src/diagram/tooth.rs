@@ -156,6 +156,11 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
             scene.push(of(Item::new(text, Style::DepthTick)), false);
         }
     }
+    if let (Some(form), Some(&(index, last))) = (&t.shop.insert, drawn.last()) {
+        for item in insert_items(form, last, tool, pitch, (top, bottom, l), flip) {
+            scene.push(item.lines(last.drawn_lines()).of(ti, Some(index)), false);
+        }
+    }
     infeed_arrows(&mut scene, t, &passes, tool, h, top, flip, ti);
     // Dimensions: height at the left, pitch below the material.
     let dim = |a: Pt, b: Pt, offset: f64, key: &'static str, v: f64| Shape::Dim {
@@ -261,4 +266,51 @@ fn infeed_arrows(
             scene.push(Item::new(text, Style::Infeed).lines([t.line]).of(ti, None), true);
         }
     }
+}
+
+/// The insert at pass `p` (the last drawn): its nose, tangent to the flanks
+/// of the tool's V, its flanks up to the top of the drawing and, for a full
+/// profile, the edges that form the crest (a basic crest flat, P/8, either
+/// side); and a note naming it.
+fn insert_items(
+    form: &crate::figures::InsertForm,
+    p: &Pass,
+    tool: Tool,
+    pitch: f64,
+    (top, bottom, l): (f64, f64, f64),
+    flip: f64,
+) -> Vec<Item> {
+    let pt = |u: f64, w: f64| -> Pt { [u, w * flip] };
+    let (d, s) = (p.depth, p.shift);
+    let theta = tool.t.atan(); // half the tool angle
+    let r = form.nose_radius.max(0.0);
+    // The nose's centre lies r / sin θ above the V's apex; it meets the flanks r·cos θ either side.
+    let cy = -d + r / theta.sin();
+    let mut outline = vec![pt(s - tool.flat - (top + d) * tool.t, top)];
+    if r > 0.0 {
+        // The nose from the left flank's tangent point (at π + θ) round the bottom to the right one (2π − θ).
+        let n = 16;
+        for k in 0..=n {
+            let phi = std::f64::consts::PI + theta + (std::f64::consts::PI - 2.0 * theta) * f64::from(k) / f64::from(n);
+            outline.push(pt(s + r * phi.cos(), cy + r * phi.sin()));
+        }
+    } else {
+        outline.push(pt(s, -d));
+    }
+    outline.push(pt(s + tool.flat + (top + d) * tool.t, top));
+    let mut items = vec![Item::new(Shape::Polyline { points: outline }, Style::Tool)];
+    if form.full {
+        let w = d * tool.t; // the flanks cross the crest line this far either side
+        for side in [-1.0, 1.0] {
+            let from = s + side * (tool.flat + w);
+            let ear = vec![pt(from, 0.0), pt(from + side * pitch / 8.0, 0.0)];
+            items.push(Item::new(Shape::Polyline { points: ear }, Style::Tool));
+        }
+    }
+    let key = if form.full { "insert_full" } else { "insert_partial" };
+    let label = Label::new(key, format!("{} r {}", form.name, num(r)));
+    // Below the material at the right, a row under the pitch dimension and the tool angle's note.
+    let at = pt(l, bottom);
+    items.push(Item::new(Shape::Text { at, label, anchor: Anchor::End, dx: 0.0, dy: -52.0 * flip }, Style::Note));
+    items
 }

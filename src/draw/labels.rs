@@ -37,6 +37,7 @@ fn rank(key: &str) -> i32 {
         "one_rev" | "axial_offsets" | "radial_break" => 12,
         "shoulder_into" => 3,
         "shoulder_clear" => 13,
+        "insert_full" | "insert_partial" => 10,
         "start_angle" => 13,
         "" => 14,
         "pass_depth" => 15,

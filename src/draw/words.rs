@@ -37,6 +37,8 @@ pub fn english(key: &str) -> Option<&'static str> {
         "detail_starts_passes" => "one start and every n-th pass drawn (1/starts n/all): {}",
         "radial_break" => "radial scale compressed beyond this line",
         "shoulder_into" => "the tool cuts {} into the shoulder",
+        "insert_full" => "insert {} full profile",
+        "insert_partial" => "insert {} partial profile",
         "shoulder_clear" => "the tool clears the shoulder by {}",
         _ => return None,
     })
@@ -71,6 +73,8 @@ pub fn chinese(key: &str) -> Option<&'static str> {
         "detail_starts_passes" => "只画一头、每隔 n 次走刀画一次(1/头数 n/总数)：{}",
         "radial_break" => "此线以外径向比例压缩",
         "shoulder_into" => "刀具切入台阶 {}",
+        "insert_full" => "全牙型刀片 {}",
+        "insert_partial" => "非全牙型刀片 {}",
         "shoulder_clear" => "刀具离台阶 {}",
         // δ1, δ2 and the bare values read the same in both languages.
         key => return english(key),
@@ -78,7 +82,7 @@ pub fn chinese(key: &str) -> Option<&'static str> {
 }
 
 /// The label keys a scene uses.
-pub const LABEL_KEYS: [&str; 31] = [
+pub const LABEL_KEYS: [&str; 33] = [
     "dia_major",
     "dia_minor",
     "lead",
@@ -110,6 +114,8 @@ pub const LABEL_KEYS: [&str; 31] = [
     "radial_break",
     "shoulder_into",
     "shoulder_clear",
+    "insert_full",
+    "insert_partial",
 ];
 
 /// The text of a label in `lang`: its key's template with `value` in place

@@ -43,6 +43,9 @@ templates! {
     TOOL_SHOULDER = ToolShoulder:
         "pass {n} (start {start}) ends with the tool's tip at X{tipx} Z{tipz}: its leading flank ({angle}° form) cuts {into} into the shoulder at Z{z} (up to X{x}); the tip must stay {need} from the shoulder along Z: end the thread earlier, or turn a relief groove",
         "第 {n} 刀（第 {start} 头）结束时刀尖在 X{tipx} Z{tipz}：刀具前侧刃（{angle}° 牙型）切入 Z{z} 处的台阶 {into}（台阶至 X{x}）；刀尖沿 Z 向须离台阶 {need}：应提前结束螺纹，或车出退刀槽";
+    APPROACH_INTO_PART = ApproachIntoPart:
+        "pass {n} (start {start}) starts its cut at X{x} Z{z}, where the program turned the part to X{part}: the infeed plunges into the part in rapid; start the thread before the work (a lead-in δ1)",
+        "第 {n} 刀（第 {start} 头）在 X{x} Z{z} 开始切削，而程序在此处已把工件车到 X{part}：快速进刀会扎入工件；螺纹应从工件之外开始（留升速进刀段 δ1）";
     SHIM = Shim:
         "helix angle {lambda}° ({hand}): use a {shim}° shim under the insert instead of the holder's standard 1° (Sandvik Coromant: the shim nearest the helix angle)",
         "螺旋升角 {lambda}°（{hand}）：刀片下应换用 {shim}° 刀垫，而不是刀杆标配的 1° 刀垫（山特维克：选最接近螺旋升角的刀垫）";

@@ -41,21 +41,7 @@ struct Tool {
     r: f64,
 }
 
-/// The nose radius (× P) of a full-profile insert for an external thread,
-/// taken when the tool is not known: ISO 965-1's smallest root radius of an
-/// external thread, 0.125·P (the basic profile allows up to H/6 = 0.144·P).
-pub const FULL_PROFILE_RADIUS: f64 = 0.125;
-
-/// The same for an internal thread, whose root radius ISO 965-1 leaves
-/// open: the largest nose that stays within ISO 68-1's basic profile, whose
-/// root flat lies H/8 inside the sharp V — r·(1/sin 30° − 1) = H/8, so
-/// r = H/8 = √3/16·P = 0.108·P.
-pub const FULL_PROFILE_RADIUS_INTERNAL: f64 = 0.108_253_175_473_054_83;
-
-/// The nose radius (program units) taken for pitch `p` when the tool is not known.
-pub fn assumed_nose_radius(p: f64, internal: bool) -> f64 {
-    p * if internal { FULL_PROFILE_RADIUS_INTERNAL } else { FULL_PROFILE_RADIUS }
-}
+pub use super::insert::{FULL_PROFILE_RADIUS, FULL_PROFILE_RADIUS_INTERNAL, assumed_nose_radius};
 
 impl Tool {
     /// The thread's tool for pitch `pitch`, and whether its nose radius was

@@ -76,6 +76,7 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
     let t = &threads[i];
     speed::check(t, ctx, diags);
     insert::check(t, ctx, diags);
+    shop.insert = insert::form(t, ctx);
     shop.chip = load::chip_loads(t, ctx, diags);
     let lower = i.checked_sub(1).map(|p| threads[p].end_line);
     shop.gauge = gauge::check(t, lower, ctx, diags);
@@ -86,6 +87,7 @@ pub fn finish_thread(threads: &mut [Thread], i: usize, ctx: &Context, diags: &mu
     shop.helix_angle_deg = helix_angle(t, shop.pitch_diameter);
     shim::check(t, shop.helix_angle_deg, ctx, diags);
     shop.shoulder = shoulder::check(threads, i, ctx, diags);
+    shoulder::approach(threads, i, ctx, diags);
     threads[i].shop = shop;
 }
 

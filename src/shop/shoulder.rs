@@ -112,3 +112,40 @@ pub fn check(threads: &[Thread], i: usize, ctx: &Context, diags: &mut Diagnostic
     }
     Some(b)
 }
+
+/// The approach: a pass whose cut starts where the program turned the part
+/// to a diameter beyond the pass's (above it; an internal thread's: inside
+/// it) plunges into the part in rapid at the start. Warned once per thread,
+/// at its first such pass.
+pub fn approach(threads: &[Thread], i: usize, ctx: &Context, diags: &mut Diagnostics) {
+    let t = &threads[i];
+    if t.long_axis != Axis::Z {
+        return;
+    }
+    let lo = if i == 0 { 0 } else { threads[i - 1].first_move };
+    let hi = t.first_move.min(ctx.moves.len());
+    let out = if t.internal { -1.0 } else { 1.0 };
+    let turned = |z: f64| -> Option<f64> {
+        ctx.moves[lo.min(hi)..hi]
+            .iter()
+            .filter(|m| {
+                m.kind == MoveKind::Feed && (m.to.x - m.from.x).abs() < 1e-9 && (m.to.z - m.from.z).abs() > 1e-9
+            })
+            .filter(|m| z > m.from.z.min(m.to.z) + 1e-9 && z < m.from.z.max(m.to.z) - 1e-9)
+            .map(|m| m.to.x)
+            .reduce(|a, b| if (b - a) * out > 0.0 { b } else { a })
+    };
+    for p in &t.passes {
+        let start = p.screw_in_from.unwrap_or(p.from);
+        let Some(part) = turned(start.z) else { continue };
+        if (part - start.x) * out > 1e-6 {
+            let span = ctx.moves.get(p.moves.cut.start).map_or_else(|| (ctx.spans)(t.line), |m| m.span);
+            diags.push(
+                &msg::APPROACH_INTO_PART,
+                span,
+                args![n = p.index, start = p.start, z = start.z, x = start.x, part],
+            );
+            return;
+        }
+    }
+}

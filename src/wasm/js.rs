@@ -169,6 +169,7 @@ fn thread_figures(s: &Shop) -> Shop {
         chip: _,
         gauge,
         shoulder,
+        insert,
     } = s;
     Shop {
         cut_time_s: *cut_time_s,
@@ -185,6 +186,7 @@ fn thread_figures(s: &Shop) -> Shop {
         pitch_diameter: *pitch_diameter,
         helix_angle_deg: *helix_angle_deg,
         shoulder: *shoulder,
+        insert: insert.clone(),
         chip: Vec::new(),
         gauge: gauge.clone(),
     }

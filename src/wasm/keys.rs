@@ -206,6 +206,7 @@ pub fn shop_key(s: &Shop) -> u64 {
         chip,
         gauge,
         shoulder,
+        insert,
     } = s;
     let mut h = KeyHasher::default();
     for v in [
@@ -238,6 +239,15 @@ pub fn shop_key(s: &Shop) -> u64 {
         None => h.write_u8(0),
     }
     hash_shoulder(&mut h, shoulder.as_ref());
+    match insert {
+        Some(i) => {
+            h.write_u8(1);
+            i.name.hash(&mut h);
+            h.write_u8(u8::from(i.full));
+            f(&mut h, i.nose_radius);
+        }
+        None => h.write_u8(0),
+    }
     h.finish()
 }
 
