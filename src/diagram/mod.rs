@@ -14,6 +14,7 @@
 
 pub mod band;
 pub mod detail;
+pub mod overlay;
 pub mod radial;
 pub mod scene;
 pub mod section;

@@ -262,11 +262,13 @@ pub enum Style {
     Roughing,
     /// Where the tool cuts into the part (a shoulder), in red.
     Collision,
+    /// Another program's passes laid over these (Compare with…).
+    Compare,
 }
 
 impl Style {
     /// Every style, in the order of their packed codes.
-    pub const ALL: [Style; 27] = [
+    pub const ALL: [Style; 28] = [
         Style::Axis,
         Style::Outline,
         Style::Crest,
@@ -294,6 +296,7 @@ impl Style {
         Style::Break,
         Style::Roughing,
         Style::Collision,
+        Style::Compare,
     ];
 
     /// The name renderers know the style by (as serialised).
@@ -326,6 +329,7 @@ impl Style {
             Style::Break => "break",
             Style::Roughing => "roughing",
             Style::Collision => "collision",
+            Style::Compare => "compare",
         }
     }
 

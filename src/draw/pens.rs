@@ -54,6 +54,7 @@ fn def(style: Style) -> Def {
         Style::Circle => line("#1f2937", 1.5, &[]),
         Style::Start => Def { text: Some("#1e3a8a"), ..line("#2563eb", 1.6, &[]) },
         Style::Ruler => line("#374151", 1.2, &[]),
+        Style::Compare => Def { alpha: Some(0.9), ..line("#f97316", 1.6, &[6.0, 3.0]) },
         Style::Collision => Def { text: Some("#b91c1c"), ..line("#dc2626", 3.0, &[]) },
         Style::Roughing => Def { alpha: Some(0.8), ..line("#a5b4c8", 0.8, &[]) },
         Style::Break => Def { text: Some("#4b5563"), ..line("#6b7280", 1.0, &[]) },

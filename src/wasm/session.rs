@@ -28,7 +28,7 @@ use crate::planner::Planner;
 
 /// What a session keeps between calls.
 pub(super) struct State {
-    planner: Planner,
+    pub(super) planner: Planner,
     side: SideMemo,
     threads: ThreadsSent,
     /// The scenes the views show (the last good drawing's policy).
@@ -37,6 +37,8 @@ pub(super) struct State {
     pub(super) thread: usize,
     /// Plans made so far (each plan's number).
     plans: u64,
+    /// Another program compared with this one (`Session::compare`): its plan and number.
+    pub(super) compare: Option<(Plan, u64)>,
 }
 
 /// A planning session of one view (see the module documentation).
@@ -109,6 +111,7 @@ impl Session {
                 shown: Shown::default(),
                 thread: 0,
                 plans: 0,
+                compare: None,
             },
         };
         session.planner.plan(text);
@@ -117,7 +120,7 @@ impl Session {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
         session.plans += 1;
-        let State { planner, side, threads, shown, thread: chosen, plans } = &mut session;
+        let State { planner, side, threads, shown, thread: chosen, plans, compare } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {
@@ -133,8 +136,15 @@ impl Session {
                 };
                 let drawable = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
                 shown.planned(scenes, drawable, plan.has_alarm(), fresh, keep);
+                let compared = compare.as_ref().map(|(b, id)| {
+                    shown.set_overlay(Some((*id, super::views::overlay_items(b, *chosen))));
+                    crate::compare::compare(plan, b)
+                });
                 answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(
                     |o| {
+                        if let Some(c) = &compared {
+                            set(&o, "comparison", &super::views::comparison_js(c));
+                        }
                         set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
                         set(&o, "stale", &shown.stale().into());
                         set(&o, "plan", &(*plans as f64).into());
@@ -192,6 +202,9 @@ impl Session {
                     st.thread = picked.unwrap_or(0);
                     let (tooth, starts) = thread_scenes_of(plan, picked, start);
                     st.shown.select(tooth.0, starts.0, [tooth.1, starts.1]);
+                    if let Some((b, id)) = &st.compare {
+                        st.shown.set_overlay(Some((*id, super::views::overlay_items(b, st.thread))));
+                    }
                     let o = Object::new();
                     let r = thread_parts(&o, plan, &keys, picked, &Known(Vec::new()));
                     set(&o, "shown", &Float64Array::from(&st.shown.keys()[..]).into());
@@ -260,6 +273,17 @@ fn json_value<T: serde::Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
 }
 
 impl Session {
+    /// Runs `f` on the session's state, changing it; an error when nothing was planned yet.
+    pub(super) fn with_state_mut<R>(&self, f: impl FnOnce(&mut State) -> Result<R, JsValue>) -> Result<R, JsValue> {
+        let mut state = self.state.take();
+        let out = match state.as_mut() {
+            Some(s) => f(s),
+            None => Err(err("nothing planned yet")),
+        };
+        self.state.set(state);
+        out
+    }
+
     /// Runs `f` on the session's state; an error when nothing was planned yet.
     pub(super) fn with_state<R>(&self, f: impl FnOnce(&State) -> Result<R, JsValue>) -> Result<R, JsValue> {
         let state = self.state.take();

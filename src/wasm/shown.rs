@@ -8,7 +8,8 @@
 
 use std::rc::Rc;
 
-use crate::diagram::scene::Scene;
+use super::keys::{combine, js_key};
+use crate::diagram::scene::{Item, Scene};
 
 /// The three views.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,6 +52,10 @@ pub struct Shown {
     candidate: Option<Scenes>,
     good: Option<Scenes>,
     stale: bool,
+    /// Another program's passes laid over the side and tooth sections, with its number.
+    overlay: Option<(u64, Rc<[Vec<Item>; 2]>)>,
+    /// The side and tooth scenes shown with the overlay.
+    merged: [Option<Rc<Scene>>; 2],
 }
 
 impl Shown {
@@ -72,6 +77,29 @@ impl Shown {
         if !self.stale && drawable {
             self.candidate = Some(self.current.clone());
         }
+        self.merge();
+    }
+
+    /// Lays another program's passes (`items` of its side and tooth sections, numbered `id`) over the drawings; none: takes them off.
+    pub fn set_overlay(&mut self, overlay: Option<(u64, [Vec<Item>; 2])>) {
+        self.overlay = overlay.map(|(id, items)| (id, Rc::new(items)));
+        self.merge();
+    }
+
+    /// Whether another program's passes are laid over the drawings.
+    pub fn overlaid(&self) -> bool {
+        self.overlay.is_some()
+    }
+
+    /// The side and tooth scenes with the overlay, when there is one.
+    fn merge(&mut self) {
+        self.merged = [None, None];
+        let Some((_, over)) = self.overlay.clone() else { return };
+        for k in 0..2 {
+            if let Some(s) = self.showing().scenes[k].as_deref() {
+                self.merged[k] = Some(Rc::new(crate::diagram::overlay::merged(s, &over[k])));
+            }
+        }
     }
 
     /// Another thread or start: the tooth and starts scenes of the current plan.
@@ -80,6 +108,7 @@ impl Shown {
         self.current.scenes[2] = starts;
         self.current.keys[1] = keys[0];
         self.current.keys[2] = keys[1];
+        self.merge();
     }
 
     /// Whether the good drawing is shown greyed.
@@ -99,14 +128,26 @@ impl Shown {
         }
     }
 
-    /// The scene view `w` shows, if any.
+    /// The scene view `w` shows, if any (with the overlay laid on it).
     pub fn scene(&self, w: Which) -> Option<&Scene> {
-        self.showing().scenes[w as usize].as_deref()
+        let k = w as usize;
+        match self.merged.get(k).and_then(Option::as_deref) {
+            Some(m) => Some(m),
+            None => self.showing().scenes[k].as_deref(),
+        }
     }
 
     /// The keys of the scenes shown (a view redraws when its key or the stale flag changes).
     pub fn keys(&self) -> [f64; 3] {
-        self.showing().keys
+        let mut keys = self.showing().keys;
+        if let Some((id, _)) = &self.overlay {
+            for (k, key) in keys.iter_mut().take(2).enumerate() {
+                if self.merged[k].is_some() {
+                    *key = js_key(combine(&[key.to_bits(), *id]));
+                }
+            }
+        }
+        keys
     }
 }
 

@@ -123,6 +123,42 @@ impl Session {
         })
     }
 
+    /// Compares the last plan with program `text` (`dialect_name`, settings
+    /// lines `settings`) pass by pass ([`crate::compare`]) and lays its passes
+    /// over the side and tooth sections (until [`Session::compare_off`]; each
+    /// later plan is compared again and answers with its `comparison`):
+    /// `{comparison: {same, threads, passes, differences: [{thread, pass,
+    /// start, what, a, b}]}, shown, stale}`.
+    pub fn compare(&self, text: &str, dialect_name: &str, settings: &str) -> Result<JsValue, JsValue> {
+        let d = super::js::dialect(dialect_name)?;
+        let (s, _) = super::js::settings_from(d, settings);
+        let b = crate::plan(text, &s);
+        self.with_state_mut(|st| {
+            let a = st.planner.last().ok_or_else(|| err("nothing planned yet"))?;
+            let c = crate::compare::compare(a, &b);
+            let id = st.compare.as_ref().map_or(1, |(_, id)| id + 1);
+            st.shown.set_overlay(Some((id, overlay_items(&b, st.thread))));
+            st.compare = Some((b, id));
+            let o = Object::new();
+            set(&o, "comparison", &comparison_js(&c));
+            set(&o, "shown", &Float64Array::from(&st.shown.keys()[..]).into());
+            set(&o, "stale", &st.shown.stale().into());
+            Ok(o.into())
+        })
+    }
+
+    /// Takes the compared program's passes off the drawings: `{shown, stale}`.
+    pub fn compare_off(&self) -> Result<JsValue, JsValue> {
+        self.with_state_mut(|st| {
+            st.compare = None;
+            st.shown.set_overlay(None);
+            let o = Object::new();
+            set(&o, "shown", &Float64Array::from(&st.shown.keys()[..]).into());
+            set(&o, "stale", &st.shown.stale().into());
+            Ok(o.into())
+        })
+    }
+
     /// View `view` as the SVG document of what it shows (the same display
     /// list as [`Session::draw`] without the mark): at `width × height` px,
     /// transform `xf` (omitted: fitted, with `stretch`). The same as
@@ -241,4 +277,21 @@ fn list_to_js(list: &DisplayList) -> Result<JsValue, JsValue> {
     set(&o, "dropped", &(list.dropped.len() as u32).into());
     set(&o, "anchor", &Float64Array::from(&list.anchor[..]).into());
     Ok(o.into())
+}
+
+/// The items of the compared plan `b` laid over the side section and over the tooth section of thread `thread`.
+pub(super) fn overlay_items(b: &crate::plan::Plan, thread: usize) -> [Vec<crate::diagram::Item>; 2] {
+    let side = crate::diagram::overlay::items(&crate::diagram::side(b));
+    let tooth = crate::diagram::tooth(b, thread, 1).map(|s| crate::diagram::overlay::items(&s)).unwrap_or_default();
+    [side, tooth]
+}
+
+/// A comparison as a JS value: `{same, threads, passes, differences}`.
+pub(super) fn comparison_js(c: &crate::compare::Comparison) -> JsValue {
+    let o = Object::new();
+    set(&o, "same", &c.same().into());
+    set(&o, "threads", &Float64Array::from(&[c.threads[0] as f64, c.threads[1] as f64][..]).into());
+    set(&o, "passes", &Float64Array::from(&[c.passes[0] as f64, c.passes[1] as f64][..]).into());
+    set(&o, "differences", &to_js(&c.differences).unwrap_or(JsValue::NULL));
+    o.into()
 }

@@ -220,7 +220,8 @@ fn passed_count(line: &str) -> Option<u32> {
 /// in the app and in embeds, English and Chinese (`labels.test.mjs`), and
 /// the thread wizard and "Expand to blocks" (`tools.test.mjs`), and a
 /// program with subprograms: passes and diagnostics with their calls
-/// (`calls.test.mjs`), and what a new user hits (`newuser.test.mjs`);
+/// (`calls.test.mjs`), what a new user hits (`newuser.test.mjs`), and
+/// "Compare with…" (`compare.test.mjs`);
 /// fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
@@ -248,6 +249,7 @@ pub fn browser_tests() -> Result {
         "tools.test.mjs",
         "calls.test.mjs",
         "newuser.test.mjs",
+        "compare.test.mjs",
     ]
     .map(|t| run("node", &[t, &url], Some(&dir)));
     rest.into_iter().fold(app, |all, r| all.and(r))

@@ -12,6 +12,7 @@ import { diagnosticRow, passHead, passLines, passRow, passVia, patchRows, thread
 import { esc, num } from '../shared/table.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { bindDesignation, DESIGNATION, renderCheck } from './check.js';
+import { Compare } from './compare.js';
 import { fileName, fillPrintSheet, openFile } from './files.js';
 import { download, shareLink, toast } from './pageutil.js';
 import { Planning } from './planning.js';
@@ -54,6 +55,7 @@ function update(patch) {
   ui = Object.freeze({ ...ui, ...patch });
 }
 let planning; // plans in flight, keystrokes, the good plan's lists (planning.js)
+let compareUi = null; // Compare with… (compare.js)
 let passRows;
 const lists = []; // the keyboard-operated lists (a11y.js)
 
@@ -115,29 +117,26 @@ function replan() {
   persist();
 }
 
+/** The engine's messages to the page (answers to requests go to their callers). */
+const HANDLERS = {
+  result: (m) => onResult(m),
+  frame: (m) => onFrame(m),
+  hover: (m) => onViewHover(m),
+  pick: (m) => onPick(m.info),
+  error: (m) => {
+    probe.errors.push(m.message);
+    if (m.crashed) {
+      planning.failed();
+      banner(t('crashed'));
+    }
+  },
+  note: (m) => {
+    probe.notes = [...(probe.notes || []), m.message];
+  },
+};
+
 function onMessage(m) {
-  switch (m.type) {
-    case 'result':
-      return onResult(m);
-    case 'frame':
-      return onFrame(m);
-    case 'hover':
-      return onViewHover(m);
-    case 'pick':
-      return onPick(m.info);
-    case 'error':
-      probe.errors.push(m.message);
-      if (m.crashed) {
-        planning.failed();
-        banner(t('crashed'));
-      }
-      return undefined;
-    case 'note':
-      probe.notes = [...(probe.notes || []), m.message];
-      return undefined;
-    default:
-      return undefined;
-  }
+  HANDLERS[m.type]?.(m);
 }
 
 function onResult(m) {
@@ -152,6 +151,7 @@ function onResult(m) {
   probe.result = r;
   const a = planning.answered(r, m.seq, editor.view.state.doc);
   renderLists(r);
+  if (r.comparison) compareUi?.show(r.comparison);
   const t1 = performance.now();
   if (m.timing) {
     const total = a.t0 === null ? null : performance.now() - a.t0;
@@ -433,7 +433,8 @@ async function main() {
   client.bindView('tooth', $('tooth'));
   client.bindView('starts', $('starts'));
   document.querySelector('#side-panel [data-act="stretch"]').setAttribute('aria-pressed', 'true');
-  for (const name of ['side', 'tooth', 'starts']) bindViewBar($(`${name}-panel`), name, client);
+  compareUi = new Compare({ client, library, t, currentId: () => library.current?.id, strip: $('compare') });
+  for (const name of ['side', 'tooth', 'starts']) bindViewBar($(`${name}-panel`), name, client, (act) => act === 'compare' && compareUi.open());
 
   const scroller = $('passes').closest('.scroll');
   passRows = new VirtualRows(scroller, $('passes').tBodies[0], {

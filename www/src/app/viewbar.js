@@ -5,10 +5,11 @@
 import { t } from '../shared/i18n.js';
 import { download, toast } from './pageutil.js';
 
-/** Binds the bar of panel `panel` (an element) to view `name` of the engine `client`. */
-export function bindViewBar(panel, name, client) {
+/** Binds the bar of panel `panel` (an element) to view `name` of the engine `client`; other buttons' acts go to `other(act)`. */
+export function bindViewBar(panel, name, client, other = () => {}) {
   panel.querySelector('.bar').addEventListener('click', async (e) => {
     const act = e.target.dataset?.act;
+    if (act && !['fit', 'stretch', 'svg', 'png'].includes(act)) other(act);
     if (act === 'fit') client.send({ type: 'input', name, op: 'fit' });
     if (act === 'stretch') e.target.setAttribute('aria-pressed', String(await client.request('input', { name, op: 'stretch' })));
     if (act === 'svg' || act === 'png') {

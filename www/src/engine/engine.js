@@ -172,6 +172,7 @@ export class Engine {
         stale: r.stale,
         plan: r.plan,
         goodPlan: r.goodPlan,
+        comparison: r.comparison,
         settingErrors: r.settingErrors,
         diagnostics: r.diagnostics,
         diagnosticsKey: r.diagnosticsKey,
@@ -235,6 +236,20 @@ export class Engine {
     if (v && format === 'svg') data = v.svg();
     else if (v) data = await v.toPNG(scale || 2);
     this.post({ type: 'reply', id, data });
+  }
+
+  /** Compares the last plan with another program and lays its passes over the side and tooth sections; answers the comparison. */
+  on_compare({ id, text, dialect, settings }) {
+    const r = this.session.compare(text, dialect, settings || '');
+    this.show(r.shown, r.stale);
+    this.post({ type: 'reply', id, data: r.comparison });
+  }
+
+  /** Takes the compared program off the drawings. */
+  on_compare_off({ id }) {
+    const r = this.session.compare_off();
+    this.show(r.shown, r.stale);
+    this.post({ type: 'reply', id, data: true });
   }
 
   /** Tables the page's panels show: `what: 'settings'` of `dialect`. */
