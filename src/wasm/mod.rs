@@ -25,6 +25,8 @@ pub mod text;
 #[cfg(target_arch = "wasm32")]
 mod bind;
 #[cfg(target_arch = "wasm32")]
+mod compared;
+#[cfg(target_arch = "wasm32")]
 mod js;
 #[cfg(target_arch = "wasm32")]
 mod parts;

@@ -137,13 +137,13 @@ impl Session {
                 let drawable = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
                 shown.planned(scenes, drawable, plan.has_alarm(), fresh, keep);
                 let compared = compare.as_ref().map(|(b, id)| {
-                    shown.set_overlay(Some((*id, super::views::overlay_items(b, *chosen))));
+                    shown.set_overlay(Some((*id, super::compared::overlay_items(b, *chosen))));
                     crate::compare::compare(plan, b)
                 });
                 answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(
                     |o| {
                         if let Some(c) = &compared {
-                            set(&o, "comparison", &super::views::comparison_js(c));
+                            set(&o, "comparison", &super::compared::comparison_js(c));
                         }
                         set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
                         set(&o, "stale", &shown.stale().into());
@@ -203,7 +203,7 @@ impl Session {
                     let (tooth, starts) = thread_scenes_of(plan, picked, start);
                     st.shown.select(tooth.0, starts.0, [tooth.1, starts.1]);
                     if let Some((b, id)) = &st.compare {
-                        st.shown.set_overlay(Some((*id, super::views::overlay_items(b, st.thread))));
+                        st.shown.set_overlay(Some((*id, super::compared::overlay_items(b, st.thread))));
                     }
                     let o = Object::new();
                     let r = thread_parts(&o, plan, &keys, picked, &Known(Vec::new()));
