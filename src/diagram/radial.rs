@@ -150,7 +150,7 @@ fn map_shape(shape: &mut Shape, b: &Break) {
 }
 
 /// The break line across the focus (a zigzag in the middle) and its note:
-/// halfway between the break and the focus's edge beyond it (the passes'
+/// four fifths of the way from the break to the focus's edge beyond it (the passes'
 /// retract as drawn), clear of the dimensions beside the crest.
 fn mark(scene: &mut Scene, b: &Break) {
     let f = scene.focus;
@@ -159,7 +159,7 @@ fn mark(scene: &mut Scene, b: &Break) {
     }
     let reach = (if b.out { f.y1 - b.at } else { b.at - f.y0 }).max(0.5 * b.unit);
     let (x0, x1) = (f.x0, f.x1);
-    let (w, y) = ((x1 - x0).max(1e-6), b.at + if b.out { 0.5 } else { -0.5 } * reach);
+    let (w, y) = ((x1 - x0).max(1e-6), b.at + if b.out { 0.8 } else { -0.8 } * reach);
     let (m, s, a) = ((x0 + x1) / 2.0, 0.008 * w, 0.15 * b.unit);
     let zig = vec![[x0, y], [m - s, y], [m - s / 2.0, y + a], [m + s / 2.0, y - a], [m + s, y], [x1, y]];
     scene.push(Item::new(Shape::Polyline { points: zig }, Style::Break), false);

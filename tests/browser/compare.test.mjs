@@ -8,10 +8,21 @@
 // - One pass edited (the second pass 0.05 deeper on the diameter) differs
 //   there: the strip lists that pass's X and depth.
 // - "Stop comparing" takes the overlay off.
-// Screenshots (English, Chinese) go to tests/browser/screenshots/compare-*.png.
+// - The part checks in the app: M48×2 ending 0.3 before a shoulder turned
+//   up to X56 (tool-shoulder: the tool's outline and the face it cuts, in
+//   red, in the side section), and the insert 16ER 2.0 ISO in the tooth
+//   section (its nose, r 0.25).
+// Screenshots (English, Chinese) go to tests/browser/screenshots/compare-*.png
+// and part-*.png.
 
 import { siteUrl, checker, guard, openApp, finish, shots } from './harness.mjs';
 import path from 'node:path';
+import zlib from 'node:zlib';
+
+function fragment(state) {
+  const z = zlib.deflateRawSync(Buffer.from(JSON.stringify(state)), { level: 9 });
+  return '#z=' + z.toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
 
 const url = siteUrl('compare.test.mjs');
 const { check, counts } = checker();
@@ -83,6 +94,24 @@ try {
   await page.waitForTimeout(300);
   const gone = await page.evaluate(() => window.__screwcut.inspect('items', 'side', 'compare'));
   check('"Stop comparing" takes the overlay off', gone.length === 0 && (await page.locator('#compare').isHidden()), String(gone.length));
+
+  // ---- the part checks in the app ----
+  let program = 'G00 X60 Z2\nG01 X48 F0.2\nZ-40\nX56\nZ-60\nG00 X60\nZ5\n';
+  for (const x of [47.1, 46.5, 45.9, 45.5, 45.4]) program += `X${x}\nG32 Z-39.7 F2\nG00 X60\nZ5\n`;
+  await page.goto('about:blank');
+  await page.goto(url + fragment({ dialect: 'gsk980tdc', settings: { gsk980tdc: { 'tool.insert': '16ER 2.0 ISO' } }, program }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  await page.waitForFunction(() => document.querySelectorAll('#diagnostics li').length > 0, null, { timeout: 10_000 }).catch(() => {});
+  const diags = await page.locator('#diagnostics li').allTextContents();
+  check('a thread ending 0.3 before a shoulder: tool-shoulder, 2.76 into it', diags.some((d) => d.includes('tool-shoulder') && d.includes('2.76')), JSON.stringify(diags));
+  const red = await page.evaluate(() => window.__screwcut.inspect('items', 'side', 'collision'));
+  check('… the face it cuts drawn in red in the side section, with the depth', red.length === 2, String(red.length));
+  const outline = await page.evaluate(() => window.__screwcut.inspect('items', 'side', 'tool'));
+  check('… and the tool outline at that pass', outline.length === 1 && outline[0].pass === 4, JSON.stringify(outline.map((o) => o.pass)));
+  const insert = await page.evaluate(() => window.__screwcut.inspect('labels', 'tooth'));
+  check('the tooth section names the insert (16ER 2.0 ISO, r 0.25)', insert.placed.some((l) => l.key === 'insert_full' && l.lines.join(' ').includes('16ER 2.0 ISO r 0.25')), JSON.stringify(insert.placed.map((l) => l.lines)));
+  await page.locator('#side-panel').screenshot({ path: path.join(shots, 'part-shoulder-en.png') });
+  await page.locator('#tooth-panel').screenshot({ path: path.join(shots, 'part-insert-en.png') });
   check('no console or page errors', problems.length === 0, JSON.stringify(problems));
 } catch (e) {
   check('the compare test ran to the end', false, e && e.stack ? e.stack : String(e));
