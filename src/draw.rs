@@ -132,6 +132,8 @@ pub struct View {
     pub stale: bool,
     /// What is highlighted.
     pub mark: Mark,
+    /// Draw the roughing cuts of G71/G72 (off: on demand).
+    pub roughing: bool,
 }
 
 impl Default for View {
@@ -145,6 +147,7 @@ impl Default for View {
             transform: None,
             stale: false,
             mark: Mark::default(),
+            roughing: false,
         }
     }
 }
@@ -188,7 +191,7 @@ pub fn display(scene: &Scene, view: &View) -> DisplayList {
     let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, page));
     let (placed, dropped) = place::placed(scene, view, &xf, page);
     let mut b = list::Builder::new(scene.view, page, xf, view.stale);
-    paint::paint(&mut b, scene, &xf, &placed, &view.mark);
+    paint::paint(&mut b, scene, &xf, &placed, view);
     b.list.labels = placed;
     b.list.dropped = dropped;
     b.list.anchor = xf.at(anchor(scene, &view.mark));

@@ -167,3 +167,23 @@ fn the_part_is_filled_under_its_turned_outline() {
     assert_eq!(points.last().map(|p| p[0]), Some(-60.0));
     assert!(parts[0].lines.is_empty(), "hovering the part marks nothing");
 }
+
+/// The roughing cuts are drawn on demand: the side section's display list
+/// leaves them out unless the view asks (the app's "Roughing", `screwcut svg --roughing`).
+#[test]
+fn roughing_is_drawn_on_demand() {
+    use screwcut::draw::{View, display};
+    let plan = plan_with(
+        &program(&format!("G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n{CONTOUR}"), "G70 P10 Q20\n"),
+        Dialect::Fanuc0i,
+        &[],
+    );
+    let scene = screwcut::diagram::side(&plan);
+    assert!(scene.items.iter().any(|i| i.style == screwcut::diagram::Style::Roughing));
+    let uses_roughing_pen = |v: &View| {
+        let l = display(&scene, v);
+        l.pens.iter().any(|p| p.stroke.as_deref() == Some("#a5b4c8"))
+    };
+    assert!(!uses_roughing_pen(&View::default()), "hidden at first");
+    assert!(uses_roughing_pen(&View { roughing: true, ..View::default() }), "shown on demand");
+}

@@ -120,6 +120,9 @@ enum Command {
         /// Stretch the radial scale to fill the height (the app's "Stretch radially").
         #[arg(long)]
         stretch: bool,
+        /// Draw the roughing cuts of G71/G72 (the app's "Roughing"; hidden otherwise).
+        #[arg(long)]
+        roughing: bool,
         /// Language of the labels: en or zh.
         #[arg(long, default_value = "en", value_parser = ["en", "zh"])]
         lang: String,
@@ -250,7 +253,7 @@ fn main() -> ExitCode {
         Command::Compare { a, b, dialect, dialect_b, set, json } => {
             compare_files(&a, &b, dialect, dialect_b.unwrap_or(dialect), &set, json)
         }
-        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, lang, transform } => {
+        Command::Svg { file, view, dialect, set, thread, start, width, height, stretch, roughing, lang, transform } => {
             let (settings, text) = match input(&file, dialect, &set) {
                 Ok(v) => v,
                 Err(code) => return code,
@@ -270,7 +273,16 @@ fn main() -> ExitCode {
                 return ExitCode::from(2);
             };
             let lang = Lang::parse(&lang).unwrap_or_default();
-            let v = screwcut::draw::View { width, height, stretch, thread: ti, lang, transform, ..Default::default() };
+            let v = screwcut::draw::View {
+                width,
+                height,
+                stretch,
+                thread: ti,
+                lang,
+                transform,
+                roughing,
+                ..Default::default()
+            };
             if let Err(e) = v.validate() {
                 eprintln!("screwcut: cannot draw the {view} view: {e}");
                 return ExitCode::from(2);

@@ -97,6 +97,8 @@ pub struct Layout {
     pub feeds: FeedIndex,
     /// What is drawn of each thread's passes (level of detail).
     pub details: Vec<Detail>,
+    /// Per motion: a rapid of a roughing cycle (drawn with its cuts, on demand).
+    pub roughing: Vec<bool>,
 }
 
 impl Layout {
@@ -130,6 +132,7 @@ impl Layout {
             has_threads: !plan.threads.is_empty(),
             feeds: FeedIndex::new(&plan.moves),
             details,
+            roughing: roughing_rapids(&plan.moves),
         }
     }
 
@@ -158,9 +161,28 @@ impl Layout {
     }
 }
 
+/// Per motion: whether it is a rapid of a roughing cycle — in a run of
+/// motions of one block that holds a roughing cut.
+pub fn roughing_rapids(moves: &[Move]) -> Vec<bool> {
+    let mut out = vec![false; moves.len()];
+    let mut start = 0;
+    while start < moves.len() {
+        let line = moves[start].line;
+        let end = moves[start..].iter().position(|m| m.line != line).map_or(moves.len(), |k| start + k);
+        if moves[start..end].iter().any(|m| m.kind == MoveKind::Rough) {
+            for k in start..end {
+                out[k] = moves[k].kind == MoveKind::Rapid;
+            }
+        }
+        start = end;
+    }
+    out
+}
+
 /// The item of a motion that belongs to no pass, and whether it is in the focus.
-pub fn motion_item(m: &Move, has_threads: bool) -> (Item, bool) {
+pub fn motion_item(m: &Move, has_threads: bool, roughing: bool) -> (Item, bool) {
     let (shape, style, focus) = match m.kind {
+        MoveKind::Rapid if roughing => (line(world(m.from), world(m.to)), Style::Roughing, false),
         MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
         MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
         MoveKind::Rough => (line(world(m.from), world(m.to)), Style::Roughing, !has_threads),
@@ -245,7 +267,7 @@ pub fn side(plan: &Plan) -> Scene {
     // Motions of no pass: the part outline and other tool paths.
     for (k, m) in plan.moves[..drawn].iter().enumerate() {
         if !layout.owner[k] {
-            let (item, focus) = motion_item(m, layout.has_threads);
+            let (item, focus) = motion_item(m, layout.has_threads, layout.roughing[k]);
             scene.push(item, focus);
         }
     }

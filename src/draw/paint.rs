@@ -10,7 +10,7 @@ use std::collections::{HashMap, HashSet};
 use super::labels::LINE;
 use super::list::{Builder, Op, Pen};
 use super::pens::{HALO, HIGHLIGHT, HIGHLIGHT_HALO, ItemPen, pen_of};
-use super::{Mark, Placed, Transform};
+use super::{Placed, Transform, View};
 use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style};
 
 /// Paths wholly this far off the page are left out.
@@ -40,7 +40,8 @@ struct Batch {
 }
 
 /// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
-pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Placed], mark: &Mark) {
+pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Placed], view: &View) {
+    let mark = &view.mark;
     let by_item: HashMap<usize, &Placed> = placed.iter().map(|l| (l.item, l)).collect();
     let marked: HashSet<usize> = mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
     let mark = if b.list.stale || marked.is_empty() { None } else { Some((&marked, mark.light)) };
@@ -48,7 +49,7 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Pl
     if let Some((set, light)) = mark {
         p.halos(scene, set, light, &by_item);
     }
-    p.paths(scene);
+    p.paths(scene, view.roughing);
     for (i, item) in scene.items.iter().enumerate() {
         let halo = match mark {
             Some((set, light)) if set.contains(&i) => HIGHLIGHT_HALO[usize::from(light)],
@@ -146,8 +147,8 @@ impl Painter<'_> {
         }
     }
 
-    /// Every polyline and polygon on the page, one operation per pen.
-    fn paths(&mut self, scene: &Scene) {
+    /// Every polyline and polygon on the page, one operation per pen (roughing cuts only with `roughing`).
+    fn paths(&mut self, scene: &Scene, roughing: bool) {
         let (w, h) = (self.b.list.width, self.b.list.height);
         let mut batches: Vec<Batch> = Vec::new();
         let mut index: HashMap<BatchKey, usize> = HashMap::new();
@@ -157,6 +158,9 @@ impl Painter<'_> {
                 Shape::Polygon { points } => (points, true),
                 _ => continue,
             };
+            if item.style == Style::Roughing && !roughing {
+                continue;
+            }
             let pts: Vec<Pt> = points.iter().map(|p| self.xf.at(*p)).collect();
             let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
             if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {

@@ -183,13 +183,14 @@ impl SideMemo {
             h.write_u64(Tag::Motions as u64);
             h.write_u8(u8::from(layout.has_threads));
             for k in start..end {
-                h.write_u8(u8::from(layout.owner[k]));
+                h.write_u8(u8::from(layout.owner[k]) | (u8::from(layout.roughing[k]) << 1));
                 if !layout.owner[k] {
                     hash_move(&mut h, &plan.moves[k]);
                 }
             }
             let (moves, owner, has_threads) = (&plan.moves[start..end], &layout.owner[start..end], layout.has_threads);
-            order.push(pieces.take(h.finish(), || Chunk::of(motions(moves, owner, has_threads))));
+            let roughing = &layout.roughing[start..end];
+            order.push(pieces.take(h.finish(), || Chunk::of(motions(moves, owner, roughing, has_threads))));
         }
         // Runs of passes of one thread, in cutting order.
         let paths: Vec<_> = layout.paths.iter().collect();
@@ -241,8 +242,18 @@ impl SideMemo {
 }
 
 /// The items of the motions of no pass among `moves`.
-fn motions<'a>(moves: &'a [Move], owner: &'a [bool], has_threads: bool) -> impl Iterator<Item = (Item, bool)> + 'a {
-    moves.iter().zip(owner).filter(|(_, o)| !**o).map(move |(m, _)| motion_item(m, has_threads))
+fn motions<'a>(
+    moves: &'a [Move],
+    owner: &'a [bool],
+    roughing: &'a [bool],
+    has_threads: bool,
+) -> impl Iterator<Item = (Item, bool)> + 'a {
+    moves
+        .iter()
+        .zip(owner)
+        .zip(roughing)
+        .filter(|((_, o), _)| !**o)
+        .map(move |((m, _), r)| motion_item(m, has_threads, *r))
 }
 
 /// The spindle axis with the bounds and focus of the scene of `pieces`.

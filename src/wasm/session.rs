@@ -48,6 +48,8 @@ pub struct Session {
     state: Cell<Option<State>>,
     /// The language of the messages and notes it answers with.
     lang: Cell<Lang>,
+    /// Whether its drawings show the roughing cuts of G71/G72 (on demand).
+    roughing: Cell<bool>,
 }
 
 #[wasm_bindgen]
@@ -158,6 +160,11 @@ impl Session {
         };
         self.state.set(Some(session));
         out
+    }
+
+    /// Shows (or hides) the roughing cuts of G71/G72 in the drawings from now on (hidden at first).
+    pub fn set_roughing(&self, on: bool) {
+        self.roughing.set(on);
     }
 
     /// Sets the language (`en` or `zh`; anything else is English) of the
@@ -300,6 +307,11 @@ impl Session {
     pub(crate) fn shown_scene(&self, view: &str) -> Option<Scene> {
         let w = super::shown::Which::parse(view)?;
         self.with_state(|st| Ok(st.shown.scene(w).cloned())).ok().flatten()
+    }
+
+    /// Whether the drawings show the roughing cuts.
+    pub(super) fn roughing(&self) -> bool {
+        self.roughing.get()
     }
 
     /// The language of the session's answers and labels.

@@ -42,7 +42,7 @@ impl Session {
         light: bool,
     ) -> Result<JsValue, JsValue> {
         let which = which(view)?;
-        let lang = self.lang();
+        let (lang, roughing) = (self.lang(), self.roughing());
         self.with_state(|st| {
             let Some(scene) = st.shown.scene(which) else { return Ok(JsValue::NULL) };
             let mark = mark_of(scene, mark_thread, mark_pass, &mark_lines, light);
@@ -55,6 +55,7 @@ impl Session {
                 transform: transform(xf.as_deref())?,
                 stale: st.shown.stale(),
                 mark,
+                roughing,
             };
             v.validate().map_err(err)?;
             list_to_js(&draw::display(scene, &v))
@@ -173,7 +174,7 @@ impl Session {
         stretch: bool,
     ) -> Result<String, JsValue> {
         let which = which(view)?;
-        let lang = self.lang();
+        let (lang, roughing) = (self.lang(), self.roughing());
         self.with_state(|st| {
             let scene = st.shown.scene(which).ok_or_else(|| err(format!("the {view} view shows nothing")))?;
             let v = View {
@@ -185,6 +186,7 @@ impl Session {
                 transform: transform(xf.as_deref())?,
                 stale: st.shown.stale(),
                 mark: Mark::default(),
+                roughing,
             };
             v.validate().map_err(err)?;
             Ok(crate::svg::svg(scene, &v))

@@ -1,4 +1,5 @@
-// The buttons above each drawing: Fit, Stretch radially, SVG and PNG.
+// The buttons above each drawing: Fit, Stretch radially, Roughing (the
+// G71/G72 cuts, drawn on demand), SVG and PNG.
 // Exports are the engine's (the core's display list written as SVG, or the
 // canvas painting it); a view with nothing to export says why.
 
@@ -9,9 +10,9 @@ import { download, toast } from './pageutil.js';
 export function bindViewBar(panel, name, client, other = () => {}) {
   panel.querySelector('.bar').addEventListener('click', async (e) => {
     const act = e.target.dataset?.act;
-    if (act && !['fit', 'stretch', 'svg', 'png'].includes(act)) other(act);
+    if (act && !['fit', 'stretch', 'roughing', 'svg', 'png'].includes(act)) other(act);
     if (act === 'fit') client.send({ type: 'input', name, op: 'fit' });
-    if (act === 'stretch') e.target.setAttribute('aria-pressed', String(await client.request('input', { name, op: 'stretch' })));
+    if (act === 'stretch' || act === 'roughing') e.target.setAttribute('aria-pressed', String(await client.request('input', { name, op: act })));
     if (act === 'svg' || act === 'png') {
       try {
         const data = await client.request('export', { name, format: act, scale: 2 });

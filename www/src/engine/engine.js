@@ -42,6 +42,7 @@ export class Engine {
     this.pendingFrame = null; // {seq, input} of a plan whose drawing is awaited
     this.sentThreads = null;
     this.sentPasses = null;
+    this.roughing = false; // the roughing cuts of G71/G72 are drawn on demand
   }
 
   handle(m) {
@@ -74,7 +75,13 @@ export class Engine {
     else if (op === 'zoom') v.zoomAt(x, y, k);
     else if (op === 'fit') v.fit();
     else if (op === 'stretch') this.post({ type: 'reply', id, data: v.toggleStretch() });
-    else if (op === 'leave') {
+    else if (op === 'roughing') {
+      // A display option of the session (its drawings), shown on demand.
+      this.roughing = !this.roughing;
+      this.session.set_roughing(this.roughing);
+      for (const view of Object.values(this.views)) view.draw();
+      this.post({ type: 'reply', id, data: this.roughing });
+    } else if (op === 'leave') {
       if (v.hovered !== null) this.post({ type: 'hover', name, info: null });
       v.hovered = null;
     } else if (op === 'hover') {

@@ -144,6 +144,7 @@ const EN = {
   range: 'range',
   lead_of: 'Ph {v}',
   compare_with: 'Compare with…',
+  roughing: 'Roughing',
   cmp_title: 'Compare with another program',
   cmp_help:
     'Plans the other program beside this one and lays its passes over the side and tooth sections (dashed orange); what differs pass by pass shows above the side section. Each edit of this program is compared again.',
@@ -319,6 +320,7 @@ const ZH = {
   range: '范围',
   lead_of: '导程 {v}',
   compare_with: '与…比较',
+  roughing: '粗车',
   cmp_title: '与另一个程序比较',
   cmp_help: '在本程序旁计划另一个程序，把它的走刀（橙色虚线）叠在侧剖面和牙型剖面上；逐刀的差异显示在侧剖面上方。本程序每次修改后都重新比较。',
   cmp_with: '程序列表中的程序',
