@@ -187,3 +187,35 @@ fn roughing_is_drawn_on_demand() {
     assert!(!uses_roughing_pen(&View::default()), "hidden at first");
     assert!(uses_roughing_pen(&View { roughing: true, ..View::default() }), "shown on demand");
 }
+
+/// Planning again after an edit gives the plan a full reading gives, also
+/// where the planner's checkpoint (every 256 blocks) falls inside a contour
+/// a G71 is reading: the reading's state is in the checkpoint.
+#[test]
+fn a_roughing_cycle_across_a_checkpoint_plans_again_as_in_full() {
+    let mut text = String::from("G50 X100. Z100.\nT0101 S800 M03\n");
+    for k in 0..240 {
+        text += &format!("G00 X{}. Z{}.\n", 80 + k % 7, 60 + k % 5);
+    }
+    text += "G00 X62. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 X20.\nG01 Z0. F0.1\n";
+    for k in 0..30 {
+        text += &format!("X{}. Z-{}.\n", 20 + k, 2 * k + 2);
+    }
+    text += "N20 X62.\nG70 P10 Q20\nG00 X70. Z5.\nX47.1\nG32 Z-20. F2.\nG00 X70.\nZ5.\nM30\n";
+    let s = screwcut::Settings::new(Dialect::Fanuc0i);
+    let edits = [
+        text.replace("X35. Z-32.", "X35.5 Z-32."), // inside the contour, after the checkpoint
+        text.replace("X21. Z-4.", "X21.2 Z-4."),   // inside the contour, before it
+        text.replace("G71 U1.5 R0.5", "G71 U1.2 R0.5"), // the depth of cut
+        text.replace("X47.1", "X47.0"),            // the thread after it
+        text.clone(),
+    ];
+    let mut planner = screwcut::planner::Planner::new(s.clone());
+    planner.plan(&text);
+    assert!(planner.last().unwrap().moves.iter().any(|m| m.kind == MoveKind::Rough));
+    for (k, t) in edits.iter().enumerate() {
+        assert_ne!(k == 4, t != &text);
+        let inc = planner.plan(t).clone();
+        assert_eq!(inc, screwcut::plan(t, &s), "edit {k}");
+    }
+}
