@@ -270,6 +270,29 @@ try {
     await app.close();
   }
 
+  // ---- a static drawing inside an element (screwcut svg's output) shows until the live one ----
+  await page.evaluate(() => {
+    const el = document.createElement('screwcut-preview');
+    el.id = 'with-fallback';
+    el.setAttribute('view', 'side');
+    el.innerHTML =
+      'G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n' +
+      '<svg xmlns="http://www.w3.org/2000/svg" width="300" height="120" viewBox="0 0 300 120"><title>screwcut: side section</title><rect width="300" height="120" fill="#eee"/><text x="10" y="60">static</text></svg>';
+    document.body.append(el);
+  });
+  const staticBefore = await page.evaluate(() => {
+    const el = document.getElementById('with-fallback');
+    return { state: el.dataset.state, program: el.program, h: el.querySelector('svg').getBoundingClientRect().height };
+  });
+  check('before it starts, the static drawing placed inside shows', staticBefore.state === 'idle' && staticBefore.h > 100, JSON.stringify(staticBefore));
+  check('… and is not read as G-code', staticBefore.program === 'G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n', JSON.stringify(staticBefore.program));
+  await page.locator('#with-fallback').scrollIntoViewIfNeeded();
+  await waitReady('with-fallback').catch(() => {});
+  await frames();
+  const staticAfter = await inspect('with-fallback');
+  const hidden = await page.evaluate(() => document.getElementById('with-fallback').querySelector('svg').getBoundingClientRect().height);
+  check('once drawn, the live drawing takes its place', staticAfter.state === 'ready' && staticAfter.canvases[0].n > 400 && hidden === 0, JSON.stringify({ state: staticAfter.state, px: staticAfter.canvases[0].n, hidden }));
+
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shots, 'docs-page.png'), fullPage: true });
   check('no console or page errors', problems.length === 0, JSON.stringify(problems));

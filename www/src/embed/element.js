@@ -62,6 +62,8 @@ export class ScrewcutPreview extends HTMLElement {
   }
 
   connectedCallback() {
+    // A static drawing inside (an <svg>, as `screwcut svg` writes it) is the fallback shown until the live one.
+    for (const svg of this.querySelectorAll(':scope > svg')) svg.slot = 'fallback';
     if (!this._built) this._build();
     if (this._state === 'idle') {
       this.dataset.state = 'idle';
@@ -90,9 +92,12 @@ export class ScrewcutPreview extends HTMLElement {
     }
   }
 
-  /** The G-code shown (the text content or `src` until set). */
+  /** The G-code shown (the text content, without a static drawing inside, or `src` until set). */
   get program() {
-    return this._text ?? dedent(this.textContent);
+    if (this._text !== null) return this._text;
+    let text = '';
+    for (const n of this.childNodes) if (!(n.nodeType === 1 && n.localName === 'svg')) text += n.textContent;
+    return dedent(text);
   }
 
   set program(text) {
@@ -158,7 +163,8 @@ export class ScrewcutPreview extends HTMLElement {
       )
       .join('');
     this.shadowRoot.innerHTML =
-      `<style>${STYLE}</style><div class="box" part="box" style="--h:${h}px"><div class="views">${panes}</div>` +
+      `<style>${STYLE}</style><div class="box${this._drawn || !this.querySelector(':scope > svg') ? '' : ' static'}" part="box" style="--h:${h}px">` +
+      `<div class="fallback" part="fallback"><slot name="fallback"></slot></div><div class="views">${panes}</div>` +
       (editable ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>` : this.hasAttribute('hide-code') ? '' : `<pre class="code" part="code"></pre>`) +
       `<div class="bar"><span class="sum">${esc(this._t('loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
       `<a class="open" target="_blank" rel="noopener" part="open">${esc(this._t('open_in_editor'))} ↗</a></div>` +
@@ -315,6 +321,9 @@ export class ScrewcutPreview extends HTMLElement {
     }
     this._drawnThread = shown.thread;
     this._drawnLang = this._lang();
+    // The live drawing takes the static one's place.
+    this._drawn = true;
+    this._box?.classList.remove('static');
     this._renderTable(shown, !!stale);
     this._renderBar(r, !!stale);
     this._renderDiagnostics(r.diagnostics);

@@ -5,7 +5,8 @@
 //   --screwcut-bg       drawing background   (default #fff)
 //   --screwcut-accent   link and focus colour (default #1d4ed8)
 //
-// Parts: ::part(box) the frame, ::part(code) the listing, ::part(open) the link.
+// Parts: ::part(box) the frame, ::part(code) the listing, ::part(open) the
+// link, ::part(fallback) the static drawing shown until the live one is ready.
 
 export const STYLE = `
 :host { display: block; margin: 1em 0; color: #111827; font: 13px/1.4 system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif; }
@@ -22,6 +23,12 @@ export const STYLE = `
 .views:not(:has(> .view:not(.table) ~ .view:not(.table))) > .view,
 .views:has(> [data-view="tooth"]):has(> [data-view="starts"]) > [data-view="side"] { grid-column: 1 / -1; }
 @container (max-width: 560px) { .views { grid-template-columns: minmax(0, 1fr); } }
+/* A static drawing placed inside the element (screwcut svg's output) shows
+   until the live drawing is ready; without script the page shows it as is. */
+.fallback { display: none; }
+.box.static .fallback { display: block; line-height: 0; }
+.box.static .fallback ::slotted(svg) { max-width: 100%; height: auto; }
+.box.static .views { visibility: hidden; height: 0; overflow: hidden; }
 .view { position: relative; background: var(--screwcut-bg, #fff); min-width: 0; height: var(--h, 320px); display: flex; flex-direction: column; }
 /* A drawing's caption is a line above its canvas, so that no label goes under it. */
 .view canvas { display: block; width: 100%; flex: 1; min-height: 0; cursor: grab; touch-action: pan-y; }
