@@ -293,6 +293,21 @@ try {
   const hidden = await page.evaluate(() => document.getElementById('with-fallback').querySelector('svg').getBoundingClientRect().height);
   check('once drawn, the live drawing takes its place', staticAfter.state === 'ready' && staticAfter.canvases[0].n > 400 && hidden === 0, JSON.stringify({ state: staticAfter.state, px: staticAfter.canvases[0].n, hidden }));
 
+  // ---- the site as a static host serves it: precompressed, revalidated ----
+  const wasmUrl = new URL('screwcut_bg.wasm', base).href;
+  const plain = await fetch(wasmUrl, { headers: { 'accept-encoding': 'identity' } });
+  const plainBytes = (await plain.arrayBuffer()).byteLength;
+  const zipped = await fetch(wasmUrl, { headers: { 'accept-encoding': 'gzip' } });
+  const zippedBytes = (await zipped.arrayBuffer()).byteLength;
+  check(
+    'the wasm is served gzip-encoded to a browser that accepts it, the same bytes decoded',
+    zipped.headers.get('content-encoding') === 'gzip' && plain.headers.get('content-encoding') === null && zippedBytes === plainBytes && plainBytes > 100000,
+    JSON.stringify({ enc: zipped.headers.get('content-encoding'), plainBytes, zippedBytes }),
+  );
+  const tag = zipped.headers.get('etag');
+  const again = await fetch(wasmUrl, { headers: { 'if-none-match': tag || '' } });
+  check('… with an ETag: asked again with it, 304 and no body', Boolean(tag) && again.status === 304, JSON.stringify({ tag, status: again.status }));
+
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shots, 'docs-page.png'), fullPage: true });
   check('no console or page errors', problems.length === 0, JSON.stringify(problems));

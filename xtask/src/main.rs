@@ -8,6 +8,7 @@
 
 mod bench;
 mod install;
+mod precompress;
 mod server;
 mod web;
 

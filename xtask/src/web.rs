@@ -313,13 +313,18 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
         copy(&examples.join(&file), &out.join("examples").join(&file))?;
     }
     copy(&examples.join("index.json"), &out.join("examples").join("index.json"))?;
+    crate::precompress::precompress(out)?;
     let size = |f: &str| std::fs::metadata(out.join(f)).map(|m| m.len().div_ceil(1024)).unwrap_or(0);
+    let gz = |f: &str| crate::precompress::gz_size(&out.join(f)).div_ceil(1024);
     eprintln!(
-        "site: {} (wasm {} KiB, app.js {} KiB, screwcut-preview.js {} KiB)\nwasm: {opt}",
+        "site: {} (wasm {} KiB, gzip {} KiB; app.js {} KiB, gzip {} KiB; screwcut-preview.js {} KiB, gzip {} KiB)\nwasm: {opt}",
         out.display(),
         size("screwcut_bg.wasm"),
+        gz("screwcut_bg.wasm"),
         size("app.js"),
-        size("screwcut-preview.js")
+        gz("app.js"),
+        size("screwcut-preview.js"),
+        gz("screwcut-preview.js")
     );
     Ok(opt)
 }
