@@ -293,6 +293,11 @@ try {
   const hidden = await page.evaluate(() => document.getElementById('with-fallback').querySelector('svg').getBoundingClientRect().height);
   check('once drawn, the live drawing takes its place', staticAfter.state === 'ready' && staticAfter.canvases[0].n > 400 && hidden === 0, JSON.stringify({ state: staticAfter.state, px: staticAfter.canvases[0].n, hidden }));
 
+  // ---- the element's documentation exists once: the page links to its README ----
+  const readme = await page.evaluate(() => document.getElementById('element-readme').href);
+  const readmeText = await (await fetch(readme)).text();
+  check("the page links to the element's README, which documents every attribute", readmeText.includes('## Attributes') && readmeText.includes('`hide-code`') && readmeText.includes('## In mdBook'), readme);
+
   // ---- the site as a static host serves it: precompressed, revalidated ----
   const wasmUrl = new URL('screwcut_bg.wasm', base).href;
   const plain = await fetch(wasmUrl, { headers: { 'accept-encoding': 'identity' } });

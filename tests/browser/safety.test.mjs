@@ -18,7 +18,7 @@
 //   by route interception), a too-large or non-http `src` is refused in
 //   the element; unknown dialect and bad `settings=` entries are listed;
 //   the element folder of `cargo xtask dist`, copied next to a page of
-//   another site as docs/embed.md says, opens its app from "Open in editor".
+//   another site as the element's README says, opens its app from "Open in editor".
 // Timings are not asserted. Screenshots go to tests/browser/screenshots/.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
@@ -402,7 +402,7 @@ try {
   check('a src= that is not http(s) is refused in the element', e.state === 'error' && e.summary.includes('not an http(s) or relative URL') && !('data:text' in seenHeaders), e.summary);
   await embed.close();
 
-  // ---- the element folder vendored next to another site's page, as docs/embed.md says ----
+  // ---- the element folder vendored next to another site's page, as the element's README says ----
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-vendored-'));
   const folder = path.join(dir, 'guide', 'element');
   fs.mkdirSync(path.join(folder, 'examples'), { recursive: true });

@@ -1,13 +1,16 @@
-//! Project automation: `cargo xtask test | serve | dist | bench`.
+//! Project automation: `cargo xtask test | serve | dist | book | bench`.
 //!
 //! Everything a fresh machine needs is installed from here (wasm target,
 //! wasm-bindgen CLI at the version in Cargo.lock, Chromium and ChromeDriver
-//! and LinuxCNC's `rs274` from the Debian packages, npm packages including
-//! the pinned binaryen),
+//! and LinuxCNC's `rs274` from the Debian packages, mdBook at the version
+//! of `mdbook-preprocessor` in Cargo.lock, npm packages including the
+//! pinned binaryen and TypeScript),
 //! so the README's two commands work on a new clone.
 
 mod bench;
+mod book;
 mod install;
+mod package;
 mod precompress;
 mod server;
 mod web;
@@ -20,6 +23,7 @@ fn usage() -> ExitCode {
          commands:\n  \
          serve [--port N]   build the web app (release wasm) and serve it on 127.0.0.1:8080\n  \
          dist               write the deployable static site to dist/\n  \
+         book [--port N]    build the example book (docs/book) with mdbook-screwcut and serve it\n  \
          test               run every test: fmt, clippy, native, wasm (Node and Chromium), browser\n  \
          bench              print the performance figures: native throughput and memory, gcode-toolpath\n                     side by side, edit-to-frame and wasm plan time in Chromium, wasm size\n"
     );
@@ -35,6 +39,7 @@ fn main() -> ExitCode {
         "dist" => web::dist(rest),
         "test" => test(rest),
         "bench" => bench::bench(rest),
+        "book" => book::book(rest),
         _ => return usage(),
     };
     match result {

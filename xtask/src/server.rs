@@ -119,7 +119,7 @@ pub fn mime(path: &Path) -> &'static str {
         "svg" => "image/svg+xml",
         "png" => "image/png",
         "ico" => "image/x-icon",
-        "nc" | "txt" => "text/plain; charset=utf-8",
+        "nc" | "ngc" | "txt" | "md" => "text/plain; charset=utf-8",
         _ => "application/octet-stream",
     }
 }
@@ -147,6 +147,7 @@ mod tests {
         assert_eq!(mime(Path::new("index.html")), "text/html; charset=utf-8");
         assert_eq!(mime(Path::new("examples/index.json")), "application/json; charset=utf-8");
         assert_eq!(mime(Path::new("LICENSE")), "application/octet-stream");
+        assert_eq!(mime(Path::new("element/README.md")), "text/plain; charset=utf-8");
     }
 
     /// A real request: a file, a missing one, and a way out of the folder.

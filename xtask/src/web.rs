@@ -40,6 +40,8 @@ pub fn serve(args: &[String]) -> Result {
     }
     let out = target_dir()?.join("site");
     build_site(true, &out)?;
+    // docs.html links to the element's README in its folder.
+    write_element_package(&out, &out.join("element"))?;
     let server = server::bind(port)?;
     eprintln!("serving {} on http://127.0.0.1:{port}/ (Ctrl-C to stop)", out.display());
     server::serve_forever(server, out);
@@ -76,7 +78,7 @@ pub const ELEMENT_FILES: [&str; 4] = ["screwcut-preview.js", "screwcut_bg.wasm",
 pub const APP_FILES: [&str; 5] = ["index.html", "app.js", "worker.js", "style.css", "favicon.svg"];
 
 /// Writes `dir` (emptied first) as the vendorable element package, from the built site `site`.
-fn write_element_package(site: &Path, dir: &Path) -> Result {
+pub fn write_element_package(site: &Path, dir: &Path) -> Result {
     if dir.exists() {
         std::fs::remove_dir_all(dir).map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
     }
@@ -91,6 +93,10 @@ fn write_element_package(site: &Path, dir: &Path) -> Result {
     let version = crate_version(&read(&root().join("Cargo.toml"))?)?;
     write(&dir.join("package.json"), &element_package_json(&version))?;
     copy(&root().join("www").join("element").join("README.md"), &dir.join("README.md"))?;
+    copy(&root().join("www").join("element").join("screwcut-preview.d.ts"), &dir.join("screwcut-preview.d.ts"))?;
+    for licence in ["LICENSE-MIT", "LICENSE-APACHE"] {
+        copy(&root().join(licence), &dir.join(licence))?;
+    }
     for f in ELEMENT_FILES[..2].iter().chain(&APP_FILES[1..3]) {
         let size = std::fs::metadata(dir.join(f)).map(|m| m.len()).unwrap_or(0);
         eprintln!("element: {f} {} KiB", size.div_ceil(1024));
@@ -116,16 +122,22 @@ fn element_package_json(version: &str) -> String {
         r#"{{
   "name": "screwcut-preview",
   "version": "{version}",
-  "description": "<screwcut-preview>: a live diagram of CNC lathe thread-cutting G-code (GSK980TDc, Fanuc 0i, Renhe) for documentation pages",
+  "description": "<screwcut-preview>: a live diagram of CNC lathe thread-cutting G-code (GSK980TDc, Fanuc 0i, Renhe, LinuxCNC) for documentation pages",
   "license": "MIT OR Apache-2.0",
   "type": "module",
   "main": "screwcut-preview.js",
   "module": "screwcut-preview.js",
+  "types": "screwcut-preview.d.ts",
   "exports": {{
-    ".": "./screwcut-preview.js",
-    "./screwcut_bg.wasm": "./screwcut_bg.wasm"
+    ".": {{
+      "types": "./screwcut-preview.d.ts",
+      "default": "./screwcut-preview.js"
+    }},
+    "./screwcut_bg.wasm": "./screwcut_bg.wasm",
+    "./app": "./index.html",
+    "./package.json": "./package.json"
   }},
-  "files": ["screwcut-preview.js", "screwcut_bg.wasm", "README.md", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "examples/"],
+  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "examples/"],
   "sideEffects": true,
   "keywords": ["cnc", "lathe", "g-code", "thread", "web-component", "custom-element", "wasm"]
 }}
@@ -221,7 +233,10 @@ fn passed_count(line: &str) -> Option<u32> {
 /// the thread wizard and "Expand to blocks" (`tools.test.mjs`), and a
 /// program with subprograms: passes and diagnostics with their calls
 /// (`calls.test.mjs`), what a new user hits (`newuser.test.mjs`), and
-/// "Compare with…" (`compare.test.mjs`);
+/// "Compare with…" (`compare.test.mjs`), and the example book built by
+/// mdBook with `mdbook-screwcut`: live, without JavaScript, in print
+/// (`book.test.mjs`), and the element installed from its npm package
+/// (`package.test.mjs`);
 /// fails when any fails.
 pub fn browser_tests() -> Result {
     ensure_chromium()?;
@@ -230,6 +245,12 @@ pub fn browser_tests() -> Result {
         return Err(format!("the wasm under test was not size-optimised as a release is ({why})"));
     }
     write_element_package(&out, &out.join("element"))?;
+    // The example book, served beside the site, and the preprocessor's build-time messages.
+    crate::book::build_example(&out.join("element"), &out.join("book"))?;
+    crate::book::check_build_messages(&out.join("element"), &target_dir()?.join("book-scratch"))?;
+    // The element as an npm package, installed into a page served at pkg-scratch/.
+    ensure_npm(&root().join("tests").join("browser"))?;
+    crate::package::pack_and_install(&out.join("element"), &out.join("pkg-scratch"))?;
     let dir = root().join("tests").join("browser");
     ensure_npm(&dir)?;
     let server = server::bind(0)?;
@@ -250,6 +271,8 @@ pub fn browser_tests() -> Result {
         "calls.test.mjs",
         "newuser.test.mjs",
         "compare.test.mjs",
+        "book.test.mjs",
+        "package.test.mjs",
     ]
     .map(|t| run("node", &[t, &url], Some(&dir)));
     rest.into_iter().fold(app, |all, r| all.and(r))
@@ -450,7 +473,7 @@ fn example_files(index: &str) -> Result<Vec<String>> {
 }
 
 /// Cargo's target directory: `CARGO_TARGET_DIR`, else what `cargo metadata` says.
-fn target_dir() -> Result<PathBuf> {
+pub fn target_dir() -> Result<PathBuf> {
     if let Some(dir) = std::env::var_os("CARGO_TARGET_DIR").filter(|d| !d.is_empty()) {
         let dir = PathBuf::from(dir);
         return Ok(if dir.is_absolute() { dir } else { root().join(dir) });
@@ -467,7 +490,7 @@ fn target_dir() -> Result<PathBuf> {
     Ok(PathBuf::from(text[at..at + end].replace("\\\\", "\\")))
 }
 
-fn path_str(p: &Path) -> Result<String> {
+pub fn path_str(p: &Path) -> Result<String> {
     p.to_str().map(str::to_string).ok_or_else(|| format!("path is not UTF-8: {}", p.display()))
 }
 

@@ -48,6 +48,7 @@ export class ScrewcutPreview extends HTMLElement {
     super();
     this.attachShadow({ mode: 'open' });
     this._text = null; // the program, once read
+    this._staticOld = false; // the program or an attribute changed since the static drawing inside
     this._state = 'idle'; // idle → loading → ready | error
     this._views = {}; // name → SceneView
     this._result = null;
@@ -77,6 +78,7 @@ export class ScrewcutPreview extends HTMLElement {
 
   attributeChangedCallback(name, old, value) {
     if (!this._built || old === value) return;
+    if (name !== 'app' && name !== 'lang') this._edited();
     if (LAYOUT.has(name)) {
       this._build();
       if (this._state === 'ready') this._plan();
@@ -92,6 +94,22 @@ export class ScrewcutPreview extends HTMLElement {
     }
   }
 
+  /**
+   * The box's classes: `static` while a static drawing placed inside shows
+   * in place of the live one; `printable` while that drawing is still of
+   * the program and attributes shown (print uses it, crisp at any scale).
+   */
+  _boxClasses() {
+    if (!this.querySelector(':scope > svg')) return '';
+    return (this._drawn ? '' : ' static') + (this._staticOld ? '' : ' printable');
+  }
+
+  /** The program or an attribute it was drawn with changed: the static drawing no longer shows it. */
+  _edited() {
+    this._staticOld = true;
+    this._box?.classList.remove('printable');
+  }
+
   /** The G-code shown (the text content, without a static drawing inside, or `src` until set). */
   get program() {
     if (this._text !== null) return this._text;
@@ -102,6 +120,7 @@ export class ScrewcutPreview extends HTMLElement {
 
   set program(text) {
     this._text = String(text);
+    this._edited();
     if (this._editor && this._editor.value !== this._text) this._editor.value = this._text;
     this._renderListing();
     if (this._state === 'ready') this._schedule();
@@ -163,7 +182,7 @@ export class ScrewcutPreview extends HTMLElement {
       )
       .join('');
     this.shadowRoot.innerHTML =
-      `<style>${STYLE}</style><div class="box${this._drawn || !this.querySelector(':scope > svg') ? '' : ' static'}" part="box" style="--h:${h}px">` +
+      `<style>${STYLE}</style><div class="box${this._boxClasses()}" part="box" style="--h:${h}px">` +
       `<div class="fallback" part="fallback"><slot name="fallback"></slot></div><div class="views">${panes}</div>` +
       (editable ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>` : this.hasAttribute('hide-code') ? '' : `<pre class="code" part="code"></pre>`) +
       `<div class="bar"><span class="sum">${esc(this._t('loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
@@ -188,6 +207,7 @@ export class ScrewcutPreview extends HTMLElement {
       this._editor.value = this.program;
       this._editor.addEventListener('input', () => {
         this._text = this._editor.value;
+        this._edited();
         this._schedule();
       });
     }

@@ -6,7 +6,8 @@
 //   --screwcut-accent   link and focus colour (default #1d4ed8)
 //
 // Parts: ::part(box) the frame, ::part(code) the listing, ::part(open) the
-// link, ::part(fallback) the static drawing shown until the live one is ready.
+// link, ::part(fallback) the static drawing shown until the live one is ready
+// (and in print, while it shows the element's program).
 
 export const STYLE = `
 :host { display: block; margin: 1em 0; color: #111827; font: 13px/1.4 system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif; }
@@ -29,6 +30,11 @@ export const STYLE = `
 .box.static .fallback { display: block; line-height: 0; }
 .box.static .fallback ::slotted(svg) { max-width: 100%; height: auto; }
 .box.static .views { visibility: hidden; height: 0; overflow: hidden; }
+/* In print the static drawing stands for the live one while it shows the same program. */
+@media print {
+  .box.printable .fallback { display: block; line-height: 0; }
+  .box.printable .views > .view:not(.table) { display: none; }
+}
 .view { position: relative; background: var(--screwcut-bg, #fff); min-width: 0; height: var(--h, 320px); display: flex; flex-direction: column; }
 /* A drawing's caption is a line above its canvas, so that no label goes under it. */
 .view canvas { display: block; width: 100%; flex: 1; min-height: 0; cursor: grab; touch-action: pan-y; }
