@@ -11,6 +11,8 @@
 // - long tasks on the page's thread while typing; the worker's re-plan time;
 // - the 3-line L99 program (334,125 motions) opened from a link: the page
 //   ready, a click answered, a keystroke's Event Timing;
+// - one block-by-block thread of many passes put into the editor at 0.5, 1,
+//   2 and 5 MB: the change to its plan on the page (cost in proportion);
 // - the wasm planner's rate on the 20 MB program, on the page.
 // Usage: node browser.mjs SITE_DIR PKG_DIR PROGRAM_20MB LOOPS_5000
 // Prints figures, and `FIG name value` lines for `cargo xtask bench`;
@@ -193,6 +195,41 @@ async function l99() {
   fig('l99_key_mark', m.mark);
 }
 
+/**
+ * One block-by-block thread of many passes (the four lines `X47.1 / G32
+ * Z13.0 F2.0 / G00 X58.0 / Z70.0` repeated) put into the app's editor in one
+ * change at 0.5, 1, 2 and 5 MB: the time from the change to the plan's
+ * answer on the page (the work in proportion to the text: ms per MB).
+ */
+async function pasted() {
+  const page = await ctx.newPage();
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+  const block = 'X47.1\nG32 Z13.0 F2.0\nG00 X58.0\nZ70.0\n';
+  const parts = [];
+  for (const mb of [0.5, 1, 2, 5]) {
+    const text = `G00 X58.0 Z70.0\n${block.repeat(Math.ceil((mb * 1e6) / block.length))}`;
+    const lines = text.split('\n').length;
+    await page.evaluate(() => {
+      const v = window.__screwcut.editor().view;
+      v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: 'G00 X58 Z70\n' } });
+    });
+    await page.waitForFunction(() => window.__screwcut.updates.some((u) => u.lines === 2), null, { timeout: 60_000 });
+    const ms = await page.evaluate(async ([text, lines]) => {
+      const t = performance.now();
+      const v = window.__screwcut.editor().view;
+      v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } });
+      while (!window.__screwcut.updates.some((u) => u.lines === lines)) await new Promise((r) => setTimeout(r, 5));
+      return performance.now() - t;
+    }, [text, lines]);
+    const tag = String(mb).replace('.', '_');
+    fig(`paste_${tag}mb`, ms);
+    parts.push(`${mb} MB ${ms.toFixed(0)} ms (${(ms / mb).toFixed(0)} ms/MB)`);
+  }
+  await page.close();
+  console.log(`  one thread of many passes put into the editor, to its plan on the page: ${parts.join(', ')}`);
+}
+
 /** The wasm planner on the 20 MB program, on a page of its own (glue from /pkg/, the site's optimised wasm). */
 async function wasmRate() {
   const page = await ctx.newPage();
@@ -227,6 +264,7 @@ try {
   await typing({ ...fanuc, line: lines.indexOf('#10=#2*1.227'), tag: 'k5loopsub', what: '5000 lines with loops and subprograms, in the macro O9010' });
   await typing({ ...gsk, text: program(50000), tag: 'k50', what: '50000 lines, in the first pass' });
   await l99();
+  await pasted();
   await wasmRate();
 } finally {
   await ctx.close();

@@ -11,6 +11,9 @@
 //   the page responsive: the pass table keeps a few dozen rows in the DOM,
 //   the drawings are summarised, a button answers while the engine works,
 //   and no long task holds the page. Timings are printed, not asserted.
+// - 10 MB of one thread put in at once: while it plans, the side section,
+//   the faded drawings and the footer say that they show an earlier text;
+//   once planned, they no longer do.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import path from 'node:path';
@@ -149,6 +152,38 @@ try {
       `re-plan in the worker ${after.last.plan.toFixed(0)} ms; page long tasks: ${after.long.length} (longest ${Math.max(0, ...after.long).toFixed(0)} ms)`,
   );
   await page.screenshot({ path: path.join(shots, 'engine-l99.png') });
+
+  // ---- the picture behind the text: 10 MB of one thread put in at once ----
+  const block = 'X47.1\nG32 Z13.0 F2.0\nG00 X58.0\nZ70.0\n';
+  const big = `G00 X58.0 Z70.0\n${block.repeat(Math.ceil(10e6 / block.length))}`;
+  const bigLines = big.split('\n').length;
+  await page.evaluate((text) => {
+    const v = window.__screwcut.editor().view;
+    v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } });
+  }, big);
+  const seen = {};
+  await page.waitForSelector('body[data-behind="true"]', { timeout: 20_000 }).catch(() => {});
+  Object.assign(
+    seen,
+    await page.evaluate(() => {
+      const b = document.getElementById('behind');
+      return {
+        banner: b.hidden ? '' : b.textContent,
+        faded: getComputedStyle(document.getElementById('side')).opacity,
+        footer: getComputedStyle(document.getElementById('summary'), '::before').content,
+      };
+    }),
+  );
+  await page.screenshot({ path: path.join(shots, 'engine-behind.png') });
+  await page.waitForFunction((lines) => window.__screwcut.updates.some((u) => u.lines === lines), bigLines, { timeout: 60_000 }).catch(() => {});
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 100)));
+  seen.after = await page.evaluate(() => ({ behind: document.body.dataset.behind ?? null, hidden: document.getElementById('behind').hidden }));
+  check(
+    'while 10 MB plans, the side section says the drawing is of an earlier text, faded, and the footer too',
+    /^Planning the text as it is now \([\d.]+ s\)… the drawings and the table show an earlier text\.$/.test(seen.banner || '') && Number(seen.faded) < 0.5 && seen.footer === '"Earlier text: "',
+    JSON.stringify(seen),
+  );
+  check('… and once it is planned, they no longer do', seen.after.behind === null && seen.after.hidden === true, JSON.stringify(seen.after));
   check('no page errors', problems.length === 0, JSON.stringify(problems));
 } catch (e) {
   check('the engine test ran to the end', false, e && e.stack ? e.stack : String(e));

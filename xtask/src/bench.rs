@@ -82,6 +82,16 @@ const FIGURES: &[Figure] = &[
         key: "l99_key_event", what: "L99: a keystroke to next paint", before: "—", target: "≤ 100", unit: "ms"
     },
     Figure {
+        key: "paste_0_5mb",
+        what: "one thread put in the editor, 0.5 MB: to its plan",
+        before: "282",
+        target: "linear",
+        unit: "ms",
+    },
+    Figure { key: "paste_1mb", what: "… 1 MB", before: "1700", target: "linear", unit: "ms" },
+    Figure { key: "paste_2mb", what: "… 2 MB", before: "> 45000", target: "linear", unit: "ms" },
+    Figure { key: "paste_5mb", what: "… 5 MB", before: "> 45000", target: "linear", unit: "ms" },
+    Figure {
         key: "wasm_20mb_rate", what: "wasm planner, 20 MB program", before: "62", target: "≥ 100", unit: "MB/s"
     },
     Figure {

@@ -11,6 +11,7 @@ import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
 import { diagnosticRow, passHead, passLines, passRow, passVia, patchRows, threadName, tipText, VirtualRows } from '../shared/lists.js';
 import { esc, num } from '../shared/table.js';
 import { bindListKeys, labelViews } from './a11y.js';
+import { showBehind } from './behind.js';
 import { bindDesignation, DESIGNATION, renderCheck } from './check.js';
 import { Compare } from './compare.js';
 import { fileName, fillPrintSheet, openFile } from './files.js';
@@ -394,7 +395,7 @@ async function main() {
     onMessage,
   });
   client = started.client;
-  planning = new Planning((m) => client.send(m));
+  planning = new Planning((m) => client.send(m), showBehind);
   settingsPanel = new SettingsPanel($('settings-form'), { table: (dialect) => client.request('table', { what: 'settings', dialect }), t, lang: getLang });
   dialects = started.dialects;
   probe.mode = client.mode;

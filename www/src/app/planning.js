@@ -3,19 +3,29 @@
 // measuring keystroke → drawing), whether the drawing on screen was left
 // (the session keeps it as the good one, shown greyed while a later text has
 // an alarm: src/wasm/shown.rs), and the lists of the plans the session
-// names: the latest and the good one. Its state is one value, changed only
-// by the methods below.
+// names: the latest and the good one; and whether the drawing is behind the
+// text (a plan that takes longer than a moment). Its state is one value,
+// changed only by the methods below.
 
 /** A drawing shown this long before the next edit was one the user left (not a keystroke on the way). */
 export const LEFT_MS = 1000;
 
+/** A text not planned this long after it was sent: the drawing is behind it, and the page says so. */
+export const BEHIND_MS = 400;
+
 export class Planning {
   /**
    * @param send `send(message)` to the engine
+   * @param onBehind `onBehind(since)`: the drawing on screen is behind the
+   *   text since `since` (a performance.now() time), or caught up (`null`)
    */
-  constructor(send) {
+  constructor(send, onBehind = () => {}) {
     this.send = send;
+    this.onBehind = onBehind;
+    this.timer = null;
     this.s = {
+      behindSince: null, // when the first text not yet drawn was sent (null: the drawing is of the text)
+      behind: false, // the page says the drawing is behind
       seq: 0,
       inFlight: null, // {seq, doc, t0, typed} of the plan the engine is working on
       wanted: false, // the text changed while a plan was in flight
@@ -63,7 +73,33 @@ export class Planning {
     }
     this.send({ type: 'plan', seq: s.seq, ...request, input: s.inputs.get(s.seq) ?? null, fresh: s.fresh, keep });
     s.fresh = false;
+    if (s.behindSince === null) s.behindSince = s.inFlight.t0;
+    this.armBehind();
     return true;
+  }
+
+  /** Says "behind" once the text sent first has waited BEHIND_MS without an answer that caught up. */
+  armBehind() {
+    if (this.timer !== null || this.s.behind) return;
+    const wait = Math.max(0, BEHIND_MS - (performance.now() - this.s.behindSince));
+    this.timer = setTimeout(() => {
+      this.timer = null;
+      if (this.s.behindSince === null) return;
+      this.s.behind = true;
+      this.onBehind(this.s.behindSince);
+    }, wait);
+  }
+
+  /** The drawing is of the text: no longer behind. */
+  caughtUp() {
+    const s = this.s;
+    if (this.timer !== null) clearTimeout(this.timer);
+    this.timer = null;
+    s.behindSince = null;
+    if (s.behind) {
+      s.behind = false;
+      this.onBehind(null);
+    }
   }
 
   /**
@@ -90,6 +126,7 @@ export class Planning {
       // The document is immutable: another one is another text (no walk of a long program to compare).
       again = s.wanted || doc !== s.inFlight.doc;
       s.inFlight = null;
+      if (!again) this.caughtUp();
     }
     return { shown: stale ? good : r, stale, again, t0 };
   }
@@ -105,6 +142,7 @@ export class Planning {
   /** The engine failed: nothing is in flight any more. */
   failed() {
     this.s.inFlight = null;
+    this.caughtUp();
   }
 
   /** The keystroke a drawn plan `seq` answered (or `input`), once: null when none. */
