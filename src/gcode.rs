@@ -108,6 +108,9 @@ pub enum G {
     /// block sets the depth of cut and the escape, its second (with P and Q)
     /// roughs over the contour N(P) … N(Q).
     Rough(crate::cycle::rough::Along),
+    /// LinuxCNC's G70 `Q- X- Z- F-`: a rapid to X/Z, then the finishing
+    /// pass over the profile of subroutine o(Q) (run by the program flow).
+    LinuxFinish,
     /// Known to the controller but not drawn; `returns` says whether the tool ends where it started.
     NotSimulated {
         /// What it is.

@@ -326,6 +326,7 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
             r.rapid(&t, b.line, b.span);
         }
         G::Rough(along) => rough(r, b, w, along),
+        G::LinuxFinish => linux_finish(r, b, w),
         G::NotSimulated { what, returns } => {
             noted(r, &msg::NOT_DRAWN, w, what);
             if !returns {
@@ -369,6 +370,29 @@ fn rough(r: &mut Reader, b: &Block, w: &Word, along: crate::cycle::rough::Along)
         r.m.feed_line = b.line;
     }
     r.m.rough_call = Some(Rough { along, depth, escape, du, dw });
+}
+
+/// LinuxCNC's G70 `Q- X- Z- F-` (the LinuxCNC manual's G70 "finishing
+/// cycle": the profile is subroutine o(Q)): a rapid to X/Z, F the feed, and
+/// the program flow runs the profile once as the finishing pass (as rs274
+/// does: its first move a traverse, the others fed). With D, E or P (extra
+/// distances, several passes) it is not drawn.
+fn linux_finish(r: &mut Reader, b: &Block, w: &Word) {
+    r.m.finish_q = None;
+    let q = b.get(b'Q').map(|v| v.value()).filter(|v| v.fract() == 0.0 && (0.0..1e9).contains(v));
+    if q.is_none() || b.has(b'D') || b.has(b'E') || b.has(b'P') {
+        noted(r, &msg::NOT_DRAWN, w, &msg::NS_LATHE_CYCLE);
+        return;
+    }
+    if b.has(b'X') || b.has(b'Z') {
+        let t = r.target(b);
+        r.rapid(&t, b.line, b.span);
+    }
+    if let Some(f) = b.get(b'F') {
+        r.m.feed = Some(f.value());
+        r.m.feed_line = b.line;
+    }
+    r.m.finish_q = q.map(|v| v as u32);
 }
 
 /// G50 X Z: the current position gets these coordinates; U/W shift them. G50 S clamps the spindle.

@@ -232,7 +232,17 @@ impl Reading {
     fn rough(&mut self, c: crate::exec::Capture) {
         self.it.m = *c.modal;
         self.it.m.rough_call = None;
-        let moves = crate::cycle::rough::passes(&c.rough, c.start, &c.points, c.line, c.span);
+        self.it.m.finish_q = None;
+        let moves = match &c.rough {
+            Some(r) => crate::cycle::rough::passes(r, c.start, &c.points, c.line, c.span),
+            None => {
+                // A finishing pass ends where its profile does.
+                if let Some(&end) = c.points.last() {
+                    self.it.m.pos.p = end;
+                }
+                crate::cycle::rough::finish(c.start, &c.points, c.line, c.span)
+            }
+        };
         self.events.push(Event::Close);
         for m in moves {
             self.events.push(match m.kind {
@@ -292,6 +302,10 @@ impl Reading {
     fn flow(&mut self, text: &str, here: At, next: At, block: &mut Block) -> (Flow, Option<At>) {
         let (flow, jump) = self.step_flow(text, here, next, |ex, ctx| ex.before(ctx, block));
         if flow != Flow::Run {
+            // An o-word `endsub` or `return` may end a profile read for a cycle.
+            if let Some(c) = self.exec.captured.take() {
+                self.rough(*c);
+            }
             return (flow, jump);
         }
         self.block(block);

@@ -219,3 +219,41 @@ fn a_roughing_cycle_across_a_checkpoint_plans_again_as_in_full() {
         assert_eq!(inc, screwcut::plan(t, &s), "edit {k}");
     }
 }
+
+/// LinuxCNC's G70 `Q- X- Z- F-` runs the profile of subroutine o(Q) once
+/// as the finishing pass, the moves the G70 block's (rs274 2.9 makes the
+/// profile's first move a traverse and feeds the rest; the whole program is
+/// compared with rs274 move for move in tests/linuxcnc_owords.rs,
+/// `oword-g70-*`): the subroutine's blocks move nothing in line, the tool
+/// ends where the profile does, and a thread cut after it takes its crest
+/// from the outline, which the side section fills as the part. With D, E or
+/// P (extra distances, several passes) G70 is not drawn and says so.
+#[test]
+fn linuxcnc_g70_runs_its_profile_subroutine_as_the_part() {
+    use screwcut::diagram::{Style, side};
+    use screwcut::motion::MoveKind;
+    let text = std::fs::read_to_string("tests/linuxcnc/oword-g70-sought.ngc").unwrap();
+    let plan = plan_with(&text, Dialect::LinuxCnc, &[]);
+    no_alarm(&plan);
+    let g70: Vec<_> = plan.moves.iter().filter(|m| m.line == 5).collect();
+    let ends: Vec<(MoveKind, f64, f64)> = g70.iter().map(|m| (m.kind, m.to.x, m.to.z)).collect();
+    // Radius mode (G8): the profile's X6 … X11 are radii, diameters 12 … 22.
+    assert_eq!(
+        ends,
+        [
+            (MoveKind::Rapid, 12.0, 0.5),
+            (MoveKind::Feed, 16.0, -0.5),
+            (MoveKind::Feed, 16.0, -15.0),
+            (MoveKind::Feed, 22.0, -15.0)
+        ]
+    );
+    assert!(plan.moves.iter().all(|m| m.line < 13), "the subroutine's blocks move nothing in line");
+    assert_eq!(plan.threads[0].crest_source, screwcut::thread::CrestSource::Outline);
+    eq(plan.threads[0].crest, 16.0);
+    assert!(side(&plan).items.iter().any(|i| i.style == Style::Material), "the part is drawn");
+    // With P (several passes) G70 is a not-simulated note, its profile not run.
+    let passes = text.replace("G70 Q200 X12 Z2 F80", "G70 Q200 X12 Z2 F80 P2");
+    let plan = plan_with(&passes, Dialect::LinuxCnc, &[]);
+    assert!(plan.moves.iter().all(|m| m.line != 5 || m.kind == MoveKind::Rapid));
+    assert!(plan.with_code(Code::NotSimulated).any(|d| d.line == 5));
+}

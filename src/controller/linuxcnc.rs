@@ -101,7 +101,8 @@ fn g_code(code10: i64) -> Option<(Group, G)> {
         540 | 550 | 560 | 570 | 580 | 590 | 591 | 592 | 593 | 610 | 611 | 640 | 800 | 911 | 980 | 990 => {
             (Setup, Accepted)
         }
-        700 | 710..=712 | 720..=722 => (OneShot, ns(&crate::message::NS_LATHE_CYCLE, true)),
+        700 => (OneShot, LinuxFinish),
+        710..=712 | 720..=722 => (OneShot, ns(&crate::message::NS_LATHE_CYCLE, true)),
         730 | 740 | 810..=890 => (Motion, ns(&crate::message::NS_DRILLING, true)),
         760 => (Motion, ThreadCycle),
         900 => (Distance, Absolute),

@@ -98,8 +98,8 @@ pub struct Frame {
 /// the cycle block's line and span.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Capture {
-    /// The cycle's words.
-    pub rough: crate::cycle::rough::Rough,
+    /// The cycle's words; `None`: a finishing pass over the profile (LinuxCNC's G70).
+    pub rough: Option<crate::cycle::rough::Rough>,
     /// The start point A (the tool at the cycle block).
     pub start: crate::motion::Point,
     /// The modal state at the cycle block, restored when the contour is read.
@@ -302,6 +302,11 @@ impl Exec {
         if self.modal_call.is_some() && fanuc::g66_call(self, ctx, block, macros) {
             return Flow::Run;
         }
+        if macros.flavor == Flavor::LinuxCnc && !block.has_error {
+            if let Some(flow) = profile::linux_finish(self, ctx, block, macros) {
+                return flow;
+            }
+        }
         if macros.subprograms && !block.has_error {
             if profile::contour_end(self, ctx, block) {
                 return Flow::Run;
@@ -427,7 +432,11 @@ impl Exec {
 
     /// Leaves the innermost call, back to its caller.
     pub fn return_from(&mut self, ctx: &mut Ctx) -> Option<Frame> {
-        let f = self.frames.pop()?;
+        let mut f = self.frames.pop()?;
+        // A contour or profile read for a cycle is complete: the planner takes it.
+        if let Some(c) = f.capture.take() {
+            self.captured = Some(c);
+        }
         self.set_via();
         if f.kind == CallKind::Macro && self.vars.levels.len() > 1 {
             self.vars.levels.pop();

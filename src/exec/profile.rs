@@ -7,8 +7,9 @@
 //! (G70–G76)": the blocks between the sequence numbers P and Q specify the
 //! finishing shape; GSK980TDc user manual §3.20, the same forms).
 //!
-//! The roughing passes of G71–G73 are not planned (their blocks get a
-//! not-simulated note); G70's return to its start point is not drawn.
+//! G71 and G72 rough over the contour (`cycle::rough`); G73 is not planned
+//! (a not-simulated note); G70's return to its start point is not drawn.
+//! LinuxCNC's G70 reads its profile from a subroutine, o(Q), the same way.
 
 use super::{CallKind, Capture, Ctx, Exec, Flow, Macros};
 use crate::args;
@@ -44,7 +45,7 @@ pub fn after(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Op
             return Some(Flow::Run);
         };
         let capture = Capture {
-            rough,
+            rough: Some(rough),
             start: ctx.modal.pos.p,
             modal: Box::new(ctx.modal.clone()),
             points: Vec::new(),
@@ -79,8 +80,47 @@ pub fn contour_end(ex: &mut Exec, ctx: &mut Ctx, block: &Block) -> bool {
     if last.is_none() || n.map(|n| n as u32) != last {
         return false;
     }
-    if let Some(c) = ex.return_from(ctx).and_then(|f| f.capture) {
-        ex.captured = Some(c);
-    }
+    // The frame's capture, if any, goes to the planner (`Exec::captured`).
+    ex.return_from(ctx);
     true
+}
+
+/// After a LinuxCNC G70 the interpreter took (`Modal::finish_q`): its
+/// profile, subroutine o(Q), is read as a contour (not run in line) and the
+/// planner makes it one finishing pass; the program goes on after the G70.
+/// rs274 reads the profile the same way: its moves are G70's, the first a
+/// traverse. `None` when the block is no such G70.
+pub fn linux_finish(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Option<Flow> {
+    let q = ctx.modal.finish_q?;
+    block.all(b'G').find(|w| w.num.integer() == Some(70))?;
+    let label = q.to_string();
+    let known = ex.defined.iter().any(|d| **d == *label);
+    let sub = if known {
+        ctx.sub(&label)
+    } else {
+        ctx.next_oword(&label, ctx.here.offset, &[super::stmt::OKw::Sub]).map(|(_, e)| e)
+    };
+    let span = block.get(b'Q').map_or(block.span, |w| w.span);
+    let Some(sub) = sub else {
+        ctx.diag(&msg::SUB_NOT_FOUND, span, args![label = format!("o{label}")]);
+        return Some(Flow::Run);
+    };
+    if !known {
+        // Found after the call, as for `call`: met again in the flow it is refused.
+        ex.defined.push(label.into());
+    }
+    let capture = Capture {
+        rough: None,
+        start: ctx.modal.pos.p,
+        modal: Box::new(ctx.modal.clone()),
+        points: Vec::new(),
+        line: ctx.here.line,
+        span: block.span,
+    };
+    if ex.call(ctx, CallKind::Macro, sub.next, 0, span, macros) {
+        if let Some(f) = ex.frames.last_mut() {
+            f.capture = Some(Box::new(capture));
+        }
+    }
+    Some(Flow::Run)
 }
