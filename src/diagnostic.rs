@@ -162,12 +162,12 @@ impl Diagnostics {
         }
     }
 
-    /// Moves the kept diagnostics' spans as an edit moved the text.
+    /// Moves the kept diagnostics' spans as an edit moved the text (the
+    /// first dropped one's place is a snapshot's, moved with the snapshot).
     pub fn shift_spans(&mut self, s: crate::span::Shift) {
         for item in &mut self.items {
             item.1 = s.span(item.1);
         }
-        self.first_dropped = self.first_dropped.map(|f| s.span(f));
     }
 
     /// Moves every diagnostic of `other` in, keeping this collector's limit.
