@@ -553,6 +553,15 @@ impl Settings {
         }
     }
 
+    /// Decimals of the least input increment for lengths (3 for 0.001).
+    pub fn length_digits(&self, inch: bool) -> u8 {
+        match (self.int(P::Increment), inch) {
+            (0, false) => 3,
+            (0, true) | (_, false) => 4,
+            (_, true) => 5,
+        }
+    }
+
     /// Least input increment for angles (degrees).
     pub fn angle_increment(&self) -> f64 {
         if self.int(P::Increment) == 0 { 0.001 } else { 0.0001 }

@@ -169,15 +169,15 @@ impl Reader<'_> {
     /// the least input increment has: the control cannot place the tool
     /// finer. LinuxCNC has no input increment.
     fn finer(&mut self, w: &Word) {
-        if self.s.dialect() == crate::Dialect::LinuxCnc {
+        // Said already, or cannot be finer: nothing to work out (this runs for every length).
+        if self.s.dialect() == crate::Dialect::LinuxCnc
+            || self.m.said & crate::state::once::FINER != 0
+            || w.num.frac_digits <= self.s.length_digits(self.m.inch)
+        {
             return;
         }
         let inc = self.s.length_increment(self.m.inch);
-        let digits = (-inc.log10()).round() as u8;
-        if w.num.frac_digits > digits
-            && (w.value() / inc).fract().abs() > 1e-6
-            && self.m.first(crate::state::once::FINER)
-        {
+        if w.num.frac_digits > 0 && (w.value() / inc).fract().abs() > 1e-6 && self.m.first(crate::state::once::FINER) {
             let inch = self.m.inch;
             self.diags.push_with(&msg::FINER_THAN_INCREMENT, w.span, || {
                 args![word = w, increment = inc, unit = msg::unit(inch)]

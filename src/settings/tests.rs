@@ -56,3 +56,18 @@ fn text_settings_take_any_text_up_to_their_length() {
     assert!(matches!(s.assign("macro.variables=#500"), Err(SettingError::BadValue(..))));
     assert!(matches!(s.assign("macro.variables=#500=x"), Err(SettingError::BadValue(..))));
 }
+
+/// The decimals of the least input increment are those of the increment
+/// itself, for IS-B and IS-C, metric and inch.
+#[test]
+fn length_digits_match_the_increment() {
+    for is in [0.0, 1.0] {
+        let mut s = Settings::new(Dialect::Fanuc0i);
+        s.set(P::Increment, is);
+        for inch in [false, true] {
+            let inc = s.length_increment(inch);
+            let d = s.length_digits(inch);
+            assert!((inc - 10f64.powi(-i32::from(d))).abs() < 1e-15, "IS {is} inch {inch}: {inc} vs {d} digits");
+        }
+    }
+}
