@@ -44,11 +44,14 @@ pub fn check(threads: &[Thread], i: usize, ctx: &Context, diags: &mut Diagnostic
     let out = if t.internal { -1.0 } else { 1.0 };
     let window = &ctx.moves[lo.min(hi)..hi];
     let feeds = || window.iter().filter(|m| m.kind == MoveKind::Feed);
+    // The turned diameters (feeds along Z), read once: each face asks them.
+    let axial: Vec<&crate::motion::Move> =
+        feeds().filter(|m| (m.to.z - m.from.z).abs() > 1e-9 && (m.to.x - m.from.x).abs() < 1e-9).collect();
     // A face (a feed along X) is a shoulder when the outline goes on beyond
     // it, in the cut's direction, at a diameter standing proud of the crest.
     let beyond = |z: f64| -> Option<f64> {
-        feeds()
-            .filter(|m| (m.to.z - m.from.z).abs() > 1e-9 && (m.to.x - m.from.x).abs() < 1e-9)
+        axial
+            .iter()
             .filter(|m| {
                 let (near, far) = if (m.from.z - z).abs() < 1e-9 { (m.from, m.to) } else { (m.to, m.from) };
                 (near.z - z).abs() < 1e-9 && (far.z - z) * sense > 1e-9
@@ -125,19 +128,29 @@ pub fn approach(threads: &[Thread], i: usize, ctx: &Context, diags: &mut Diagnos
     let lo = if i == 0 { 0 } else { threads[i - 1].first_move };
     let hi = t.first_move.min(ctx.moves.len());
     let out = if t.internal { -1.0 } else { 1.0 };
+    // The turned diameters (feeds along Z) as (low Z, high Z, X), read once.
+    let axial: Vec<(f64, f64, f64)> = ctx.moves[lo.min(hi)..hi]
+        .iter()
+        .filter(|m| m.kind == MoveKind::Feed && (m.to.x - m.from.x).abs() < 1e-9 && (m.to.z - m.from.z).abs() > 1e-9)
+        .map(|m| (m.from.z.min(m.to.z), m.from.z.max(m.to.z), m.to.x))
+        .collect();
     let turned = |z: f64| -> Option<f64> {
-        ctx.moves[lo.min(hi)..hi]
+        axial
             .iter()
-            .filter(|m| {
-                m.kind == MoveKind::Feed && (m.to.x - m.from.x).abs() < 1e-9 && (m.to.z - m.from.z).abs() > 1e-9
-            })
-            .filter(|m| z > m.from.z.min(m.to.z) + 1e-9 && z < m.from.z.max(m.to.z) - 1e-9)
-            .map(|m| m.to.x)
+            .filter(|&&(a, b, _)| z > a + 1e-9 && z < b - 1e-9)
+            .map(|&(_, _, x)| x)
             .reduce(|a, b| if (b - a) * out > 0.0 { b } else { a })
     };
+    // Passes mostly start at one Z: its answer is kept.
+    let mut last: Option<(f64, Option<f64>)> = None;
     for p in &t.passes {
         let start = p.screw_in_from.unwrap_or(p.from);
-        let Some(part) = turned(start.z) else { continue };
+        let part = match last {
+            Some((z, part)) if z == start.z => part,
+            _ => turned(start.z),
+        };
+        last = Some((start.z, part));
+        let Some(part) = part else { continue };
         if (part - start.x) * out > 1e-6 {
             let span = ctx.moves.get(p.moves.cut.start).map_or_else(|| (ctx.spans)(t.line), |m| m.span);
             diags.push(
