@@ -13,11 +13,21 @@
 //   ready, a click answered, a keystroke's Event Timing;
 // - one block-by-block thread of many passes put into the editor at 0.5, 1,
 //   2 and 5 MB: the change to its plan on the page (cost in proportion);
-// - the wasm planner's rate on the 20 MB program, on the page.
+// - the wasm planner's rate on the 20 MB program, on the page;
+// - the floor: the project's own editor alone (bench/editor-alone.js) and the
+//   app typed into alternately, the same keys at the same line of the same
+//   5,000- and 50,000-line program: keystroke to next paint on the bare
+//   editor, keystroke to the diagram on screen in the app (the later of the
+//   next paint and the committed drawing that includes the keystroke),
+//   and their ratio;
+// - a first load's transferred bytes by file (Resource Timing, the site's
+//   precompressed files served as a static host serves them): the app and a
+//   page with one embedded diagram.
 // Usage: node browser.mjs SITE_DIR PKG_DIR PROGRAM_20MB LOOPS_5000
 // Prints figures, and `FIG name value` lines for `cargo xtask bench`;
 // asserts nothing.
 import { chromium } from 'playwright-core';
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
@@ -25,14 +35,39 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 
 const [site, pkg, big, loops] = process.argv.slice(2);
+const here = path.dirname(new URL(import.meta.url).pathname);
+const www = path.join(here, '..', 'www');
+/** The bare editor's page and bundle (esbuild from www's packages), and the texts it opens. */
+const alone = {
+  html: '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>editor alone</title><link rel="stylesheet" href="style.css"></head>' +
+    '<body><section id="code" style="position:fixed;left:0;top:0"><div id="editor"></div></section><script type="module" src="editor-alone.js"></script></body></html>',
+  js: execFileSync(path.join(www, 'node_modules', '.bin', 'esbuild'), [path.join(here, 'editor-alone.js'), '--bundle', '--format=esm', '--target=es2022', '--minify'], { cwd: www, maxBuffer: 1 << 26 }),
+  texts: new Map(),
+};
+/** A page with one embedded diagram, as the element's README shows it. */
+const embedPage =
+  '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>one diagram</title><script type="module" src="screwcut-preview.js"></script></head><body>' +
+  '<screwcut-preview dialect="gsk980tdc" view="side">G00 X58 Z70\nG92 X47.1 Z13 F2\nX46.5\nX45.9\nX45.5\nX45.4\nG00 X100 Z100\nM30\n</screwcut-preview></body></html>';
+const encodings = [['br', '.br'], ['gzip', '.gz']];
+/** The site's files served, with the bytes sent (a first load reads it). */
+const served = [];
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.css': 'text/css', '.json': 'application/json', '.svg': 'image/svg+xml', '.nc': 'text/plain' };
 /** The site, the wasm-bindgen glue under /pkg/, the 20 MB program as /bench-20mb.nc. */
 const server = http.createServer((req, res) => {
   const url = decodeURIComponent(req.url.split('?')[0]);
   let file;
-  if (url === '/blank.html') {
+  const page = { '/blank.html': '<!doctype html><title>screwcut bench</title>', '/editor-alone.html': alone.html, '/embed-bench.html': embedPage }[url];
+  if (page) {
     res.writeHead(200, { 'content-type': 'text/html' });
-    return res.end('<!doctype html><title>screwcut bench</title>');
+    return res.end(page);
+  }
+  if (url === '/editor-alone.js') {
+    res.writeHead(200, { 'content-type': 'text/javascript' });
+    return res.end(alone.js);
+  }
+  if (alone.texts.has(url)) {
+    res.writeHead(200, { 'content-type': 'text/plain' });
+    return res.end(alone.texts.get(url));
   }
   if (url === '/bench-20mb.nc') file = big;
   else if (url.startsWith('/pkg/')) file = path.join(pkg, url.slice(5));
@@ -42,8 +77,15 @@ const server = http.createServer((req, res) => {
     res.writeHead(404);
     return res.end();
   }
-  res.writeHead(200, { 'content-type': types[path.extname(file)] || 'application/octet-stream' });
-  fs.createReadStream(file).pipe(res);
+  // The site's precompressed files, as a static host serves them (`cargo xtask serve` does the same).
+  const accepted = String(req.headers['accept-encoding'] || '');
+  const packed = file.startsWith(path.resolve(site)) && encodings.find(([name, suffix]) => accepted.includes(name) && fs.existsSync(file + suffix));
+  const headers = { 'content-type': types[path.extname(file)] || 'application/octet-stream', 'cache-control': 'no-cache' };
+  if (packed) headers['content-encoding'] = packed[0];
+  res.writeHead(200, headers);
+  const sent = packed ? file + packed[1] : file;
+  served.push({ name: path.basename(file), bytes: fs.statSync(sent).size, encoding: packed ? packed[0] : 'none' });
+  fs.createReadStream(sent).pipe(res);
 });
 await new Promise((r) => server.listen(0, '127.0.0.1', r));
 const url = `http://127.0.0.1:${server.address().port}/`;
@@ -68,7 +110,7 @@ const quantile = (a, q) => {
   const s = [...a].sort((x, y) => x - y);
   return s.length ? s[Math.min(s.length - 1, Math.max(0, Math.ceil(q * s.length) - 1))] : NaN;
 };
-const fig = (name, value) => console.log(`FIG ${name} ${Number.isFinite(value) ? value.toFixed(1) : 'NaN'}`);
+const fig = (name, value) => console.log(`FIG ${name} ${Number.isFinite(value) ? value.toFixed(2) : 'NaN'}`);
 
 /** Observers on the page's thread from its first script: Event Timing (every entry of 16 ms and more, the API's floor) and long tasks. */
 function observe() {
@@ -78,16 +120,146 @@ function observe() {
     for (const e of l.getEntries()) if (e.interactionId) self.__events.push({ id: e.interactionId, name: e.name, start: e.startTime, d: e.duration });
   }).observe({ type: 'event', durationThreshold: 16, buffered: true });
   new PerformanceObserver((l) => self.__long.push(...l.getEntries().map((e) => ({ start: e.startTime, d: e.duration })))).observe({ type: 'longtask', buffered: true });
+  // Next paint as a page sees it: a frame callback, then a task after that frame.
+  const afterPaint = (f) => requestAnimationFrame(() => {
+    const c = new MessageChannel();
+    c.port1.onmessage = () => f(performance.now());
+    c.port2.postMessage(0);
+  });
+  // Each key pressed, and the paint after it; each drawing committed (the app's mark).
+  self.__keys = [];
+  self.__drawn = [];
+  addEventListener('keydown', (e) => {
+    const k = { t: e.timeStamp, paint: NaN };
+    self.__keys.push(k);
+    afterPaint((t) => (k.paint = t));
+  }, true);
+  // The app marks a drawing once its frame is committed (the worker's canvases are on screen when its task ends).
+  const mark = performance.mark.bind(performance);
+  performance.mark = (name, options) => {
+    const entry = mark(name, options);
+    if (name === 'screwcut:frame') self.__drawn.push({ input: options.detail.input, shown: entry.startTime });
+    return entry;
+  };
 }
 
 const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-bench-'));
+const LAUNCH = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 const ctx = await chromium.launchPersistentContext(dir, {
   executablePath: '/usr/bin/chromium',
   headless: true,
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  args: LAUNCH,
   viewport: { width: 1400, height: 900 },
 });
 await ctx.addInitScript(observe);
+
+/** Puts the cursor at the end of line `line` (0-based) as a person would: from the top, or from the end when nearer. */
+async function cursorTo(page, text, line, tag) {
+  await page.locator('.cm-line').first().click();
+  const last = text.split('\n').length - 1;
+  if (line <= last / 2) for (let i = 0; i < line; i++) await page.keyboard.press('ArrowDown');
+  else {
+    await page.keyboard.press('Control+End');
+    for (let i = last; i > line; i--) await page.keyboard.press('ArrowUp');
+  }
+  await page.keyboard.press('End');
+  const at = await page.evaluate(() => document.querySelector('.cm-activeLineGutter')?.textContent);
+  if (Number(at) !== line + 1) throw new Error(`${tag}: the cursor is on line ${at}, not ${line + 1}`);
+}
+
+/**
+ * The floor: the bare editor and the app, the same `text` at the same line,
+ * typed into alternately, `rounds` rounds of `keys` keystrokes each (a digit
+ * typed and deleted, 150 ms apart). On the bare editor a keystroke counts to
+ * its next paint; in the app to the diagram on screen: the later of its next
+ * paint and the first committed drawing that includes it (the app's mark). Prints
+ * p50/p95 of both and their ratio; long tasks in the app while typing.
+ */
+async function versus({ text, dialect, line, rounds, keys, tag, what }) {
+  const app = await ctx.newPage();
+  await app.goto(url + fragment({ dialect, settings: {}, program: text }));
+  await app.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
+  await app.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
+  const pane = await app.evaluate(() => {
+    const r = document.getElementById('code').getBoundingClientRect();
+    return { w: Math.round(r.width), h: Math.round(r.height) };
+  });
+  const name = `/text-${tag}.nc`;
+  alone.texts.set(name, text);
+  const bare = await ctx.newPage();
+  await bare.goto(`${url}editor-alone.html?program=${encodeURIComponent(name)}&w=${pane.w}&h=${pane.h}`);
+  await bare.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
+  await cursorTo(app, text, line, `${tag} app`);
+  await cursorTo(bare, text, line, `${tag} bare`);
+  const floor = [];
+  const screen = [];
+  const long = [];
+  for (let r = 0; r < rounds; r++) {
+    for (const [page, into] of [[bare, floor], [app, screen]]) {
+      await page.bringToFront();
+      await page.waitForTimeout(600);
+      const t0 = await page.evaluate(() => performance.now());
+      for (let i = 0; i < keys; i++) {
+        await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)));
+        await page.waitForTimeout(150);
+      }
+      await page.waitForTimeout(1500);
+      const m = await page.evaluate((t0) => ({ keys: self.__keys.filter((k) => k.t > t0), drawn: self.__drawn, long: self.__long.filter((e) => e.start > t0) }), t0);
+      for (const k of m.keys) {
+        if (page === bare) into.push(k.paint - k.t);
+        else {
+          const shown = Math.min(...m.drawn.filter((d) => d.input >= k.t).map((d) => d.shown));
+          into.push(Math.max(k.paint, shown) - k.t);
+        }
+      }
+      if (page === app) long.push(...m.long);
+    }
+  }
+  await app.close();
+  await bare.close();
+  alone.texts.delete(name);
+  const q = (a, p) => quantile(a, p);
+  const ratio = (p) => q(screen, p) / q(floor, p);
+  console.log(
+    `  ${what}: the editor alone and the app typed into alternately (${rounds} rounds of ${keys} keystrokes each, code pane ${pane.w}×${pane.h}): ` +
+      `bare editor keystroke → next paint p50 ${q(floor, 0.5).toFixed(1)} ms, p95 ${q(floor, 0.95).toFixed(1)} ms (${floor.length}); ` +
+      `app keystroke → diagram on screen p50 ${q(screen, 0.5).toFixed(1)} ms, p95 ${q(screen, 0.95).toFixed(1)} ms (${screen.filter(Number.isFinite).length} of ${screen.length} drawn); ` +
+      `ratio p50 ${ratio(0.5).toFixed(2)}×, p95 ${ratio(0.95).toFixed(2)}×; app long tasks ${long.length} (longest ${Math.max(0, ...long.map((e) => e.d)).toFixed(0)} ms)`,
+  );
+  fig(`${tag}_bare_p50`, q(floor, 0.5));
+  fig(`${tag}_bare_p95`, q(floor, 0.95));
+  fig(`${tag}_screen_p50`, q(screen, 0.5));
+  fig(`${tag}_screen_p95`, q(screen, 0.95));
+  fig(`${tag}_ratio_p50`, ratio(0.5));
+  fig(`${tag}_ratio_p95`, ratio(0.95));
+  fig(`${tag}_vs_long_max`, Math.max(0, ...long.map((e) => e.d)));
+}
+
+/**
+ * A first load's transferred bytes by file, the page's and its worker's (the
+ * site's files as the server sent them, compressed where the browser
+ * accepted it; headers not counted): the page at `where`, once `ready`
+ * holds, with a cold cache.
+ */
+async function firstLoad(where, ready, tag, what) {
+  const fresh = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-load-'));
+  const cold = await chromium.launchPersistentContext(fresh, { executablePath: '/usr/bin/chromium', headless: true, args: LAUNCH, viewport: { width: 1400, height: 900 } });
+  try {
+    const page = await cold.newPage();
+    served.length = 0;
+    await page.goto(url + where);
+    await page.waitForFunction(ready, null, { timeout: 120_000 });
+    await page.waitForTimeout(1000);
+    const files = [...served];
+    const sum = files.reduce((s, f) => s + f.bytes, 0);
+    const by = files.sort((a, b) => b.bytes - a.bytes).map((f) => `${f.name} ${(f.bytes / 1024).toFixed(1)} (${f.encoding})`);
+    console.log(`  ${what}, first load transferred: ${(sum / 1024).toFixed(1)} KiB in all — KiB by file (encoding): ${by.join(', ')}`);
+    fig(`${tag}_kib`, sum / 1024);
+  } finally {
+    await cold.close();
+    fs.rmSync(fresh, { recursive: true, force: true });
+  }
+}
 
 /**
  * Opens `text` from a link (and waits for its plan: more than 100 threads,
@@ -101,16 +273,7 @@ async function typing({ text, dialect, line, keys, tag, what }) {
   await page.goto(url + fragment({ dialect, settings: {}, program: text }));
   await page.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
   await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
-  await page.locator('.cm-line').first().click();
-  const last = text.split('\n').length - 1;
-  if (line <= last / 2) for (let i = 0; i < line; i++) await page.keyboard.press('ArrowDown');
-  else {
-    await page.keyboard.press('Control+End');
-    for (let i = last; i > line; i--) await page.keyboard.press('ArrowUp');
-  }
-  await page.keyboard.press('End');
-  const at = await page.evaluate(() => document.querySelector('.cm-activeLineGutter')?.textContent);
-  if (Number(at) !== line + 1) throw new Error(`${tag}: the cursor is on line ${at}, not ${line + 1}`);
+  await cursorTo(page, text, line, tag);
   await page.waitForTimeout(1000);
   const t0 = await page.evaluate(() => performance.now());
   for (let i = 0; i < keys; i++) {
@@ -252,20 +415,35 @@ async function wasmRate() {
   fig('wasm_20mb_rate', rate);
 }
 
-try {
-  const gsk = { dialect: 'gsk980tdc', line: 8, keys: 20 };
-  await typing({ ...gsk, text: program(5000), tag: 'k5', what: '5000 lines, in the first pass' });
+// BENCH_ONLY=name,name runs only those steps (for working on one of them).
+const only = process.env.BENCH_ONLY ? process.env.BENCH_ONLY.split(',') : null;
+const gsk = { dialect: 'gsk980tdc', line: 8, keys: 20 };
+const steps = {
+  k5: () => typing({ ...gsk, text: program(5000), tag: 'k5', what: '5000 lines, in the first pass' }),
   // The same 20 keystrokes in the Fanuc program with subprograms and loops: at the end of the
   // main program's first `#1=` (the first thread's diameter) and of the macro O9010's `#10=#2*1.227`.
-  const text = fs.readFileSync(loops, 'utf8');
-  const lines = text.split('\n');
-  const fanuc = { dialect: 'fanuc0i', keys: 20, text };
-  await typing({ ...fanuc, line: lines.findIndex((l) => l.startsWith('#1=')), tag: 'k5loop', what: '5000 lines with loops and subprograms, in the main program' });
-  await typing({ ...fanuc, line: lines.indexOf('#10=#2*1.227'), tag: 'k5loopsub', what: '5000 lines with loops and subprograms, in the macro O9010' });
-  await typing({ ...gsk, text: program(50000), tag: 'k50', what: '50000 lines, in the first pass' });
-  await l99();
-  await pasted();
-  await wasmRate();
+  loops: async () => {
+    const text = fs.readFileSync(loops, 'utf8');
+    const lines = text.split('\n');
+    const fanuc = { dialect: 'fanuc0i', keys: 20, text };
+    await typing({ ...fanuc, line: lines.findIndex((l) => l.startsWith('#1=')), tag: 'k5loop', what: '5000 lines with loops and subprograms, in the main program' });
+    await typing({ ...fanuc, line: lines.indexOf('#10=#2*1.227'), tag: 'k5loopsub', what: '5000 lines with loops and subprograms, in the macro O9010' });
+  },
+  k50: () => typing({ ...gsk, text: program(50000), tag: 'k50', what: '50000 lines, in the first pass' }),
+  versus: async () => {
+    await versus({ dialect: 'gsk980tdc', line: 8, rounds: 4, keys: 10, text: program(5000), tag: 'v5', what: '5000 lines, in the first pass' });
+    await versus({ dialect: 'gsk980tdc', line: 8, rounds: 3, keys: 10, text: program(50000), tag: 'v50', what: '50000 lines, in the first pass' });
+  },
+  l99,
+  pasted,
+  wasmRate,
+  load: async () => {
+    await firstLoad('', () => document.body.dataset.ready === 'true', 'load_app', 'the app with its example');
+    await firstLoad('embed-bench.html', () => document.querySelector('screwcut-preview')?.result?.threads?.length > 0, 'load_embed', 'a page with one embedded diagram');
+  },
+};
+try {
+  for (const [name, step] of Object.entries(steps)) if (!only || only.includes(name)) await step();
 } finally {
   await ctx.close();
   server.close();

@@ -14,6 +14,7 @@
 // tests/browser/screenshots/.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
+import http from 'node:http';
 import path from 'node:path';
 
 const base = siteUrl('docs.test.mjs');
@@ -308,6 +309,24 @@ try {
     'the wasm is served gzip-encoded to a browser that accepts it, the same bytes decoded',
     zipped.headers.get('content-encoding') === 'gzip' && plain.headers.get('content-encoding') === null && zippedBytes === plainBytes && plainBytes > 100000,
     JSON.stringify({ enc: zipped.headers.get('content-encoding'), plainBytes, zippedBytes }),
+  );
+  const brotli = await fetch(wasmUrl, { headers: { 'accept-encoding': 'gzip, deflate, br' } });
+  const brotliBytes = (await brotli.arrayBuffer()).byteLength;
+  // The bytes on the wire, not decoded (node:http leaves the body as sent).
+  const wire = (encoding) =>
+    new Promise((resolve, reject) => {
+      http.get(wasmUrl, { headers: { 'accept-encoding': encoding } }, (res) => {
+        let n = 0;
+        res.on('data', (c) => (n += c.length));
+        res.on('end', () => resolve(n));
+      }).on('error', reject);
+    });
+  const brotliLength = await wire('br');
+  const gzipLength = await wire('gzip');
+  check(
+    '… and Brotli-encoded, preferred, to one that accepts both: smaller than the gzip, the same bytes decoded',
+    brotli.headers.get('content-encoding') === 'br' && brotliBytes === plainBytes && brotliLength > 0 && brotliLength < gzipLength,
+    JSON.stringify({ enc: brotli.headers.get('content-encoding'), brotliBytes, brotliLength, gzipLength }),
   );
   const tag = zipped.headers.get('etag');
   const again = await fetch(wasmUrl, { headers: { 'if-none-match': tag || '' } });

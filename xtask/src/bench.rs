@@ -3,8 +3,10 @@
 //! gcode-toolpath side by side, and in headless Chromium what a person
 //! typing feels (Event Timing, the app's frame marks, long tasks) in a plain
 //! 5,000-line program, in a 5,000-line Fanuc program of subprograms and macro
-//! loops and in a 50,000-line one, the L99 program and the wasm planner's
-//! rate. Ends with a table of each figure beside the one measured when the
+//! loops and in a 50,000-line one, the app against the bare editor typed
+//! into alternately (the floor and the ratio), the first load's transferred
+//! bytes (app and one embedded diagram), the L99 program and the wasm
+//! planner's rate. Ends with a table of each figure beside the one measured when the
 //! work to reach it began (for the loop program: the plain 5,000-line figure
 //! of the same run), and its target.
 
@@ -109,6 +111,54 @@ const FIGURES: &[Figure] = &[
         unit: "MB/s",
     },
     Figure { key: "wasm_gz_kib", what: "wasm, gzip -9", before: "—", target: "≤ 195 (200 KB)", unit: "KiB" },
+    Figure {
+        key: "v5_bare_p50",
+        what: "5,000 lines: bare editor keystroke to next paint, p50 (the floor)",
+        before: "8–16",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
+        key: "v5_screen_p50",
+        what: "5,000 lines: app keystroke to diagram on screen, p50",
+        before: "26–29",
+        target: "≤ 1.25 × floor",
+        unit: "ms",
+    },
+    Figure {
+        key: "v5_ratio_p50", what: "… ratio to the floor, p50", before: "1.5–3", target: "≤ 1.25", unit: "×"
+    },
+    Figure {
+        key: "v5_ratio_p95", what: "… ratio to the floor, p95", before: "2.5–3", target: "≤ 1.25", unit: "×"
+    },
+    Figure {
+        key: "v50_ratio_p50",
+        what: "50,000 lines: the same ratio, p50",
+        before: "—",
+        target: "≤ 1.25",
+        unit: "×",
+    },
+    Figure {
+        key: "v50_ratio_p95",
+        what: "50,000 lines: the same ratio, p95",
+        before: "—",
+        target: "≤ 1.25",
+        unit: "×",
+    },
+    Figure {
+        key: "load_app_kib",
+        what: "the app's first load, transferred (wasm + JS + CSS + page)",
+        before: "≈ 491",
+        target: "≤ 244 (250 KB)",
+        unit: "KiB",
+    },
+    Figure {
+        key: "load_embed_kib",
+        what: "one embedded diagram's first load, transferred",
+        before: "≈ 360",
+        target: "≤ 195 (200 KB)",
+        unit: "KiB",
+    },
     Figure {
         key: "native_loops5k_full_ms",
         what: "native planner, 5,000-line Fanuc program with loops: full plan",
@@ -322,6 +372,8 @@ fn shown(figs: &BTreeMap<String, f64>, key: &str, unit: &str) -> String {
             "n/a".into()
         } else if unit == "ms" && *v < 16.0 && key.contains("event") {
             "< 16".into()
+        } else if unit == "×" {
+            format!("{v:.2}")
         } else {
             format!("{v:.1}")
         }

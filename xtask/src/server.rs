@@ -1,7 +1,8 @@
 //! The local static file server of `cargo xtask serve` and the browser
 //! tests: HTTP by `tiny_http`, GET and HEAD of the files under one folder
 //! (a path that would leave it is refused), each with its MIME type, not
-//! sniffed; the precompressed `file.gz` to a browser that accepts gzip;
+//! sniffed; the precompressed `file.br` or `file.gz` to a browser that
+//! accepts Brotli or gzip (Brotli first: smaller);
 //! cacheable by revalidation (an ETag of the file's size and time, 304 when
 //! the browser has it).
 
@@ -35,7 +36,7 @@ pub fn serve_forever(server: Server, dir: PathBuf) {
         let header = |name: &'static str| {
             request.headers().iter().find(|h| h.field.equiv(name)).map(|h| h.value.as_str().to_string())
         };
-        let gzip_ok = header("Accept-Encoding").is_some_and(|v| v.contains("gzip"));
+        let accepted = header("Accept-Encoding").unwrap_or_default();
         let etag = file.as_ref().and_then(|f| etag(f));
         if etag.is_some() && header("If-None-Match") == etag {
             let mut response = Response::empty(304);
@@ -45,14 +46,18 @@ pub fn serve_forever(server: Server, dir: PathBuf) {
             let _ = request.respond(response);
             continue;
         }
-        let gz = file.as_ref().filter(|_| gzip_ok).map(|f| {
-            let mut g = f.clone().into_os_string();
-            g.push(".gz");
-            PathBuf::from(g)
+        let packed = file.as_ref().and_then(|f| {
+            [("br", ".br"), ("gzip", ".gz")].into_iter().filter(|(name, _)| accepts(&accepted, name)).find_map(
+                |(name, suffix)| {
+                    let mut p = f.clone().into_os_string();
+                    p.push(suffix);
+                    std::fs::read(p).ok().map(|b| (name, b))
+                },
+            )
         });
-        let (body, encoded) = match gz.as_ref().and_then(|g| std::fs::read(g).ok()) {
-            Some(b) => (Some(b), true),
-            None => (file.as_ref().and_then(|f| std::fs::read(f).ok()), false),
+        let (body, encoded) = match packed {
+            Some((name, b)) => (Some(b), Some(name)),
+            None => (file.as_ref().and_then(|f| std::fs::read(f).ok()), None),
         };
         let (status, mime, body) = match (&file, body) {
             (Some(f), Some(body)) => (200, mime(f), body),
@@ -66,8 +71,8 @@ pub fn serve_forever(server: Server, dir: PathBuf) {
             ("X-Content-Type-Options", "nosniff".into()),
             ("Vary", "Accept-Encoding".into()),
         ];
-        if encoded {
-            headers.push(("Content-Encoding", "gzip".into()));
+        if let Some(name) = encoded {
+            headers.push(("Content-Encoding", name.into()));
         }
         if let Some(e) = etag.filter(|_| status == 200) {
             headers.push(("ETag", e));
@@ -82,6 +87,17 @@ pub fn serve_forever(server: Server, dir: PathBuf) {
         }
         let _ = request.respond(response);
     }
+}
+
+/// Whether an `Accept-Encoding` value takes the coding `name` (listed, and
+/// not with `q=0`; RFC 9110 §12.5.3).
+fn accepts(value: &str, name: &str) -> bool {
+    value.split(',').any(|item| {
+        let mut parts = item.split(';').map(str::trim);
+        let coding = parts.next().unwrap_or("");
+        let refused = parts.any(|p| p.strip_prefix("q=").and_then(|q| q.parse::<f64>().ok()) == Some(0.0));
+        coding.eq_ignore_ascii_case(name) && !refused
+    })
 }
 
 /// A file's ETag: its size and modification time.
@@ -138,6 +154,16 @@ mod tests {
         assert_eq!(resolve(d, "/../etc/passwd"), None);
         assert_eq!(resolve(d, "/%2e%2e/etc/passwd"), None);
         assert_eq!(resolve(d, "/%ff"), None, "not UTF-8");
+    }
+
+    #[test]
+    fn accept_encoding_is_read_by_coding_and_weight() {
+        assert!(accepts("gzip, deflate, br, zstd", "br"));
+        assert!(accepts("gzip, deflate, br, zstd", "gzip"));
+        assert!(accepts("GZIP;q=0.5", "gzip"));
+        assert!(!accepts("br;q=0, gzip", "br"), "q=0 refuses it");
+        assert!(!accepts("brotli, xgzip", "br") && !accepts("brotli, xgzip", "gzip"), "whole codings only");
+        assert!(!accepts("", "gzip") && !accepts("identity", "gzip"));
     }
 
     #[test]

@@ -339,15 +339,19 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     crate::precompress::precompress(out)?;
     let size = |f: &str| std::fs::metadata(out.join(f)).map(|m| m.len().div_ceil(1024)).unwrap_or(0);
     let gz = |f: &str| crate::precompress::gz_size(&out.join(f)).div_ceil(1024);
+    let br = |f: &str| crate::precompress::br_size(&out.join(f)).div_ceil(1024);
     eprintln!(
-        "site: {} (wasm {} KiB, gzip {} KiB; app.js {} KiB, gzip {} KiB; screwcut-preview.js {} KiB, gzip {} KiB)\nwasm: {opt}",
+        "site: {} (KiB raw/gzip/brotli: wasm {}/{}/{}; app.js {}/{}/{}; screwcut-preview.js {}/{}/{})\nwasm: {opt}",
         out.display(),
         size("screwcut_bg.wasm"),
         gz("screwcut_bg.wasm"),
+        br("screwcut_bg.wasm"),
         size("app.js"),
         gz("app.js"),
+        br("app.js"),
         size("screwcut-preview.js"),
-        gz("screwcut-preview.js")
+        gz("screwcut-preview.js"),
+        br("screwcut-preview.js")
     );
     Ok(opt)
 }
