@@ -177,7 +177,7 @@ codes! {
     // ---- LinuxCNC ----
     /// LinuxCNC: G33 or G76 while the spindle is not turning (no M3/M4, or after M5).
     SpindleNotTurning = "spindle-not-turning", Error;
-    /// LinuxCNC: G76 with cutter radius compensation (G41/G42, G41.1/G42.1) on.
+    /// LinuxCNC: G76 or a G71/G72 profile cycle with cutter radius compensation (G41/G42, G41.1/G42.1) on.
     CutterCompActive = "cutter-comp-active", Error;
     /// LinuxCNC: the program ends without M2/M30 or a closing `%`.
     NoProgramEnd = "no-program-end", Error;
@@ -191,6 +191,11 @@ codes! {
     BackwardCut = "backward-cut", Warning;
     /// LinuxCNC: G33 or G76 outside the XZ plane G18 (accepted by the interpreter, not by the manual).
     PlaneNotXz = "plane-not-xz", Warning;
+    /// LinuxCNC: a G70–G72 profile cycle outside the XZ plane G18, which the interpreter refuses.
+    CycleNeedsXz = "cycle-needs-xz", Error;
+    /// LinuxCNC: the profile of a G71/G72 that the interpreter refuses (it turns back along the
+    /// cut, offset lines that do not meet) or roughs without end.
+    ProfileRefused = "profile-refused", Error;
     /// LinuxCNC: G76 with an X or Y word: the passes still use the drive line; the word only moves the tool at the end.
     DriveLineKept = "drive-line-kept", Warning;
     /// LinuxCNC: a G76 whose degression and depths need many passes.

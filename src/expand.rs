@@ -267,8 +267,8 @@ impl<'p> Writer<'p> {
     fn plain(&mut self, m: &Move, to: Point) {
         match m.kind {
             MoveKind::Rapid => self.rapid(to),
-            MoveKind::Feed | MoveKind::Rough => self.feed(to),
-            MoveKind::Arc => self.arc(m),
+            MoveKind::Arc | MoveKind::Rough if m.arc.is_some() => self.arc(m),
+            MoveKind::Feed | MoveKind::Rough | MoveKind::Arc => self.feed(to),
             MoveKind::Thread | MoveKind::ScrewIn | MoveKind::Runout => {
                 self.note(Remark::new(&tools::EX_STRAY_THREAD_MOVE, args![line = m.line]));
                 self.feed(to);

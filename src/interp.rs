@@ -203,13 +203,13 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
                 Group::OneShot => one_shot = Some((g, w)),
                 Group::Setup => {
                     if let G::NotSimulated { what, .. } = g {
-                        noted(r, &msg::SETUP_NOT_SIMULATED, w, what);
+                        r.noted(&msg::SETUP_NOT_SIMULATED, w, what);
                     }
                 }
                 Group::Drilling => {
                     if let G::NotSimulated { what, .. } = g {
                         r.m.drilling = true;
-                        noted(r, &msg::NOT_DRAWN, w, what);
+                        r.noted(&msg::NOT_DRAWN, w, what);
                     }
                 }
                 _ => {}
@@ -217,15 +217,6 @@ fn modal_codes<'b>(r: &mut Reader, b: &Block, seen: &[Option<Seen<'b>>]) -> (Cod
         }
     }
     (motion_g, one_shot)
-}
-
-/// Says that `w`'s function is not simulated (or not drawn): once per G code and program.
-fn noted(r: &mut Reader, template: &'static msg::Template, w: &Word, what: &'static msg::Phrase) {
-    let code = code10(w);
-    if !r.m.noted.contains(&code) {
-        r.m.noted.push(code);
-        r.diag(template, w.span, args![word = w, what]);
-    }
 }
 
 /// The block's command: a one-shot code, a motion in the modal mode, or setup.
@@ -236,7 +227,7 @@ fn command(r: &mut Reader, ctl: &Controller, b: &Block, motion_g: Code1, one_sho
             r.m.cycle.g92 = None;
         }
         if let Motion::NotSimulated(what, _) = r.m.motion {
-            noted(r, &msg::NOT_DRAWN, w, what);
+            r.noted(&msg::NOT_DRAWN, w, what);
         }
     }
     let has_axes = r.has_axes(b);
@@ -326,9 +317,8 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
             r.rapid(&t, b.line, b.span);
         }
         G::Rough(along) => rough(r, b, w, along),
-        G::LinuxFinish => linux_finish(r, b, w),
         G::NotSimulated { what, returns } => {
-            noted(r, &msg::NOT_DRAWN, w, what);
+            r.noted(&msg::NOT_DRAWN, w, what);
             if !returns {
                 // Where the tool ends is unknown.
                 r.m.pos.kx = false;
@@ -360,7 +350,7 @@ fn rough(r: &mut Reader, b: &Block, w: &Word, along: crate::cycle::rough::Along)
     }
     let what = if along == Along::Z { &msg::NS_G71 } else { &msg::NS_G72 };
     let Some((depth, escape)) = r.m.rough_regs[k] else {
-        noted(r, &msg::NOT_DRAWN, w, what);
+        r.noted(&msg::NOT_DRAWN, w, what);
         return;
     };
     let word = |r: &mut Reader, c: u8| b.get(c).copied().map_or(0.0, |v| r.length(&v));
@@ -370,29 +360,6 @@ fn rough(r: &mut Reader, b: &Block, w: &Word, along: crate::cycle::rough::Along)
         r.m.feed_line = b.line;
     }
     r.m.rough_call = Some(Rough { along, depth, escape, du, dw });
-}
-
-/// LinuxCNC's G70 `Q- X- Z- F-` (the LinuxCNC manual's G70 "finishing
-/// cycle": the profile is subroutine o(Q)): a rapid to X/Z, F the feed, and
-/// the program flow runs the profile once as the finishing pass (as rs274
-/// does: its first move a traverse, the others fed). With D, E or P (extra
-/// distances, several passes) it is not drawn.
-fn linux_finish(r: &mut Reader, b: &Block, w: &Word) {
-    r.m.finish_q = None;
-    let q = b.get(b'Q').map(|v| v.value()).filter(|v| v.fract() == 0.0 && (0.0..1e9).contains(v));
-    if q.is_none() || b.has(b'D') || b.has(b'E') || b.has(b'P') {
-        noted(r, &msg::NOT_DRAWN, w, &msg::NS_LATHE_CYCLE);
-        return;
-    }
-    if b.has(b'X') || b.has(b'Z') {
-        let t = r.target(b);
-        r.rapid(&t, b.line, b.span);
-    }
-    if let Some(f) = b.get(b'F') {
-        r.m.feed = Some(f.value());
-        r.m.feed_line = b.line;
-    }
-    r.m.finish_q = q.map(|v| v as u32);
 }
 
 /// G50 X Z: the current position gets these coordinates; U/W shift them. G50 S clamps the spindle.

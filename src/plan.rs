@@ -11,19 +11,20 @@ use serde::Serialize;
 
 use crate::assemble::{Assembler, Mark};
 use crate::block::Block;
+use crate::cycle::g7x::Words;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
 use crate::dialect::Dialect;
 use crate::event::Event;
 use crate::exec::index::{At, Index};
 use crate::exec::reads::Reads;
-use crate::exec::{Ctx, Exec, Flow};
+use crate::exec::{Ctx, Cycle, Exec, Flow};
 use crate::interp::Interp;
 use crate::lexer::{LexLimits, Lexer};
-use crate::motion::{Move, MoveKind, Point};
+use crate::motion::{Move, MoveKind};
 use crate::num::ser_round_opt;
 use crate::settings::{P, Settings};
 use crate::span::{LineIndex, Shift, Span};
-use crate::state::Modal;
+use crate::state::{Modal, Motion};
 use crate::thread::Thread;
 
 pub use crate::thread::Units;
@@ -206,21 +207,21 @@ impl Reading {
         self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
     }
 
-    /// A block of a stock-removal cycle's contour: read, its motions' end
-    /// points kept, nothing drawn or said (G70 runs the contour, and says
-    /// what is wrong with it, where it does).
+    /// A block of a stock-removal cycle's contour: read, its motions kept,
+    /// nothing drawn or said (G70 runs the contour, and says what is wrong
+    /// with it, where it does). A LinuxCNC roughing reads its profile's
+    /// words as rs274 does.
     fn capture(&mut self, b: &Block) {
         let mut quiet = Diagnostics::with_limit(1);
         self.it.step(b, &mut self.events, &mut quiet);
+        if self.exec.capturing_words() {
+            self.events.clear();
+            self.exec.capture_block(b, &self.it.m);
+            return;
+        }
         for e in self.events.drain(..) {
             match e {
-                Event::Rapid { mv: Some(m), .. } => self.exec.capture_point(m.to),
-                Event::Motion(m) if m.kind == MoveKind::Arc => {
-                    for p in crate::motion::arc_points(&m).into_iter().skip(1) {
-                        self.exec.capture_point(Point { x: 2.0 * p[1], z: p[0] });
-                    }
-                }
-                Event::Motion(m) => self.exec.capture_point(m.to),
+                Event::Rapid { mv: Some(m), .. } | Event::Motion(m) => self.exec.capture_move(&m),
                 _ => {}
             }
         }
@@ -230,18 +231,21 @@ impl Reading {
     /// modal state at the cycle block, and the roughing passes planned as
     /// motions of that block.
     fn rough(&mut self, c: crate::exec::Capture) {
-        self.it.m = *c.modal;
+        let profile_motion = self.it.m.motion;
+        self.it.m = (*c.modal).clone();
         self.it.m.rough_call = None;
-        self.it.m.finish_q = None;
-        let moves = match &c.rough {
-            Some(r) => crate::cycle::rough::passes(r, c.start, &c.points, c.line, c.span),
-            None => {
+        self.it.m.profile_call = None;
+        let moves = match &c.cycle {
+            Cycle::Rough(r) => crate::cycle::rough::passes(r, c.start, &c.points, c.line, c.span),
+            Cycle::Finish => {
                 // A finishing pass ends where its profile does.
                 if let Some(&end) = c.points.last() {
                     self.it.m.pos.p = end;
+                    self.it.m.motion = Motion::Linear;
                 }
                 crate::cycle::rough::finish(c.start, &c.points, c.line, c.span)
             }
+            Cycle::LinuxRough { words, q } => self.linux_rough(&c, words, *q, profile_motion),
         };
         self.events.push(Event::Close);
         for m in moves {
@@ -251,6 +255,42 @@ impl Reading {
             });
         }
         self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
+    }
+
+    /// LinuxCNC's G71/G72 over the profile of o(`q`) read in `c`: its moves
+    /// (what stopped it said at the block). The tool ends at the last move,
+    /// in its motion mode; without moves, where the profile does, in the
+    /// profile's last mode (rs274 reads the profile's moves as if making them).
+    fn linux_rough(&mut self, c: &crate::exec::Capture, w: &Words, q: u32, profile_motion: Motion) -> Vec<Move> {
+        let r = match c.refused {
+            Some((f, span)) => {
+                self.diags.push_message(f.finding(w, q).0, span);
+                crate::cycle::g7x::Roughing::default()
+            }
+            None => crate::cycle::g7x::plan(w, c.start, &c.steps, c.line, c.span),
+        };
+        if let Some(f) = r.fail {
+            let (finding, on_i) = f.finding(w, q);
+            self.diags.push_message(finding, if on_i { w.i_span } else { c.span });
+        }
+        match r.moves.last() {
+            Some(m) => {
+                self.it.m.pos.p = m.to;
+                self.it.m.motion = match (m.kind, m.arc) {
+                    (MoveKind::Rapid, _) => Motion::Rapid,
+                    (_, Some(a)) if a.cw => Motion::ArcCw,
+                    (_, Some(_)) => Motion::ArcCcw,
+                    _ => Motion::Linear,
+                };
+            }
+            None => {
+                if let Some(s) = c.steps.last() {
+                    self.it.m.pos.p = s.to;
+                }
+                self.it.m.motion = profile_motion;
+            }
+        }
+        r.moves
     }
 
     /// Reads blocks from `lexer` to the end of the program, calling

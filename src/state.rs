@@ -246,8 +246,9 @@ pub struct Modal {
     pub rough_regs: [Option<(f64, f64)>; 2],
     /// A G71/G72 with P and Q just read: its cycle, for the program flow to rough over the contour.
     pub rough_call: Option<crate::cycle::rough::Rough>,
-    /// A LinuxCNC G70 just read: the subroutine of its profile (`Q`), for the program flow to run as the finishing pass.
-    pub finish_q: Option<u32>,
+    /// A LinuxCNC G70–G72 just read: the subroutine of its profile (`Q`) and
+    /// the cycle, for the program flow to read the profile.
+    pub profile_call: Option<crate::cycle::g7x::Call>,
 }
 
 impl Default for Modal {
@@ -287,7 +288,7 @@ impl Default for Modal {
             noted: Vec::new(),
             rough_regs: [None, None],
             rough_call: None,
-            finish_q: None,
+            profile_call: None,
         }
     }
 }

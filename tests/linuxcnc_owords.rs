@@ -71,9 +71,10 @@ fn programs(prefix: &str) -> Vec<String> {
     v
 }
 
-/// The programs rs274 runs to the end, quirks aside.
+/// The programs rs274 runs to the end, quirks and profile roughing aside.
 fn accepted() -> Vec<String> {
-    programs("oword-").into_iter().filter(|n| !n.starts_with("oword-err-") && !n.starts_with("oword-quirk-")).collect()
+    let own = ["oword-err-", "oword-quirk-", "oword-g71-", "oword-g72-"];
+    programs("oword-").into_iter().filter(|n| !own.iter().any(|p| n.starts_with(p))).collect()
 }
 
 /// rs274's verdict on one program.
@@ -194,14 +195,18 @@ type Plain = (bool, f64, f64);
 fn plain_theirs(calls: &[Call]) -> Vec<Plain> {
     let (mut out, mut at) = (Vec::new(), (0.0, 0.0));
     for c in calls {
-        if let Call::Move { kind, x, z, .. } = *c {
-            let moved = (x - at.0).abs() > 1e-9 || (z - at.1).abs() > 1e-9;
-            match kind {
-                Kind::Traverse if moved => out.push((true, x, z)),
-                Kind::Feed if moved => out.push((false, x, z)),
-                _ => {}
+        match *c {
+            Call::Move { kind, x, z, .. } => {
+                let moved = (x - at.0).abs() > 1e-9 || (z - at.1).abs() > 1e-9;
+                match kind {
+                    Kind::Traverse if moved => out.push((true, x, z)),
+                    Kind::Feed if moved => out.push((false, x, z)),
+                    _ => {}
+                }
+                at = (x, z);
             }
-            at = (x, z);
+            Call::Arc { x, z, .. } => at = (x, z),
+            _ => {}
         }
     }
     out
@@ -308,9 +313,15 @@ fn check_refused(name: &str) -> usize {
     let (message, block) = v.refused.clone().unwrap_or_else(|| panic!("{name}: rs274 accepts it"));
     let message = rs274::without_file(&message).to_string();
     // A sub sought to the end of the file: rs274 names the call's line
-    // in its message and quotes the file's last block.
+    // in its message and quotes the file's last block. A G71/G72 refused
+    // once its profile is read: rs274 quotes the profile's last block, its
+    // endsub; the alarm is the cycle's.
+    let cycle = text.lines().position(|l| ["G71", "G72"].iter().any(|g| l.trim_start().starts_with(g)));
     let line = line_in_message(&message).unwrap_or_else(|| {
-        let i = text.lines().position(|l| l.trim() == block.trim());
+        let i = match cycle {
+            Some(k) if message.starts_with("G7X error") && block.trim().ends_with("endsub") => Some(k),
+            _ => text.lines().position(|l| l.trim() == block.trim()),
+        };
         i.unwrap_or_else(|| panic!("{name}: rs274's block {block:?} is not a line")) as u32 + 1
     });
     let plan = linuxcnc(&text);
@@ -333,6 +344,101 @@ fn refused_programs_alarm_where_rs274_stops() {
     let names = programs("oword-err-");
     assert!(names.len() >= 6, "{names:?}");
     each(&names, check_refused);
+}
+
+/// A move that goes somewhere, as both sides print it (to 4 decimals):
+/// rapid, feed or arc, to (radius, z), an arc's centre (radius, z) and
+/// whether it turns counter-clockwise (G3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Any {
+    rapid: bool,
+    to: (f64, f64),
+    arc: Option<(f64, f64, bool)>,
+}
+
+/// rs274's moves, those that go somewhere.
+fn all_theirs(calls: &[Call]) -> Vec<Any> {
+    let (mut out, mut at) = (Vec::new(), (0.0, 0.0));
+    for c in calls {
+        let m = match *c {
+            Call::Move { kind, x, z, .. } => Any { rapid: kind == Kind::Traverse, to: (x, z), arc: None },
+            Call::Arc { x, z, cx, cz, ccw, .. } => Any { rapid: false, to: (x, z), arc: Some((cx, cz, ccw)) },
+            _ => continue,
+        };
+        if m.to != at {
+            out.push(m);
+        }
+        at = m.to;
+    }
+    out
+}
+
+/// The plan's moves, rounded as rs274 prints them, those that go somewhere.
+fn all_ours(plan: &Plan) -> Vec<Any> {
+    let r = |v: f64| (v * 1e4).round() / 1e4;
+    let (mut out, mut at) = (Vec::new(), None);
+    for m in &plan.moves {
+        let to = (r(m.to.x / 2.0), r(m.to.z));
+        let arc = m.arc.filter(|_| !matches!(m.kind, MoveKind::Rapid));
+        if Some(to) != at {
+            out.push(Any {
+                rapid: m.kind == MoveKind::Rapid,
+                to,
+                arc: arc.map(|a| (a.center.x / 2.0, a.center.z, !a.cw)),
+            });
+        }
+        at = Some(to);
+    }
+    out
+}
+
+/// Whether two moves agree to rs274's 4 decimals.
+fn same_move(a: &Any, b: &Any) -> bool {
+    let near = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs() <= 1.5e-4 && (p.1 - q.1).abs() <= 1.5e-4;
+    a.rapid == b.rapid
+        && near(a.to, b.to)
+        && match (a.arc, b.arc) {
+            (None, None) => true,
+            (Some(p), Some(q)) => near((p.0, p.1), (q.0, q.1)) && p.2 == q.2,
+            _ => false,
+        }
+}
+
+/// Compares a G71/G72 program with rs274 move for move: every traverse,
+/// feed and arc in order (after the move rs274 makes from X0 Z0 before the
+/// plan knows where the tool is), and the synchronised moves of a thread
+/// after it; returns how many moves were compared.
+fn check_profile_cycle(name: &str) -> usize {
+    let text = read(&format!("{name}.ngc"));
+    let v = oracle(name, &text, false);
+    if let Some((message, block)) = &v.refused {
+        panic!("{name}: rs274 refuses it: {message} ({block})");
+    }
+    let plan = linuxcnc(&text);
+    let a = alarms(&plan);
+    assert!(a.is_empty(), "{name}: rs274 accepts it, screwcut alarms: {a:#?}");
+    assert!(plan.moves.iter().any(|m| m.kind == MoveKind::Rough), "{name}: no roughing cut");
+    let (theirs, ours) = (all_theirs(&v.calls), all_ours(&plan));
+    let skipped = theirs.len().saturating_sub(ours.len());
+    assert!(skipped <= 1 && ours.len() <= theirs.len(), "{name}: {} moves, rs274 {}", ours.len(), theirs.len());
+    for (k, (o, t)) in ours.iter().zip(&theirs[skipped..]).enumerate() {
+        assert!(same_move(o, t), "{name}: move {k}: screwcut {o:?}, rs274 {t:?} (radius, z)");
+    }
+    let synced = synced_segments(&v.calls);
+    assert_eq!(synced_moves(&plan).len(), synced.len(), "{name}: synchronised moves");
+    same_synced(name, &plan, &synced, None);
+    ours.len()
+}
+
+/// LinuxCNC's G71 and G72 (and .1, .2) with their profile in a subroutine,
+/// against rs274 move for move (`cycle::g7x`): `oword-g71-*`, `oword-g72-*`.
+#[test]
+fn profile_cycles_move_for_move() {
+    let mut names = programs("oword-g71-");
+    names.extend(programs("oword-g72-"));
+    assert!(names.len() >= 7, "{names:?}");
+    let compared = each(&names, check_profile_cycle);
+    assert!(compared >= 400, "{compared} moves compared");
 }
 
 #[track_caller]

@@ -257,3 +257,44 @@ fn linuxcnc_g70_runs_its_profile_subroutine_as_the_part() {
     assert!(plan.moves.iter().all(|m| m.line != 5 || m.kind == MoveKind::Rapid));
     assert!(plan.with_code(Code::NotSimulated).any(|d| d.line == 5));
 }
+
+/// LinuxCNC's G71 `Q- X- Z- D- I- R-` roughs over the profile of
+/// subroutine o(Q) (`cycle::g7x`; every move compared with rs274's in
+/// tests/linuxcnc_owords.rs, `oword-g71-*`): the cuts at each depth are
+/// roughing, drawn faintly; with D0 the last pass runs on the profile
+/// itself, the part's outline, so the G33 passes after it take their crest
+/// there (X16) and the side section fills the part. With a distance D the last
+/// pass leaves stock: it is roughing too, the crest is not the program's
+/// until a G70 turns the profile.
+#[test]
+fn linuxcnc_g71_roughs_its_profile_subroutine_and_d0_turns_the_part() {
+    use screwcut::diagram::{Style, side};
+    use screwcut::thread::CrestSource;
+    let text = std::fs::read_to_string("tests/linuxcnc/oword-g71-thread.ngc").unwrap();
+    let plan = plan_with(&text, Dialect::LinuxCnc, &[]);
+    no_alarm(&plan);
+    let g71: Vec<_> = plan.moves.iter().filter(|m| m.line == 12).collect();
+    let rough = g71.iter().filter(|m| m.kind == MoveKind::Rough).count();
+    // Radius 13 down to 6.5 in steps of 1.2: 6 depths, each cut once.
+    assert_eq!(rough, 6, "{g71:?}");
+    let outline: Vec<(f64, f64)> = g71.iter().filter(|m| m.kind == MoveKind::Feed).map(|m| (m.to.x, m.to.z)).collect();
+    assert_eq!(outline, [(16.0, -1.5), (16.0, -20.0), (22.0, -20.0), (22.0, -28.0), (26.0, -28.0)]);
+    assert!(plan.moves.iter().all(|m| !(5..=9).contains(&m.line)), "the subroutine's blocks move nothing in line");
+    assert_eq!(plan.threads[0].crest_source, CrestSource::Outline);
+    eq(plan.threads[0].crest, 16.0);
+    let scene = side(&plan);
+    assert!(scene.items.iter().any(|i| i.style == Style::Material), "the part is drawn");
+    assert!(scene.items.iter().any(|i| i.style == Style::Roughing), "the cuts are drawn as roughing");
+    // D0.3: the last pass is 0.6 over the diameter, roughing; no outline under the thread.
+    let d = text.replace("D0 I1.2", "D0.3 I1.2");
+    let plan = plan_with(&d, Dialect::LinuxCnc, &[]);
+    no_alarm(&plan);
+    assert!(plan.moves.iter().filter(|m| m.line == 12).all(|m| matches!(m.kind, MoveKind::Rough | MoveKind::Rapid)));
+    assert_ne!(plan.threads[0].crest_source, CrestSource::Outline);
+    // A G70 then finishes it: the crest is the profile's X16 again, not the roughing's X16.6.
+    let g70 = d.replace("G0 X26 Z3\nG0 X15.2", "G70 Q200 X26 Z3 F80\nG0 X26 Z3\nG0 X15.2");
+    let plan = plan_with(&g70, Dialect::LinuxCnc, &[]);
+    no_alarm(&plan);
+    assert_eq!(plan.threads[0].crest_source, CrestSource::Outline);
+    eq(plan.threads[0].crest, 16.0);
+}

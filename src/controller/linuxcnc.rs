@@ -1,7 +1,8 @@
 //! LinuxCNC (rs274ngc), reference §8: G7/G8 diameter/radius mode, G17–G19,
 //! G20/G21, G90/G91 distance mode, G33 (K = distance along the move per
 //! revolution) and G76 (drive line, peak offset I, depths J/K, degression R,
-//! compound angle Q, spring passes H, tapers E/L), with LinuxCNC's own word
+//! compound angle Q, spring passes H, tapers E/L), the lathe profile cycles
+//! G70–G72 (`g7x`: the profile in subroutine o(Q)), with LinuxCNC's own word
 //! checks and messages.
 //!
 //! The oracle is LinuxCNC's interpreter, `rs274` (Debian `linuxcnc-uspace`):
@@ -13,6 +14,7 @@
 mod check;
 mod g33;
 mod g76;
+mod g7x;
 
 use super::macros::{Depth, Flavor, Macros};
 use super::{Command, Controller, Reader, Rules, ThreadWords, Writing, basic_g_code};
@@ -101,8 +103,7 @@ fn g_code(code10: i64) -> Option<(Group, G)> {
         540 | 550 | 560 | 570 | 580 | 590 | 591 | 592 | 593 | 610 | 611 | 640 | 800 | 911 | 980 | 990 => {
             (Setup, Accepted)
         }
-        700 => (OneShot, LinuxFinish),
-        710..=712 | 720..=722 => (OneShot, ns(&crate::message::NS_LATHE_CYCLE, true)),
+        700 | 710..=712 | 720..=722 => (OneShot, LinuxProfile(code10)),
         730 | 740 | 810..=890 => (Motion, ns(&crate::message::NS_DRILLING, true)),
         760 => (Motion, ThreadCycle),
         900 => (Distance, Absolute),
@@ -123,6 +124,7 @@ fn command(r: &mut Reader, b: &Block, c: Command) {
     match c {
         Command::Motion(Motion::SyncThread) => g33::block(r, b),
         Command::Motion(Motion::ThreadCycle) => g76::block(r, b),
+        Command::OneShot(G::LinuxProfile(code10), w) => g7x::block(r, b, w, code10),
         _ => {}
     }
 }

@@ -91,6 +91,15 @@ impl Reader<'_> {
         self.diags.push_message(f, span);
     }
 
+    /// Says `template` about G word `w` (what it does: `what`) once per code in a program.
+    pub fn noted(&mut self, template: &'static Template, w: &Word, what: &'static Phrase) {
+        let code = (w.value() * 10.0).round() as i64;
+        if !self.m.noted.contains(&code) {
+            self.m.noted.push(code);
+            self.diag(template, w.span, args![word = w, what]);
+        }
+    }
+
     /// A parameter's value in force (as the program rewrote it, else the setting).
     pub fn param(&self, p: P) -> f64 {
         self.m.param(self.s, p)

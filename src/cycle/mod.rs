@@ -1,4 +1,6 @@
-//! The threading cycles G92, G76 and G78, planned pass by pass.
+//! The threading cycles G92, G76 and G78, planned pass by pass (and the
+//! lathe profile cycles' roughing: [`rough`] for Fanuc's G71/G72, [`g7x`]
+//! for LinuxCNC's).
 //!
 //! Pure functions of what a cycle block gave (read by the controller's
 //! module) and the settings: a [`Geometry`] (start point A, the root line of
@@ -7,6 +9,7 @@
 //! the plan of a multi-pass cycle ([`multi`]). Nothing here reads or
 //! changes the interpreter.
 
+pub mod g7x;
 pub mod infeed;
 pub mod linuxcnc;
 pub mod multi;

@@ -185,6 +185,9 @@ pub fn motion_item(m: &Move, has_threads: bool, roughing: bool) -> (Item, bool) 
         MoveKind::Rapid if roughing => (line(world(m.from), world(m.to)), Style::Roughing, false),
         MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
         MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
+        MoveKind::Rough if m.arc.is_some() => {
+            (Shape::Polyline { points: arc_points(m) }, Style::Roughing, !has_threads)
+        }
         MoveKind::Rough => (line(world(m.from), world(m.to)), Style::Roughing, !has_threads),
         MoveKind::Arc => (Shape::Polyline { points: arc_points(m) }, Style::Outline, !has_threads),
         MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),

@@ -42,6 +42,7 @@ use index::At;
 use vars::Vars;
 
 pub use ctx::Ctx;
+pub use profile::{Capture, Cycle};
 
 pub use crate::controller::macros::Macros;
 
@@ -91,25 +92,6 @@ pub struct Frame {
     pub until: Option<u32>,
     /// A G71/G72 reading its contour to rough over it: what it reads.
     pub capture: Option<Box<Capture>>,
-}
-
-/// A stock-removal cycle reading its contour: the cycle, where the tool
-/// was, the modal state to go back to, the contour's points as read, and
-/// the cycle block's line and span.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Capture {
-    /// The cycle's words; `None`: a finishing pass over the profile (LinuxCNC's G70).
-    pub rough: Option<crate::cycle::rough::Rough>,
-    /// The start point A (the tool at the cycle block).
-    pub start: crate::motion::Point,
-    /// The modal state at the cycle block, restored when the contour is read.
-    pub modal: Box<crate::state::Modal>,
-    /// The end points of the contour's motions, in order.
-    pub points: Vec<crate::motion::Point>,
-    /// The cycle block's line.
-    pub line: u32,
-    /// The cycle block's span.
-    pub span: Span,
 }
 
 /// A modal macro call (`G66`) in force: the macro runs after each block
@@ -303,7 +285,7 @@ impl Exec {
             return Flow::Run;
         }
         if macros.flavor == Flavor::LinuxCnc && !block.has_error {
-            if let Some(flow) = profile::linux_finish(self, ctx, block, macros) {
+            if let Some(flow) = profile::linux_profile(self, ctx, block, macros) {
                 return flow;
             }
         }
@@ -414,20 +396,6 @@ impl Exec {
         }
         self.go(ctx, body);
         true
-    }
-
-    /// Whether the blocks read now are a stock-removal cycle's contour (read, not run).
-    pub fn capturing(&self) -> bool {
-        self.frames.last().is_some_and(|f| f.capture.is_some())
-    }
-
-    /// Adds point `p` to the contour being read.
-    pub fn capture_point(&mut self, p: crate::motion::Point) {
-        if let Some(c) = self.frames.last_mut().and_then(|f| f.capture.as_mut()) {
-            if c.points.len() < crate::cycle::rough::MAX_CUTS {
-                c.points.push(p);
-            }
-        }
     }
 
     /// Leaves the innermost call, back to its caller.

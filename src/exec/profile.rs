@@ -9,12 +9,117 @@
 //!
 //! G71 and G72 rough over the contour (`cycle::rough`); G73 is not planned
 //! (a not-simulated note); G70's return to its start point is not drawn.
-//! LinuxCNC's G70 reads its profile from a subroutine, o(Q), the same way.
+//! LinuxCNC's G70–G72 read their profile from a subroutine, o(Q), the same
+//! way (`linux_profile`; its roughing is `cycle::g7x`).
 
-use super::{CallKind, Capture, Ctx, Exec, Flow, Macros};
+use super::{CallKind, Ctx, Exec, Flow, Macros};
 use crate::args;
 use crate::block::Block;
+use crate::cycle::g7x::{Fail, Step, Words};
+use crate::cycle::rough::{MAX_CUTS, Rough};
 use crate::message as msg;
+use crate::motion::{Move, MoveKind, Point};
+use crate::span::Span;
+
+/// What a contour is read for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Cycle {
+    /// Fanuc's and GSK's G71/G72: roughing over it.
+    Rough(Rough),
+    /// LinuxCNC's G70: one finishing pass over it.
+    Finish,
+    /// LinuxCNC's G71/G72 (and .1/.2): roughing over the moves as read, arcs kept.
+    LinuxRough {
+        /// The cycle's words.
+        words: Words,
+        /// The profile's subroutine, o(q).
+        q: u32,
+    },
+}
+
+/// A stock-removal cycle reading its contour: the cycle, where the tool
+/// was, the modal state to go back to, the contour as read, and the cycle
+/// block's line and span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Capture {
+    /// What the contour is read for.
+    pub cycle: Cycle,
+    /// The start point A (the tool at the cycle block).
+    pub start: Point,
+    /// The modal state at the cycle block, restored when the contour is read.
+    pub modal: Box<crate::state::Modal>,
+    /// The end points of the contour's motions, in order (arcs as chords).
+    pub points: Vec<Point>,
+    /// The contour's moves as rs274 reads them, for LinuxCNC's roughing (instead of `points`).
+    pub steps: Vec<Step>,
+    /// A profile move rs274 refuses (LinuxCNC's roughing), where it is: the profile ends there.
+    pub refused: Option<(Fail, Span)>,
+    /// The cycle block's line.
+    pub line: u32,
+    /// The cycle block's span.
+    pub span: Span,
+}
+
+impl Capture {
+    /// A capture for `cycle` from the block being run, the tool where `ctx` has it.
+    fn new(cycle: Cycle, ctx: &Ctx, span: Span) -> Capture {
+        Capture {
+            cycle,
+            start: ctx.modal.pos.p,
+            modal: Box::new(ctx.modal.clone()),
+            points: Vec::new(),
+            steps: Vec::new(),
+            refused: None,
+            line: ctx.here.line,
+            span,
+        }
+    }
+}
+
+impl Exec {
+    /// Whether the blocks read now are a stock-removal cycle's contour (read, not run).
+    pub fn capturing(&self) -> bool {
+        self.frames.last().is_some_and(|f| f.capture.is_some())
+    }
+
+    /// Whether the contour being read is a LinuxCNC profile read as rs274
+    /// reads it, block by block ([`Exec::capture_block`]).
+    pub fn capturing_words(&self) -> bool {
+        let c = self.frames.last().and_then(|f| f.capture.as_ref());
+        c.is_some_and(|c| matches!(c.cycle, Cycle::LinuxRough { .. }))
+    }
+
+    /// Adds the move of profile block `b` to a LinuxCNC profile being read,
+    /// `modal` the state after it (its motion mode, G7 or G8); at most
+    /// [`MAX_CUTS`] moves. A move rs274 refuses ends the profile.
+    pub fn capture_block(&mut self, b: &Block, modal: &crate::state::Modal) {
+        let Some(c) = self.frames.last_mut().and_then(|f| f.capture.as_mut()) else { return };
+        if c.refused.is_some() || c.steps.len() >= MAX_CUTS {
+            return;
+        }
+        let at = c.steps.last().map_or(c.start, |s| s.to);
+        match crate::cycle::g7x::read::step(b, modal.motion, modal.radius, at) {
+            Ok(Some(s)) => c.steps.push(s),
+            Ok(None) => {}
+            Err(f) => c.refused = Some((f, b.span)),
+        }
+    }
+
+    /// Adds motion `m` to the contour being read; at most [`MAX_CUTS`] points.
+    pub fn capture_move(&mut self, m: &Move) {
+        let Some(c) = self.frames.last_mut().and_then(|f| f.capture.as_mut()) else { return };
+        let points = if m.kind == MoveKind::Arc {
+            crate::motion::arc_points(m).into_iter().skip(1).map(|p| Point { x: 2.0 * p[1], z: p[0] }).collect()
+        } else {
+            vec![m.to]
+        };
+        for p in points {
+            if c.points.len() < MAX_CUTS {
+                c.points.push(p);
+            }
+        }
+    }
+}
 
 /// After a block ran: a G71–G73 with P and Q goes on after N(Q); a G70
 /// with P and Q runs N(P) … N(Q) and comes back. `None` when the block is
@@ -44,14 +149,7 @@ pub fn after(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Op
             ex.go(ctx, end.next);
             return Some(Flow::Run);
         };
-        let capture = Capture {
-            rough: Some(rough),
-            start: ctx.modal.pos.p,
-            modal: Box::new(ctx.modal.clone()),
-            points: Vec::new(),
-            line: ctx.here.line,
-            span: block.span,
-        };
+        let capture = Capture::new(Cycle::Rough(rough), ctx, block.span);
         if ex.call(ctx, CallKind::Sub, start.at, 0, block.span, macros) {
             if let Some(f) = ex.frames.last_mut() {
                 f.until = Some(nf);
@@ -85,15 +183,17 @@ pub fn contour_end(ex: &mut Exec, ctx: &mut Ctx, block: &Block) -> bool {
     true
 }
 
-/// After a LinuxCNC G70 the interpreter took (`Modal::finish_q`): its
-/// profile, subroutine o(Q), is read as a contour (not run in line) and the
-/// planner makes it one finishing pass; the program goes on after the G70.
-/// rs274 reads the profile the same way: its moves are G70's, the first a
-/// traverse. `None` when the block is no such G70.
-pub fn linux_finish(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Option<Flow> {
-    let q = ctx.modal.finish_q?;
-    block.all(b'G').find(|w| w.num.integer() == Some(70))?;
-    let label = q.to_string();
+/// After a LinuxCNC G70–G72 the interpreter took (`Modal::profile_call`):
+/// its profile, subroutine o(Q), is read as a contour (not run in line),
+/// and the planner makes it the finishing pass or the roughing; the
+/// program goes on after the block. rs274 reads the profile the same way
+/// (`convert_g7x` calls `O<q> CALL` and reads the subroutine's moves
+/// without running them). `None` when the block is no such cycle.
+pub fn linux_profile(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Option<Flow> {
+    let call = ctx.modal.profile_call?;
+    let cycle_code = |c: i64| matches!(c, 700 | 710..=712 | 720..=722);
+    block.all(b'G').find(|w| cycle_code((w.value() * 10.0).round() as i64))?;
+    let label = call.q.to_string();
     let known = ex.defined.iter().any(|d| **d == *label);
     let sub = if known {
         ctx.sub(&label)
@@ -102,21 +202,20 @@ pub fn linux_finish(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros
     };
     let span = block.get(b'Q').map_or(block.span, |w| w.span);
     let Some(sub) = sub else {
-        ctx.diag(&msg::SUB_NOT_FOUND, span, args![label = format!("o{label}")]);
-        return Some(Flow::Run);
+        // rs274 seeks the subroutine to the end of the file, and stops there.
+        let line = ctx.here.line;
+        ctx.diag(&msg::LCNC_SUB_SOUGHT, span, args![label = format!("o<{label}>"), line]);
+        return Some(Flow::Abort);
     };
     if !known {
         // Found after the call, as for `call`: met again in the flow it is refused.
         ex.defined.push(label.into());
     }
-    let capture = Capture {
-        rough: None,
-        start: ctx.modal.pos.p,
-        modal: Box::new(ctx.modal.clone()),
-        points: Vec::new(),
-        line: ctx.here.line,
-        span: block.span,
+    let cycle = match call.rough {
+        Some(words) => Cycle::LinuxRough { words, q: call.q },
+        None => Cycle::Finish,
     };
+    let capture = Capture::new(cycle, ctx, block.span);
     if ex.call(ctx, CallKind::Macro, sub.next, 0, span, macros) {
         if let Some(f) = ex.frames.last_mut() {
             f.capture = Some(Box::new(capture));

@@ -119,9 +119,41 @@ templates! {
     LCNC_MANY_PASSES = ManyPasses:
         "G76 cuts {n} passes (J {j}, K {k}, degression R {r}, H {h}); more than {limit} (setting linuxcnc.pass_warning): a larger J or a smaller R cuts fewer",
         "G76 切 {n} 刀（J {j}，K {k}，递减系数 R {r}，H {h}）；超过 {limit} 刀（设置 linuxcnc.pass_warning）：加大 J 或减小 R 可以减少刀数";
+    LCNC_G7X_NO_Q = MissingWord:
+        "{word}: G7x.x requires a Q word (Q names the subroutine that holds the profile: Q100 for o100)",
+        "{word}：LinuxCNC 报警“G7x.x requires a Q word”（Q 指定存放轮廓的子程序：Q100 即 o100）";
+    LCNC_G7X_COMP = CutterCompActive:
+        "{name} cannot be used with cutter compensation enabled: cancel it with G40 before the cycle",
+        "LinuxCNC 报警“{name} cannot be used with cutter compensation enabled”：请在循环之前用 G40 取消刀具半径补偿";
+    LCNC_G7X_PLANE = CycleNeedsXz:
+        "{name} can only be used in XZ plane (G18): put G18 before it",
+        "LinuxCNC 报警“{name} can only be used in XZ plane (G18)”：请在它之前写 G18";
+    LCNC_G7X_I = ValueOutOfRange:
+        "{word}: G7X error: I must be greater than zero. (I is the depth of each cut)",
+        "{word}：LinuxCNC 报警“G7X error: I must be greater than zero.”（I 为每刀的切深）";
+    LCNC_G7X_NOT_MONOTONIC = ProfileRefused:
+        "G7X error: Not monotonic: the profile of {sub} goes back along {axis}, and {name} needs it to run one way along {axis} from its first point to its last (pockets go in and out along {other} only)",
+        "LinuxCNC 报警“G7X error: Not monotonic”：子程序 {sub} 的轮廓沿 {axis} 向回走，而 {name} 要求轮廓从第一点到最后一点沿 {axis} 单向走（凹槽只能沿 {other} 进出）";
+    LCNC_G7X_PROFILE = ProfileRefused:
+        "G7X error: {message}: LinuxCNC gives up on the profile of {sub} offset by D{d}",
+        "LinuxCNC 报警“G7X error: {message}”：LinuxCNC 无法处理子程序 {sub} 偏移 D{d} 后的轮廓";
+    LCNC_G7X_MOVE = ProfileRefused:
+        "G7X error: {message} (in the profile of {sub}: an arc takes R, or I and K; a corner A or C)",
+        "LinuxCNC 报警“G7X error: {message}”（子程序 {sub} 的轮廓中：圆弧用 R，或用 I 和 K；拐角用 A 或 C）";
+    LCNC_G7X_OFFSET = ProfileRefused:
+        "{name}: offsetting the profile of {sub} by D{d} does not come to an end (LinuxCNC offsets it in steps of at most half its shortest piece): the cycle is not drawn",
+        "{name}：子程序 {sub} 的轮廓偏移 D{d} 无法完成（LinuxCNC 每次最多偏移最短一段的一半）：不绘制该循环";
+    LCNC_G7X_ENDLESS = ProfileRefused:
+        "{name}: the profile of {sub} does not cross the cut from X{x} Z{z}, and LinuxCNC 2.9 repeats that cut for ever: the moves are drawn up to there",
+        "{name}：子程序 {sub} 的轮廓与从 X{x} Z{z} 开始的切削线不相交，LinuxCNC 2.9 会无限重复这一刀：只绘制到此为止的移动";
+    LCNC_G7X_TOO_MANY = PassLimit:
+        "{name} needs more than {limit} cuts (I {i}): the moves are drawn up to there",
+        "{name} 需要超过 {limit} 刀（I {i}）：只绘制到此为止的移动";
 }
 
 phrases! {
+    PROFILE_Q: "Q, the number of the profile's subroutine", "Q（轮廓子程序的编号）";
+    NS_G7X_INCREMENTAL: "a G70–G72 profile cycle in incremental mode G91", "增量模式 G91 下的 G70–G72 轮廓循环";
     SPRING_COUNT_H: "the spring pass count H", "光刀次数 H";
     L_WORD: "L", "L";
     P_ZERO: "no thread is drawn, only the moves", "不绘制螺纹，只绘制移动";

@@ -34,6 +34,10 @@ pub enum Kind {
 pub enum Call {
     /// A straight move to radius `x`, axial `z`; `n` is the block's N word.
     Move { kind: Kind, x: f64, z: f64, n: Option<u64> },
+    /// `ARC_FEED` in the XZ plane (Z is its first axis, X its second): to
+    /// radius `x`, axial `z`, about radius `cx`, axial `cz`; `ccw` for a
+    /// positive rotation (G3).
+    Arc { x: f64, z: f64, cx: f64, cz: f64, ccw: bool, n: Option<u64> },
     /// `START_SPEED_FEED_SYNC(pitch, velocity_mode)`. G76 tapers change the
     /// pitch with a second start and no stop in between.
     SyncStart { pitch: f64, n: Option<u64> },
@@ -87,6 +91,11 @@ pub fn parse(text: &str) -> Result<Vec<Call>, String> {
                 };
                 Call::Move { kind, x: *v.first().ok_or_else(bad)?, z: *v.get(2).ok_or_else(bad)?, n }
             }
+            "ARC_FEED" => {
+                let v = nums()?;
+                let at = |k: usize| v.get(k).copied().ok_or_else(bad);
+                Call::Arc { z: at(0)?, x: at(1)?, cz: at(2)?, cx: at(3)?, ccw: at(4)? > 0.0, n }
+            }
             "START_SPEED_FEED_SYNC" => {
                 let pitch = *nums()?.first().ok_or_else(bad)?;
                 sync = Some(pitch);
@@ -123,6 +132,7 @@ pub fn synced_runs(calls: &[Call]) -> Vec<Vec<Segment>> {
                 }
                 at = (x, z);
             }
+            Call::Arc { x, z, .. } => at = (x, z),
             _ => {}
         }
     }
@@ -282,6 +292,8 @@ mod tests {
         assert_eq!(c[2], Call::SyncStop { n: Some(123456) });
         assert_eq!(c[3], Call::Move { kind: Kind::Feed, x: 9.0, z: 1.0, n: Some(7) });
         assert!(parse("executing\n").is_err());
+        let arc = "  104 N..... ARC_FEED(-2.0000, 9.0000, -2.0000, 8.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+        assert_eq!(parse(arc).unwrap(), [Call::Arc { x: 9.0, z: -2.0, cx: 8.0, cz: -2.0, ccw: true, n: None }]);
     }
 
     #[test]

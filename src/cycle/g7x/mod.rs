@@ -1,0 +1,373 @@
+//! LinuxCNC's lathe roughing cycles `G71 Q- X- Z- D- I- R- F-` (turning,
+//! cuts along Z) and `G72 …` (facing, cuts along X), with G71.1/G72.1 (no
+//! pockets roughed) and G71.2/G72.2 (only the pockets), planned move for
+//! move as LinuxCNC 2.9's interpreter plans them. Learnt from the G-code
+//! manual's section "G70, G71, G72 Lathe finishing and roughing cycles"
+//! (Q the profile subroutine, X/Z the start point, D the distance left to
+//! the profile, I the depth of each cut, R the retract) and from the
+//! interpreter's source `src/emc/rs274ngc/interp_g7x.cc` (`convert_g7x`,
+//! `g7x::do_g71`, `add_distance`, `pocket`), compared with what `rs274`
+//! prints (`tests/linuxcnc/oword-g71-*`, `oword-g72-*`).
+//!
+//! The profile is the subroutine's moves from the start point (the first,
+//! the lead-in, is the move to its first point). G72 turns it a quarter
+//! turn, so that both cycles cut along the real axis of the frame (`cx`);
+//! it is then mirrored so that it runs with the cut coordinate falling
+//! from the start and the depth growing to its end, which lets one walk
+//! rough an external or internal, left or right profile. A profile that
+//! turns back along the cut is refused ("Not monotonic"). The profile is
+//! offset by D away from the material (`offset`: outside corners become
+//! arcs) and, when it ends below the start's depth, closed by a move up to
+//! it. Then `walk` roughs it: cuts at depths I apart from the start's
+//! depth, each to where the profile next crosses it, and the profile
+//! followed where it rises; pockets (type II profiles) are roughed as they
+//! come. The rapids in from the start follow the lead-in, so the cuts'
+//! starts step along the line to the profile's first point. There is no
+//! finishing pass: the profile offset by D is the last pass, and the tool
+//! stays at its end (rs274 does not go back to the start).
+//!
+//! Pure: the profile's moves in, the moves out (the cuts and the returns
+//! inside pockets are roughing cuts; the moves along the profile are too,
+//! unless D is 0, when they turn the part's finished outline).
+
+mod cx;
+mod offset;
+pub mod read;
+mod seg;
+mod walk;
+
+use crate::args;
+use crate::cycle::rough::Along;
+use crate::diagnostic::Finding;
+use crate::message::{self as msg, Message};
+use crate::motion::{ArcData, Move, MoveKind, Point};
+use crate::span::Span;
+use cx::{C, I};
+use seg::Seg;
+use walk::{Out, Walk};
+
+/// Most cuts planned of one cycle (as for the Fanuc roughing).
+pub const MAX_CUTS: usize = crate::cycle::rough::MAX_CUTS;
+
+/// What a cycle does with pockets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pockets {
+    /// G71, G72: roughs them as they come.
+    All,
+    /// G71.1, G72.1: roughs over them.
+    None,
+    /// G71.2, G72.2: roughs only them, after going down the profile to the first.
+    AfterFirst,
+}
+
+/// A roughing cycle's words.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Words {
+    /// The code ×10: 710, 711, 712, 720, 721, 722.
+    pub code10: i64,
+    /// G71 cuts along Z, G72 along X.
+    pub along: Along,
+    /// What it does with pockets.
+    pub pockets: Pockets,
+    /// D: the distance left to the profile (0 without D).
+    pub d: f64,
+    /// I: the depth of each cut (1 without I).
+    pub i: f64,
+    /// R: the retract (0.5 without R).
+    pub r: f64,
+    /// Where I is written (else the block).
+    pub i_span: Span,
+}
+
+impl Words {
+    /// The axis and the pockets of cycle G(`code10`/10): 710–712, 720–722.
+    pub fn kind(code10: i64) -> Option<(Along, Pockets)> {
+        let along = match code10 / 10 {
+            71 => Along::Z,
+            72 => Along::X,
+            _ => return None,
+        };
+        let pockets = match code10 % 10 {
+            0 => Pockets::All,
+            1 => Pockets::None,
+            2 => Pockets::AfterFirst,
+            _ => return None,
+        };
+        Some((along, pockets))
+    }
+
+    /// The cycle's name: `G71`, `G72.2`.
+    pub fn title(&self) -> String {
+        match self.code10 % 10 {
+            0 => format!("G{}", self.code10 / 10),
+            k => format!("G{}.{k}", self.code10 / 10),
+        }
+    }
+}
+
+/// A LinuxCNC G70–G72 block read: the subroutine of its profile and, for
+/// G71/G72, the roughing's words.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Call {
+    /// The subroutine number, Q.
+    pub q: u32,
+    /// The roughing; `None`: G70's finishing pass.
+    pub rough: Option<Words>,
+}
+
+/// A corner a profile move rounds or bevels at its end (`A`, `C`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Corner {
+    /// A fillet of this radius.
+    Fillet(f64),
+    /// A chamfer of this size.
+    Chamfer(f64),
+}
+
+/// One move of the profile as read: its end, the arc it follows, the corner after it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Step {
+    /// Where it ends.
+    pub to: Point,
+    /// Its centre and sense, for an arc.
+    pub arc: Option<ArcData>,
+    /// A corner at its end.
+    pub corner: Option<Corner>,
+}
+
+/// Why the cycle stops: rs274's own errors, and where planning it would not end.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Fail {
+    /// I is zero or negative.
+    IZero,
+    /// The profile turns back along the cut.
+    NotMonotone,
+    /// A cut is deeper than a lead-in reaches.
+    XTooLarge,
+    /// The walk lost the profile.
+    Lost,
+    /// Two offset lines do not meet.
+    Parallel,
+    /// A corner cannot be made between its two pieces.
+    Corner,
+    /// The offset by D does not come to an end.
+    Offset,
+    /// The profile does not cross the depth of the cut from this point:
+    /// rs274 repeats that cut for ever.
+    Endless {
+        /// X (a diameter; in the walk, its frame's depth).
+        x: f64,
+        /// Z (in the walk, its frame's cut coordinate).
+        z: f64,
+    },
+    /// More than `limit` cuts.
+    TooMany {
+        /// The bound.
+        limit: usize,
+    },
+    /// A profile arc with R and I or K.
+    RAndIk,
+    /// A profile arc with neither R nor I and K.
+    NoIk,
+    /// A profile move with both A (fillet) and C (chamfer).
+    BothCorners,
+}
+
+impl Fail {
+    /// rs274's message after "G7X error: ", for its own errors.
+    pub fn rs274(self) -> Option<&'static str> {
+        Some(match self {
+            Fail::IZero => "I must be greater than zero.",
+            Fail::NotMonotone => "Not monotonic",
+            Fail::XTooLarge => "x too large in straight dive",
+            Fail::Lost => "How did we get here?",
+            Fail::Parallel => "Cannot intersect parallel lines",
+            Fail::Corner => "Corner finish failed",
+            Fail::RAndIk => "both R and I or K flag used for arc",
+            Fail::NoIk => "either I or K must be present for arc",
+            Fail::BothCorners => "Both A and C parameters on a corner",
+            Fail::Offset | Fail::Endless { .. } | Fail::TooMany { .. } => return None,
+        })
+    }
+}
+
+impl Fail {
+    /// What to say about the failure of cycle `w` over the profile of o(`q`),
+    /// and whether it is about the I word (else the block).
+    pub fn finding(self, w: &Words, q: u32) -> (Finding, bool) {
+        let (name, sub) = (w.title(), format!("o{q}"));
+        let (axis, other) = if w.along == Along::Z { ("Z", "X") } else { ("X", "Z") };
+        let m = match self {
+            Fail::IZero => {
+                let word = format!("I{}", crate::num::fmt(w.i));
+                return (Message::new(&msg::LCNC_G7X_I, args![word]), true);
+            }
+            Fail::NotMonotone => Message::new(&msg::LCNC_G7X_NOT_MONOTONIC, args![sub, name, axis, other]),
+            Fail::XTooLarge | Fail::Lost | Fail::Parallel | Fail::Corner => {
+                let message = self.rs274().unwrap_or_default();
+                Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
+            }
+            Fail::RAndIk | Fail::NoIk | Fail::BothCorners => {
+                let message = self.rs274().unwrap_or_default();
+                Message::new(&msg::LCNC_G7X_MOVE, args![message, sub])
+            }
+            Fail::Offset => Message::new(&msg::LCNC_G7X_OFFSET, args![name, sub, d = w.d]),
+            Fail::Endless { x, z } => Message::new(&msg::LCNC_G7X_ENDLESS, args![name, sub, x, z]),
+            Fail::TooMany { limit } => Message::new(&msg::LCNC_G7X_TOO_MANY, args![name, limit, i = w.i]),
+        };
+        (m, false)
+    }
+}
+
+/// A cycle planned: its moves, and why it stopped early, if it did.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Roughing {
+    /// The moves, made by the cycle's block.
+    pub moves: Vec<Move>,
+    /// The error that stopped it (with the moves before it).
+    pub fail: Option<Fail>,
+}
+
+/// The pieces of the profile from `start` through `steps`, in the frame of
+/// G71 (Z, radius); moves that go nowhere add none.
+fn pieces(start: Point, steps: &[Step]) -> Vec<Seg> {
+    let c = |p: Point| C::new(p.z, p.x / 2.0);
+    let mut out = Vec::with_capacity(steps.len());
+    let mut at = c(start);
+    for s in steps {
+        let to = c(s.to);
+        if to == at {
+            continue;
+        }
+        out.push(match s.arc {
+            Some(a) => Seg::arc(!a.cw, at, c(a.center), to),
+            None => Seg::line(at, to),
+        });
+        at = to;
+    }
+    out
+}
+
+/// How the profile was turned and mirrored into the walk's frame: bit 4 a
+/// quarter turn (G72), bit 2 mirrored in depth, bit 1 mirrored along the cut.
+#[derive(Clone, Copy, Debug, Default)]
+struct Frame(u8);
+
+impl Frame {
+    /// A point of the walk's frame back in the program's (Z, radius).
+    fn back(self, q: C) -> C {
+        let q = if self.0 & 1 != 0 { -q.conj() } else { q };
+        let q = if self.0 & 2 != 0 { q.conj() } else { q };
+        if self.0 & 4 != 0 { I * q } else { q }
+    }
+
+    /// A point of the walk's frame in the program: X a diameter.
+    fn point(self, q: C) -> Point {
+        let p = self.back(q);
+        Point::new(2.0 * p.im, p.re)
+    }
+
+    /// Whether arcs turn the other way in the program.
+    fn mirrored(self) -> bool {
+        (self.0 & 1 != 0) != (self.0 & 2 != 0)
+    }
+}
+
+/// Turns (G72) and mirrors the profile so that it runs down the cut from
+/// the start, deeper at its end than at its first point.
+fn orient(path: &mut [Seg], along: Along) -> Frame {
+    let mut f = Frame::default();
+    if along == Along::X {
+        path.iter_mut().for_each(|s| s.map(|p| (-p) * I, false));
+        f.0 ^= 4;
+    }
+    let (first, last) = (path[0].e, path[path.len() - 1].e);
+    let d = first - last;
+    if d.im > 0.0 {
+        path.iter_mut().for_each(|s| s.map(C::conj, true));
+        f.0 ^= 2;
+    }
+    if d.re < 0.0 {
+        path.iter_mut().for_each(|s| s.map(|p| -p.conj(), true));
+        f.0 ^= 1;
+    }
+    f
+}
+
+/// Plans cycle `w` from the start point `start` over the profile `steps`,
+/// its moves made by the block at `line`/`span`. A profile of less than
+/// two pieces (the lead-in included) cuts nothing.
+pub fn plan(w: &Words, start: Point, steps: &[Step], line: u32, span: Span) -> Roughing {
+    let mut path = pieces(start, steps);
+    if path.len() <= 1 {
+        return Roughing::default();
+    }
+    let fail = |f| Roughing { moves: Vec::new(), fail: Some(f) };
+    if w.i.is_nan() || w.i <= 0.0 {
+        return fail(Fail::IZero);
+    }
+    let frame = orient(&mut path, w.along);
+    path.retain(|s| s.size() >= 1e-3);
+    if path.is_empty() {
+        return Roughing::default();
+    }
+    // A first point beyond the start along the cut: the lead-in comes straight down.
+    if path[0].e.re > path[0].s.re {
+        path[0].s.re = path[0].e.re;
+    }
+    if !path.iter().all(Seg::monotone) {
+        return fail(Fail::NotMonotone);
+    }
+    if let Err(f) = offset::add_distance(&mut path, w.d) {
+        return fail(f);
+    }
+    let (first, last) = (path[0].s, path[path.len() - 1].e);
+    if last.im < first.im {
+        path.push(Seg::line(last, C::new(last.re, first.im)));
+    }
+    let delta = if w.i < 2.0 * seg::TOL { 2.0 * seg::TOL } else { w.i };
+    let mut walk = Walk::new(&path, delta, w.r, MAX_CUTS);
+    walk.out.push(Out::Rapid(first));
+    let fail = walk.run(w.pockets).err().map(|f| match f {
+        Fail::Endless { x, z } => {
+            let p = frame.point(C::new(z, x));
+            Fail::Endless { x: p.x, z: p.z }
+        }
+        f => f,
+    });
+    let finished = w.d == 0.0;
+    Roughing { moves: moves(&walk.out, frame, start, finished, line, span), fail }
+}
+
+/// The walk's moves in the program's coordinates, from `start`; `finished`:
+/// the moves along the profile turn the part's outline. An arc to where
+/// the tool is already is no move (rs274 leaves it out).
+fn moves(out: &[Out], frame: Frame, start: Point, finished: bool, line: u32, span: Span) -> Vec<Move> {
+    let point = |q: C| frame.point(q);
+    let mut at = start;
+    let mut moves = Vec::with_capacity(out.len());
+    for o in out {
+        let (kind, to, arc) = match *o {
+            Out::Rapid(q) => (MoveKind::Rapid, point(q), None),
+            Out::Feed(q, contour) => {
+                (if contour && finished { MoveKind::Feed } else { MoveKind::Rough }, point(q), None)
+            }
+            Out::Arc { ccw, c, to } => {
+                let to = point(to);
+                if (to.z - at.z).abs() < 1e-4 && (to.x - at.x).abs() / 2.0 < 1e-4 {
+                    continue;
+                }
+                let arc = ArcData { center: point(c), cw: ccw == frame.mirrored() };
+                (if finished { MoveKind::Arc } else { MoveKind::Rough }, to, Some(arc))
+            }
+        };
+        if to.is_finite() && at.dist(to) > 1e-9 {
+            moves.push(Move { kind, from: at, to, line, span, arc });
+        }
+        at = to;
+    }
+    moves
+}
+
+#[cfg(test)]
+mod tests;

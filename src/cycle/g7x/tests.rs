@@ -1,0 +1,157 @@
+//! The roughing against what rs274 (LinuxCNC 2.9) printed for small profiles.
+
+use super::*;
+
+fn words(code10: i64, d: f64, i: f64, r: f64) -> Words {
+    let (along, pockets) = Words::kind(code10).unwrap();
+    Words { code10, along, pockets, d, i, r, i_span: Span::default() }
+}
+
+fn line(x: f64, z: f64) -> Step {
+    Step { to: Point::new(x, z), arc: None, corner: None }
+}
+
+/// (rapid, radius, z) of each move, rounded as rs274 prints them.
+fn ends(r: &Roughing) -> Vec<(bool, f64, f64)> {
+    let q = |v: f64| (v * 1e4).round() / 1e4 + 0.0;
+    r.moves.iter().map(|m| (m.kind == MoveKind::Rapid, q(m.to.x / 2.0), q(m.to.z))).collect()
+}
+
+/// The turned pin of `tests/linuxcnc/oword-g71-*`'s kind: chamfer X12 Z0 →
+/// X16 Z-2, Z-20, shoulder to X24, Z-30; start X30 Z3 (G7: diameters).
+fn pin() -> Vec<Step> {
+    vec![line(12.0, 0.0), line(16.0, -2.0), line(16.0, -20.0), line(24.0, -20.0), line(24.0, -30.0)]
+}
+
+#[test]
+fn g71_cuts_each_depth_from_the_lead_in_and_follows_the_profile_last() {
+    // rs274: G71 Q100 X30 Z3 D0 I1 R0.5.
+    let r = plan(&words(710, 0.0, 1.0, 0.5), Point::new(30.0, 3.0), &pin(), 7, Span::default());
+    assert_eq!(r.fail, None);
+    let e = ends(&r);
+    // The first depth is the start's own: cut to the end Z, out 0.5 at 45°, back, down the lead-in.
+    assert_eq!(
+        e[..8],
+        [
+            (false, 15.0, -30.0),
+            (true, 15.5, -29.5),
+            (true, 15.5, 2.5),
+            (true, 15.0, 3.0),
+            (true, 14.0, 2.6667),
+            (false, 14.0, -30.0),
+            (true, 14.5, -29.5),
+            (true, 14.5, 2.1667)
+        ]
+    );
+    // Depth 12 meets the shoulder; depth 7 the chamfer at Z-1, whose retract is cut short by the lead-in.
+    assert!(e.contains(&(false, 12.0, -20.0)) && e.contains(&(false, 7.0, -1.0)));
+    // Last, the profile from its first point, then up to the start's depth; the tool stays there.
+    let tail: Vec<_> = e[e.len() - 6..].to_vec();
+    assert_eq!(
+        tail,
+        [
+            (true, 6.0, 0.0),
+            (false, 8.0, -2.0),
+            (false, 8.0, -20.0),
+            (false, 12.0, -20.0),
+            (false, 12.0, -30.0),
+            (false, 15.0, -30.0)
+        ]
+    );
+    assert_eq!(r.moves.len(), 50, "rs274 makes 50 moves after the first rapid");
+    // D0: the profile pass is the part's outline; the depth cuts are roughing.
+    let last = &r.moves[r.moves.len() - 5..];
+    assert!(last.iter().all(|m| m.kind == MoveKind::Feed));
+    assert_eq!(r.moves[0].kind, MoveKind::Rough);
+    assert!(r.moves.iter().all(|m| m.line == 7));
+}
+
+#[test]
+fn d_offsets_the_profile_with_arcs_at_outside_corners() {
+    // rs274: G71 Q100 X30 Z3 D1 I0.5 R0.5: the chamfer offset by 1 starts at
+    // X6.7071 Z0.7071, the corner at Z-2 is an arc about X8 Z-2 (G3), the
+    // shoulder comes 1 nearer, its corner an arc about X12 Z-20.
+    let r = plan(&words(710, 1.0, 0.5, 0.5), Point::new(30.0, 3.0), &pin(), 7, Span::default());
+    let arcs: Vec<(f64, f64, f64, f64, bool)> = r
+        .moves
+        .iter()
+        .filter_map(|m| m.arc.map(|a| (m.to.x / 2.0, m.to.z, a.center.x / 2.0, a.center.z, a.cw)))
+        .collect();
+    assert_eq!(arcs, [(9.0, -2.0, 8.0, -2.0, false), (13.0, -20.0, 12.0, -20.0, false)]);
+    let e = ends(&r);
+    assert!(e.contains(&(false, 12.5, -19.134)), "a depth meets the offset corner's arc");
+    assert!(e.contains(&(true, 7.1869, 0.6012)), "a retract cut short by the lead-in");
+    // The offset profile starts 1 out from X12 Z0 square to the chamfer: as far out as along.
+    let first = e[e.len() - 8];
+    assert_eq!((first.0, first.1), (true, 6.7071));
+    assert_eq!(((first.1 - 6.0) * 1e4).round(), (first.2 * 1e4).round());
+    assert_eq!(e.last(), Some(&(false, 15.0, -30.0)));
+    // D1: every feed is roughing, the arcs too.
+    assert!(r.moves.iter().all(|m| m.kind != MoveKind::Feed && m.kind != MoveKind::Arc));
+}
+
+#[test]
+fn a_pocket_is_roughed_down_its_wall_depth_by_depth() {
+    // rs274: a groove from Z-10 to Z-20 down to X12, G71 D0 I1 R0.5.
+    let mut steps = pin()[..2].to_vec();
+    steps.extend([line(16.0, -10.0), line(12.0, -14.0), line(12.0, -18.0), line(16.0, -20.0), line(16.0, -24.0)]);
+    steps.extend([line(24.0, -24.0), line(24.0, -30.0)]);
+    let r = plan(&words(710, 0.0, 1.0, 0.5), Point::new(30.0, 3.0), &steps, 7, Span::default());
+    let e = ends(&r);
+    let k = e.iter().position(|m| *m == (false, 8.0, -10.0)).unwrap();
+    assert_eq!(
+        e[k..k + 11],
+        [
+            (false, 8.0, -10.0),
+            (false, 8.0, -20.0),
+            (true, 8.5, -19.5),
+            (true, 8.5, -10.5),
+            (false, 8.0, -10.0),
+            (false, 7.0, -12.0),
+            (false, 7.0, -19.0),
+            (true, 7.5, -18.5),
+            (true, 7.5, -12.5),
+            (false, 7.0, -12.0),
+            (false, 6.0, -14.0)
+        ]
+    );
+    // G71.1 rough over the pocket: the profile pass crosses it at depth 8.
+    let r = plan(&words(711, 0.0, 1.0, 0.5), Point::new(30.0, 3.0), &steps, 7, Span::default());
+    assert!(!ends(&r).contains(&(false, 7.0, -12.0)));
+    // G71.2 roughs only the pocket: down the profile first, no depth cut before it.
+    let r = plan(&words(712, 0.0, 1.0, 0.5), Point::new(30.0, 3.0), &steps, 7, Span::default());
+    assert_eq!(ends(&r)[..3], [(true, 6.0, 0.0), (false, 8.0, -2.0), (false, 8.0, -10.0)]);
+}
+
+#[test]
+fn g72_faces_along_x_at_depths_along_z() {
+    // rs274: G72 Q100 X40 Z2 D0 I1 R0.5 over X36 Z-6, X24, Z-3, X14 Z-1, X0.
+    let steps = [line(36.0, -6.0), line(24.0, -6.0), line(24.0, -3.0), line(14.0, -1.0), line(0.0, -1.0)];
+    let r = plan(&words(720, 0.0, 1.0, 0.5), Point::new(40.0, 2.0), &steps, 7, Span::default());
+    let e = ends(&r);
+    assert_eq!(e[..5], [(false, 0.0, 2.0), (true, 0.5, 2.5), (true, 19.5, 2.5), (true, 20.0, 2.0), (true, 19.75, 1.0)]);
+    assert!(e.contains(&(false, 7.0, -1.0)) && e.contains(&(false, 12.0, -6.0)));
+    assert_eq!(e.last(), Some(&(false, 0.0, 2.0)), "the profile closed up to the start's Z");
+}
+
+#[test]
+fn what_rs274_refuses() {
+    let at = Point::new(30.0, 3.0);
+    let r = plan(&words(710, 0.0, 0.0, 0.5), at, &pin(), 7, Span::default());
+    assert_eq!((r.fail, r.moves.len()), (Some(Fail::IZero), 0));
+    // Back along Z.
+    let back = [line(12.0, 0.0), line(16.0, -20.0), line(20.0, -15.0), line(24.0, -30.0)];
+    let r = plan(&words(710, 0.0, 1.0, 0.5), at, &back, 7, Span::default());
+    assert_eq!(r.fail, Some(Fail::NotMonotone));
+    // A profile of one move is only a lead-in: nothing is cut, and I is not looked at.
+    let r = plan(&words(710, 0.0, 0.0, 0.5), at, &[line(12.0, 0.0)], 7, Span::default());
+    assert_eq!(r, Roughing::default());
+}
+
+#[test]
+fn the_cuts_are_bounded() {
+    // I of 1e-9 is read as 2e-6: 7.5 million depths, stopped after MAX_CUTS steps.
+    let r = plan(&words(710, 0.0, 1e-9, 0.5), Point::new(30.0, 3.0), &pin(), 7, Span::default());
+    assert_eq!(r.fail, Some(Fail::TooMany { limit: MAX_CUTS }));
+    assert!(r.moves.len() <= 5 * MAX_CUTS, "{}", r.moves.len());
+}
