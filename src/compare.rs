@@ -3,12 +3,14 @@
 //! synchronised path (screw-in, cut and run-out points: X and Z), its depth
 //! below the crest and its time. The infeed side is in the path: a flank
 //! infeed moves each pass along Z (a cycle's passes and the same passes
-//! written block by block have the same path). Two
+//! written block by block have the same path); a start angle is read as the
+//! axial start it equals (lead·θ/360° back). Two
 //! programs cut the same passes when nothing differs beyond the tolerance
 //! (0.001 in program units, 1% of a pass's time). A pure function of two plans.
 
 use serde::Serialize;
 
+use crate::geom::Frame;
 use crate::motion::Point;
 use crate::plan::Plan;
 use crate::thread::{Axis, Pass, Thread};
@@ -107,13 +109,26 @@ fn thread(k: usize, (pa, a): (&Plan, &Thread), (pb, b): (&Plan, &Thread), out: &
 
 /// The synchronised path of a pass: where its first synchronised motion
 /// starts and where each ends (screw-in, cut, run-out), from its motions,
-/// else from its own points.
-fn path(plan: &Plan, p: &Pass) -> Vec<Point> {
+/// else from its own points. A start angle θ is read as the start it
+/// equals at angle 0: lead·θ/360° further back along the first motion (the
+/// same helix; how a program for a controller without the word cuts that
+/// start, `expand`).
+fn path(plan: &Plan, t: &Thread, p: &Pass) -> Vec<Point> {
     let cut = plan.moves.get(p.moves.cut.clone()).unwrap_or(&[]);
-    if cut.is_empty() {
-        return p.screw_in_from.into_iter().chain([p.from, p.to]).chain(p.runout_to).collect();
+    let mut path: Vec<Point> = if cut.is_empty() {
+        p.screw_in_from.into_iter().chain([p.from, p.to]).chain(p.runout_to).collect()
+    } else {
+        cut.first().map(|m| m.from).into_iter().chain(cut.iter().map(|m| m.to)).collect()
+    };
+    if p.angle != 0.0 && t.lead > 0.0 && path.len() > 1 {
+        let f = Frame::along(t.long_axis);
+        let along = f.travel(path[0], path[1]);
+        if along.abs() > TOL {
+            let d = (t.lead * p.angle / 360.0).rem_euclid(t.lead);
+            path[0] = Point::from_zr(path[0].zr() + (path[0].zr() - path[1].zr()) * (d / along.abs()));
+        }
     }
-    cut.first().map(|m| m.from).into_iter().chain(cut.iter().map(|m| m.to)).collect()
+    path
 }
 
 /// How deep a pass cuts below its thread's crest (radius), from its path: the
@@ -145,7 +160,7 @@ fn pass(
         }
     };
     num("start", Some(f64::from(a.start)), Some(f64::from(b.start)));
-    let (qa, qb) = (path(pa, a), path(pb, b));
+    let (qa, qb) = (path(pa, ta, a), path(pb, tb, b));
     if qa.len() != qb.len() {
         num("points", Some(qa.len() as f64), Some(qb.len() as f64));
     }

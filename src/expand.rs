@@ -8,9 +8,9 @@
 //! `J K` run-out, Fanuc's `G32` with the run-out as a second block, Renhe's
 //! incremental `G33` after a `G30` tail, LinuxCNC's `G33 X Z K` with K along
 //! the move. Multi-start threads keep their start angles where the target
-//! has the word (`Q`); elsewhere each start is moved along the axis by
-//! lead × angle / 360° (the same helix). Planned again, the program gives
-//! the same passes and start angles.
+//! has the word (`Q`); elsewhere each start's passes start lead × angle /
+//! 360° further back along the axis (the same helix) and end where they
+//! did. Planned again, the program gives the same passes and starts.
 
 use crate::args;
 use crate::controller::{self, ThreadWords, Writing};
@@ -240,8 +240,9 @@ impl<'p> Writer<'p> {
                     continue;
                 }
                 Some((t, p, _)) => {
-                    let last = self.plan.threads[t].passes[p].moves.all().end == i + 1;
-                    let to = if last { moves[i].to } else { self.shift(t, p, moves[i].to) };
+                    // The approach goes to the start moved along the axis (when it is).
+                    let before = i < self.plan.threads[t].passes[p].moves.cut.start;
+                    let to = if before { self.shift(t, p, moves[i].to) } else { moves[i].to };
                     self.plain(&moves[i], to);
                 }
                 None => self.plain(&moves[i], moves[i].to),
@@ -250,18 +251,26 @@ impl<'p> Writer<'p> {
         }
     }
 
-    /// `p` moved along the thread's axis by lead × angle / 360°, back against
-    /// the cut, when the target has no start angle word.
+    /// `pt`, a point of pass `p`'s approach or its start, moved where the
+    /// pass starts when the target has no start angle word: back along its
+    /// first synchronised move by lead × angle / 360° along the axis (the
+    /// same helix), so that the cut, one part turn longer at most, still
+    /// ends where it did (on a taper the start stays on the cone).
     fn shift(&self, t: usize, p: usize, pt: Point) -> Point {
         let th = &self.plan.threads[t];
         let pass = &th.passes[p];
         if self.w.start_angle || pass.angle == 0.0 || th.lead <= 0.0 {
             return pt;
         }
-        let d = (th.lead * pass.angle / 360.0).rem_euclid(th.lead);
+        let Some(first) = self.plan.moves.get(pass.moves.cut.start) else { return pt };
         let f = Frame(th.long_axis);
-        let sense = f.travel(pass.from, pass.to).signum();
-        f.offset(pt, glam::DVec2::new(-sense * d, 0.0))
+        let along = f.travel(first.from, first.to);
+        if along.abs() < EPS {
+            return pt;
+        }
+        let d = (th.lead * pass.angle / 360.0).rem_euclid(th.lead);
+        let back = (first.from.zr() - first.to.zr()) * (d / along.abs());
+        Point::from_zr(pt.zr() + back)
     }
 
     fn plain(&mut self, m: &Move, to: Point) {
@@ -340,7 +349,12 @@ impl<'p> Writer<'p> {
         let th = &self.plan.threads[t];
         // The points as the target will read them, so the long axis of each
         // block (which its F is along) is the one the controller finds.
-        let at = |pt| self.snap(self.shift(t, p, pt));
+        // Only the start moves (when it does): the cut ends where it did.
+        let start = cut.first().map(|m| m.from);
+        let at = |pt: Point| {
+            let moved = if Some(pt) == start { self.shift(t, p, pt) } else { pt };
+            self.snap(moved)
+        };
         let segs = segments(th, cut.iter().map(|m| (m.kind, at(m.from), at(m.to))));
         if segs.is_empty() {
             return;

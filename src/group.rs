@@ -13,7 +13,8 @@ use std::rc::Rc;
 
 use crate::diagnostic::{Diagnostics, Via};
 use crate::event::{Piece, Seg};
-use crate::num::{EPS, close as near};
+use crate::helix;
+use crate::num::{EPS, same_lead};
 use crate::settings::{P, Settings};
 use crate::span::{Shift, Span};
 use crate::thread::{Axis, CrestSource, Infeed, Pass, PassMoves, Role, Source, Spindle, Thread, Units};
@@ -207,11 +208,15 @@ impl Grouper {
     /// cut: a G32 block after a cut without a run-out, going on along the
     /// thread's axis (Z) while it leaves the work (against the infeed) at
     /// `group.runout_angle` or more to the axis — the chamfer Fanuc programs
-    /// write as a second G32 block, Fanuc's G32 having no run-out word.
+    /// write as a second G32 block, Fanuc's G32 having no run-out word, and
+    /// LinuxCNC programs as a second G33.
     pub fn is_runout(&self, p: &Piece, s: &Settings) -> bool {
-        let (Some(c), Source::G32) = (&self.chain, p.source) else { return false };
+        let Some(c) = &self.chain else { return false };
+        if !matches!(p.source, Source::G32 | Source::LinuxG33) {
+            return false;
+        }
         let Some(last) = c.segs.last() else { return false };
-        if c.source != Source::G32 || last.runout_to.is_some() || p.seg.runout_to.is_some() {
+        if c.source != p.source || last.runout_to.is_some() || p.seg.runout_to.is_some() {
             return false;
         }
         if last.long != Axis::Z || c.approach == 0.0 {
@@ -338,7 +343,7 @@ fn too_many_starts(cuts: &[Chain], starts: u32, limit: usize, diags: &mut Diagno
 
 /// Whether `b` cuts the same helix as `a` (one more pass of it).
 fn same_thread(a: &Chain, b: &Chain, max_infeed: f64) -> bool {
-    if a.source != b.source || a.units != b.units || !near(a.lead, b.lead) || a.segs.len() != b.segs.len() {
+    if a.source != b.source || a.units != b.units || !same_lead(a.lead, b.lead) || a.segs.len() != b.segs.len() {
         return false;
     }
     for (x, y) in a.segs.iter().zip(&b.segs) {
@@ -399,19 +404,13 @@ fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
     }
 }
 
-/// Builds a thread from its chains: starts from distinct start angles, passes in order.
+/// Builds a thread from its chains: starts from the helices they cut
+/// ([`starts_of`]), passes in order.
 fn build(cuts: &[Chain]) -> Thread {
-    let mut angles: Vec<f64> = Vec::new();
-    for c in cuts {
-        if !angles.iter().any(|a| (a - c.angle).abs() < 1e-6) {
-            angles.push(c.angle);
-        }
-    }
-    angles.sort_unstable_by(f64::total_cmp);
-    let mut counts = vec![0u32; angles.len()];
+    let (of, starts) = starts_of(cuts);
+    let mut counts = vec![0u32; starts];
     let mut passes = Vec::with_capacity(cuts.len());
-    for c in cuts {
-        let si = angles.iter().position(|a| (a - c.angle).abs() < 1e-6).unwrap_or(0);
+    for (c, &si) in cuts.iter().zip(&of) {
         counts[si] += 1;
         passes.push(pass_of(c, si as u32 + 1, counts[si]));
     }
@@ -419,7 +418,7 @@ fn build(cuts: &[Chain]) -> Thread {
     let main =
         *c0.segs.iter().max_by(|a, b| a.long_travel().abs().total_cmp(&b.long_travel().abs())).unwrap_or(&c0.segs[0]);
     let depth_dir = depth_direction(cuts, &main);
-    let starts = angles.len() as u32;
+    let starts = starts as u32;
     let line = cuts.iter().flat_map(|c| c.lines.iter().copied()).min().unwrap_or(0);
     let end_line = cuts.iter().flat_map(|c| c.lines.iter().copied()).max().unwrap_or(0);
     let p0 = &passes[0];
@@ -450,6 +449,66 @@ fn build(cuts: &[Chain]) -> Thread {
         first_move: cuts.iter().map(|c| c.first_move).min().unwrap_or(0),
         shop: Default::default(),
     }
+}
+
+/// Each chain's start (0-based) and the number of starts. The helices the
+/// chains cut (their phases: start angle and axial start, [`helix::phase`])
+/// are the starts when there are several, evenly spaced round the turn, each
+/// cut by as many passes: a multi-start thread cut by start angles (`Q`) or
+/// by moving each start's passes lead/starts along the axis, as a controller
+/// without a start angle word (Renhe, LinuxCNC) cuts one. Otherwise the
+/// distinct start angles are the starts (a pass on a stray helix is the
+/// cross-thread check's to report, [`helix::check`]). Starts are numbered
+/// from the first chain's, by angle.
+fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
+    let phase = |c: &Chain| {
+        let s = c.segs[0];
+        helix::phase(c.angle, s.long_of(s.from), s.long_of(s.to), 0.0, c.lead)
+    };
+    let phases: Vec<f64> = cuts.iter().map(phase).collect();
+    // (phase from the first chain's, passes, the start angle of its first chain)
+    let mut helices: Vec<(f64, usize, f64)> = Vec::new();
+    let mut of = Vec::with_capacity(cuts.len());
+    for (c, &p) in cuts.iter().zip(&phases) {
+        let turn = (p - phases[0]).rem_euclid(1.0);
+        match helices.iter().position(|h| helix::same_phase(h.0, turn)) {
+            Some(i) => {
+                helices[i].1 += 1;
+                of.push(i);
+            }
+            None => {
+                of.push(helices.len());
+                helices.push((turn, 1, c.angle));
+            }
+        }
+    }
+    let n = helices.len();
+    let mut by_turn: Vec<usize> = (0..n).collect();
+    by_turn.sort_unstable_by(|&a, &b| helices[a].0.total_cmp(&helices[b].0));
+    let even = n > 1
+        && by_turn.iter().enumerate().all(|(k, &i)| helix::same_phase(helices[i].0, k as f64 / n as f64))
+        && helices.iter().all(|h| h.1 == helices[0].1);
+    if even {
+        // Numbered by start angle, then by axial place round the turn.
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_unstable_by(|&a, &b| {
+            helices[a].2.total_cmp(&helices[b].2).then(helices[a].0.total_cmp(&helices[b].0))
+        });
+        let mut rank = vec![0; n];
+        for (k, &i) in order.iter().enumerate() {
+            rank[i] = k;
+        }
+        return (of.into_iter().map(|i| rank[i]).collect(), n);
+    }
+    let mut angles: Vec<f64> = Vec::new();
+    for c in cuts {
+        if !angles.iter().any(|a| (a - c.angle).abs() < 1e-6) {
+            angles.push(c.angle);
+        }
+    }
+    angles.sort_unstable_by(f64::total_cmp);
+    let of = cuts.iter().map(|c| angles.iter().position(|a| (a - c.angle).abs() < 1e-6).unwrap_or(0)).collect();
+    (of, angles.len())
 }
 
 /// Which way the depth grows along the short axis: from the passes'

@@ -16,7 +16,7 @@ use crate::diagnostic::Diagnostics;
 use crate::geom::Frame;
 use crate::message as msg;
 use crate::motion::Move;
-use crate::num::{close, round_out};
+use crate::num::{close, round_out, same_lead};
 use crate::span::Span;
 use crate::thread::{Pass, Thread};
 
@@ -76,10 +76,8 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
         .flat_map(|t| {
             t.passes.iter().map(move |p| {
                 let start = f.long(p.from);
-                // Moving the other way along the axis turns the phase the other way.
-                let sense = if f.long(p.to) < start { 1.0 } else { -1.0 };
                 // A cycle's flank infeed moves each pass along the axis on purpose (its shift).
-                let phase = (p.angle / 360.0 + sense * (start - p.shift) / t.lead).rem_euclid(1.0);
+                let phase = phase(p.angle, start, f.long(p.to), p.shift, t.lead);
                 Helix { pass: p, lead: t.lead, phase, start }
             })
         })
@@ -87,7 +85,7 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
     if helices.len() < 3 {
         return;
     }
-    let same = |a: &Helix, b: &Helix| close(a.lead, b.lead) && phase_gap(a.phase, b.phase) < 1e-3;
+    let same = |a: &Helix, b: &Helix| same_lead(a.lead, b.lead) && same_phase(a.phase, b.phase);
     // Each helix with how many passes cut it.
     let mut kinds: Vec<(usize, usize)> = Vec::new(); // (first pass index, count)
     for (k, h) in helices.iter().enumerate() {
@@ -111,7 +109,7 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
         }
         for h in helices.iter().filter(|h| same(&helices[first], h)) {
             let span = cut_span(h.pass, moves, spans);
-            if !close(h.lead, m.lead) {
+            if !same_lead(h.lead, m.lead) {
                 diags.push(&msg::CROSS_LEAD, span, args![lead = h.lead, n = most, from, to, other = m.lead]);
                 continue;
             }
@@ -125,6 +123,24 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
             diags.push(&msg::CROSS_PHASE, span, a);
         }
     }
+}
+
+/// The helix a cut starts, as a fraction of a turn (0 ≤ φ < 1): its start
+/// angle `angle` (degrees) plus its start `start` along the thread's axis in
+/// leads, less the axial `shift` a cycle gives it on purpose; a cut toward
+/// larger coordinates (`end` > `start`) turns the phase the other way. Two
+/// cuts of one lead with equal phases cut one groove: a start angle θ is
+/// the same helix as an axial shift of lead·θ/360° (GSK980TDc user manual
+/// §3.24.1, G32's Q: the starts of a multi-start thread are its passes
+/// 360°/starts apart).
+pub fn phase(angle: f64, start: f64, end: f64, shift: f64, lead: f64) -> f64 {
+    let sense = if end < start { 1.0 } else { -1.0 };
+    (angle / 360.0 + sense * (start - shift) / lead).rem_euclid(1.0)
+}
+
+/// Whether two phases (turns) are one helix.
+pub fn same_phase(a: f64, b: f64) -> bool {
+    phase_gap(a, b) < 1e-3
 }
 
 /// The span of the block that cuts `p` (its synchronised move), else of its first line.
@@ -147,6 +163,17 @@ fn signed_gap(a: f64, b: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_start_angle_is_an_axial_shift_of_lead_times_angle() {
+        // Lead 4 toward −Z: Q180 at Z5 and Q0 at Z7 cut one groove; Z6 is another.
+        let at = |angle, z: f64| phase(angle, z, -30.0, 0.0, 4.0);
+        assert!(same_phase(at(180.0, 5.0), at(0.0, 7.0)));
+        assert!((phase_gap(at(0.0, 5.0), at(0.0, 7.0)) - 0.5).abs() < 1e-12);
+        assert!(!same_phase(at(0.0, 5.0), at(0.0, 6.0)));
+        // Toward +Z the shift turns the other way: Q90 at Z0 is Z−1 at Q0.
+        assert!(same_phase(phase(90.0, 0.0, 30.0, 0.0, 4.0), phase(0.0, -1.0, 30.0, 0.0, 4.0)));
+    }
 
     #[test]
     fn phases_wrap() {

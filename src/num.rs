@@ -33,6 +33,14 @@ pub fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= EPS * (1.0 + a.abs().max(b.abs()))
 }
 
+/// Whether two leads are one: equal to a millionth. A lead read from a
+/// word along a taper's path (LinuxCNC's K, six decimals) gives the lead
+/// along the axis to a few parts in 10⁸ only; a millionth of a 2 mm lead
+/// drifts 2 µm over a thousand turns.
+pub fn same_lead(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-6 * a.abs().max(b.abs()) + EPS
+}
+
 /// Formats a length for messages: up to four decimals, trailing zeros trimmed.
 pub fn fmt(v: f64) -> String {
     // Integer arithmetic for the usual range: exact-decimal float formatting is slow.

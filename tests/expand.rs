@@ -180,13 +180,16 @@ fn into_linuxcnc() {
     let e = expand(&before, L);
     let after = plan_with(&e.program, L, &[]);
     no_alarm(&after);
-    // One start only (no start angle word): the second start's passes are moved
-    // back along Z by lead/2 = 1.5, so the same two helices are cut.
+    // No start angle word: the second start's passes start lead/2 = 1.5 further
+    // back along Z and end where they did, so the same two helices are cut, and
+    // read again they are the thread's second start.
     let t = &after.threads[0];
-    assert_eq!(t.passes.len(), 8);
+    assert_eq!((t.passes.len(), t.starts), (8, 2));
     let b = &before.threads[0];
     let second = b.passes.iter().position(|p| p.start == 2).unwrap();
     assert!((t.passes[second].from.z - (b.passes[second].from.z + 1.5)).abs() < TOL, "{}", e.program);
+    assert!((t.passes[second].to.z - b.passes[second].to.z).abs() < TOL, "{}", e.program);
+    assert_eq!(t.passes[second].start, 2);
     assert!((t.passes[0].from.z - b.passes[0].from.z).abs() < TOL);
     // A taper G33: K is along the move, the lead along Z stays.
     let taper = plan_with(G92_TAPER_JK, G, &[]);
@@ -195,7 +198,9 @@ fn into_linuxcnc() {
     assert!((lx.threads[0].lead - 2.0).abs() < 1e-6);
     let p = (&taper.threads[0].passes[0], &lx.threads[0].passes[0]);
     near("taper from", p.0.from, p.1.from);
-    near("taper to", p.0.to, p.1.segments[1]);
+    // Its chamfer, a second G33 leaving the work, is read back as the run-out.
+    near("taper to", p.0.to, p.1.to);
+    near("taper run-out", p.0.runout_to.unwrap(), p.1.runout_to.unwrap());
 }
 
 /// LinuxCNC's G76 (tapers at both ends) into GSK and back into LinuxCNC.

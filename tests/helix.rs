@@ -66,7 +66,9 @@ fn a_lone_start_angle_but_not_a_two_start_thread() {
 
 /// A two-start thread cut by moving the start half a lead (LinuxCNC's G33
 /// has no start angle: lead 3, the second start's passes begin 1.5 mm
-/// further): passes split evenly, no warning; one pass of the second start
+/// further): passes split evenly, no warning, and they are read as the
+/// thread's two starts (a start angle θ is the helix of an axial shift
+/// lead·θ/360°, GSK980TDc manual §3.24.1); one pass of the second start
 /// alone is a mistake. In Chinese the warning names both leads.
 #[test]
 fn a_two_start_thread_by_axial_offset_and_the_chinese_text() {
@@ -84,10 +86,26 @@ fn a_two_start_thread_by_axial_offset_and_the_chinese_text() {
     no_alarm(&even);
     assert_eq!(even.threads.iter().map(|t| t.passes.len()).sum::<usize>(), 6);
     assert!(cross(&even).is_empty(), "{:?}", cross(&even));
+    // They are one thread of two starts, lead 3, pitch 1.5, the second start
+    // at 180° (its axial offset 1.5, half the lead), alternating pass by pass.
+    let t = &even.threads[0];
+    assert_eq!((even.threads.len(), t.starts), (1, 2));
+    assert!((t.pitch - 1.5).abs() < 1e-9 && (t.lead - 3.0).abs() < 1e-9);
+    assert_eq!(t.passes.iter().map(|p| p.start).collect::<Vec<_>>(), [1, 2, 1, 2, 1, 2]);
+    let starts = screwcut::diagram::starts::starts_of(&even, 0);
+    let seen: Vec<(u32, f64, f64)> = starts.iter().map(|s| (s.number, s.angle, s.offset)).collect();
+    assert_eq!(seen.len(), 2);
+    assert!((seen[1].1 - 180.0).abs() < 1e-6 && (seen[1].2 - 1.5).abs() < 1e-9, "{seen:?}");
+    // Each start's depths are its own: the second start's first pass is its first cut.
+    assert!(
+        (t.passes[1].depth - t.passes[0].depth).abs() < 1e-9 && (t.passes[1].infeed - t.passes[1].depth).abs() < 1e-9
+    );
     let lone = plan_with(&program(&[38.8, 38.2, 37.8, 37.6], 1), Dialect::LinuxCnc, &[]);
     let c = cross(&lone);
     assert_eq!(c.len(), 1, "{c:?}");
     assert!(c[0].1.contains("180°"), "{}", c[0].1);
+    // A stray pass is no start: the passes it joins keep one.
+    assert!(lone.threads.iter().all(|t| t.starts == 1));
     let plan = gsk(&O1006.replace("N120 G32 Z13.0 F2.0;", "N120 G32 Z13.0 F2.5;"));
     let d = plan.with_code(Code::CrossThread).next().unwrap();
     let zh = d.render(screwcut::message::Lang::Zh);

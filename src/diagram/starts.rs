@@ -3,7 +3,10 @@
 //! angles clockwise), and to its right a ruler one lead long with each
 //! start's axial offset lead·θ/360° (lead/starts apart for evenly spaced starts).
 
+use crate::geom::Frame;
+use crate::helix;
 use crate::plan::Plan;
+use crate::thread::Pass;
 
 use super::scene::{Anchor, Glyph, Item, Label, Pt, Scene, Shape, Style, ViewKind, num};
 
@@ -28,15 +31,30 @@ pub struct Start {
     pub pass: usize,
 }
 
-/// The starts of thread `ti`, from their first passes.
+/// The starts of thread `ti`, from their first passes: their start angles,
+/// or, for starts cut at one angle by moving them along the axis, the angle
+/// that helix has (its axial shift from start 1's first pass, 360°/lead each).
 pub fn starts_of(plan: &Plan, ti: usize) -> Vec<Start> {
     let Some(t) = plan.threads.get(ti) else { return Vec::new() };
     let mut out: Vec<Start> = Vec::new();
+    let f = Frame::along(t.long_axis);
+    let phase = |p: &Pass| helix::phase(p.angle, f.long(p.from), f.long(p.to), p.shift, t.lead);
+    let by_shift = t.starts > 1 && t.lead > 0.0 && t.passes.iter().all(|p| p.angle == t.passes[0].angle);
+    let first = t.passes.iter().find(|p| p.start == 1).map(phase);
     for (i, p) in t.passes.iter().enumerate() {
         if out.iter().any(|s| s.number == p.start) {
             continue;
         }
-        let angle = if p.angle.is_finite() { p.angle } else { 0.0 };
+        let angle = match first.filter(|_| by_shift) {
+            Some(p1) => {
+                let turn = (phase(p) - p1).rem_euclid(1.0);
+                // Rounding near a whole turn is start 1's helix.
+                let turn = if 1.0 - turn < 1e-6 { 0.0 } else { turn };
+                p.angle + 360.0 * turn
+            }
+            None if p.angle.is_finite() => p.angle,
+            None => 0.0,
+        };
         let offset = if t.lead > 0.0 { (t.lead * angle / 360.0).rem_euclid(t.lead) } else { 0.0 };
         out.push(Start { number: p.start, angle, offset, pass: i });
     }
