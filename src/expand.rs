@@ -363,6 +363,9 @@ impl<'p> Writer<'p> {
             self.rapid(segs[0].from);
         }
         let angle = th.passes[p].angle;
+        if self.w.thread == ThreadWords::Renhe && self.last_x == 0.0 {
+            self.renhe_x_feed(t, p, segs[0].from);
+        }
         match self.w.thread {
             ThreadWords::G32 { runout } => self.g32(&segs, runout, angle),
             ThreadWords::Renhe => self.renhe(&segs, th.lead),
@@ -452,6 +455,22 @@ impl<'p> Writer<'p> {
             self.renhe_block(end, lead);
             self.arrive(segs[n - 1].to);
         }
+    }
+
+    /// Before the first Renhe thread block when no X move has set the
+    /// run-out direction (the tool came from an unknown place): out to the
+    /// pass's retract diameter (else two pitches out) and back in to `start`.
+    fn renhe_x_feed(&mut self, t: usize, p: usize, start: Point) {
+        let th = &self.plan.threads[t];
+        let pass = &th.passes[p];
+        let outward = -th.depth_dir;
+        let retract = self.plan.moves.get(pass.moves.retract.start).map(|m| m.to.x);
+        let out_x =
+            retract.filter(|x| (x - start.x) * outward > EPS).unwrap_or(start.x + outward * 4.0 * th.pitch.max(0.5));
+        let out = Point::new(out_x, start.z);
+        self.note(Remark::new(&tools::EX_RENHE_X_FEED, args![x = self.snap(out).x]));
+        self.rapid(out);
+        self.rapid(start);
     }
 
     fn renhe_block(&mut self, end: Point, lead: f64) {

@@ -100,4 +100,7 @@ phrases! {
     EX_RENHE_SHORT:
         "a Renhe thread block must be longer than 4 mm and than its U: W{w} U{u} will alarm (E18-04)",
         "仁和的螺纹程序段必须长于 4 mm 且长于其 U：W{w} U{u} 会报警（E18-04）";
+    EX_RENHE_X_FEED:
+        "Renhe sets a thread's run-out direction from the X feed before it (E18-05 without one): the first pass, approached from an unknown place, goes out to X{x} and back in before it",
+        "仁和由螺纹之前的 X 向进刀确定退尾方向（没有则报警 E18-05）：第一刀的进刀起点未知，先退到 X{x} 再进刀";
 }
