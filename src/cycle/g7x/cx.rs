@@ -117,6 +117,24 @@ pub fn min(a: f64, b: f64) -> f64 {
     if b < a { b } else { a }
 }
 
+/// `v` as C++ streams write a double by default (`%g`, six significant
+/// digits), as rs274's messages give points.
+pub fn g(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return if v.is_nan() { "nan".into() } else { format!("{v}") };
+    }
+    let sci = format!("{v:.5e}");
+    let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let trim = |s: &str| s.trim_end_matches('0').trim_end_matches('.').to_string();
+    if !(-4..6).contains(&exp) {
+        let sign = if exp < 0 { '-' } else { '+' };
+        return format!("{}e{sign}{:02}", trim(mantissa), exp.abs());
+    }
+    let fixed = format!("{:.*}", (5 - exp) as usize, v);
+    if fixed.contains('.') { trim(&fixed) } else { fixed }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -130,5 +148,7 @@ mod tests {
         assert_eq!(-I * C::new(2.0, 5.0), C::new(5.0, -2.0), "a quarter turn clockwise");
         assert_eq!(C::new(1.0, 1.0).cross(C::new(-1.0, 1.0)), 2.0);
         assert_eq!(min(1.0, f64::NAN), 1.0);
+        let shown: Vec<String> = [-2.0, 8.5, 0.70710612, 1234567.0, 0.00001234, -0.0].into_iter().map(g).collect();
+        assert_eq!(shown, ["-2", "8.5", "0.707106", "1.23457e+06", "1.234e-05", "-0"]);
     }
 }

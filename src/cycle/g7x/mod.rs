@@ -30,6 +30,7 @@
 //! inside pockets are roughing cuts; the moves along the profile are too,
 //! unless D is 0, when they turn the part's finished outline).
 
+mod corner;
 mod cx;
 mod offset;
 pub mod read;
@@ -148,8 +149,13 @@ pub enum Fail {
     Lost,
     /// Two offset lines do not meet.
     Parallel,
-    /// A corner cannot be made between its two pieces.
-    Corner,
+    /// A corner cannot be made between its two pieces; the first's end, in the walk's frame.
+    Corner {
+        /// Its real part.
+        re: f64,
+        /// Its imaginary part.
+        im: f64,
+    },
     /// The offset by D does not come to an end.
     Offset,
     /// The profile does not cross the depth of the cut from this point:
@@ -182,7 +188,7 @@ impl Fail {
             Fail::XTooLarge => "x too large in straight dive",
             Fail::Lost => "How did we get here?",
             Fail::Parallel => "Cannot intersect parallel lines",
-            Fail::Corner => "Corner finish failed",
+            Fail::Corner { .. } => "Corner finish failed at",
             Fail::RAndIk => "both R and I or K flag used for arc",
             Fail::NoIk => "either I or K must be present for arc",
             Fail::BothCorners => "Both A and C parameters on a corner",
@@ -203,7 +209,11 @@ impl Fail {
                 return (Message::new(&msg::LCNC_G7X_I, args![word]), true);
             }
             Fail::NotMonotone => Message::new(&msg::LCNC_G7X_NOT_MONOTONIC, args![sub, name, axis, other]),
-            Fail::XTooLarge | Fail::Lost | Fail::Parallel | Fail::Corner => {
+            Fail::Corner { re, im } => {
+                let message = format!("Corner finish failed at ({},{})", cx::g(re), cx::g(im));
+                Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
+            }
+            Fail::XTooLarge | Fail::Lost | Fail::Parallel => {
                 let message = self.rs274().unwrap_or_default();
                 Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
             }
@@ -243,6 +253,11 @@ fn pieces(start: Point, steps: &[Step]) -> Vec<Seg> {
             Some(a) => Seg::arc(!a.cw, at, c(a.center), to),
             None => Seg::line(at, to),
         });
+        // A corner at the move's end: a piece of no size there until it is made.
+        out.extend(s.corner.map(|k| match k {
+            Corner::Fillet(d) => Seg { corner: Some(d), ..Seg::arc(false, to, to, to) },
+            Corner::Chamfer(d) => Seg { corner: Some(d), ..Seg::line(to, to) },
+        }));
         at = to;
     }
     out
@@ -307,7 +322,10 @@ pub fn plan(w: &Words, start: Point, steps: &[Step], line: u32, span: Span) -> R
         return fail(Fail::IZero);
     }
     let frame = orient(&mut path, w.along);
-    path.retain(|s| s.size() >= 1e-3);
+    if let Err(f) = corner::make(&mut path) {
+        return fail(f);
+    }
+    path.retain(|s| !s.tiny());
     if path.is_empty() {
         return Roughing::default();
     }

@@ -37,7 +37,7 @@ pub fn add_distance(path: &mut Vec<Seg>, distance: f64) -> Result<(), Fail> {
             step = -step;
         }
         path.iter_mut().for_each(|s| s.offset(step));
-        path.retain(|s| s.size() >= 1e-3);
+        path.retain(|s| !s.tiny());
         bridge(path, step, distance > 0.0);
         rejoin(path)?;
         done += step;
@@ -92,7 +92,7 @@ fn rejoin(path: &mut Vec<Seg>) -> Result<(), Fail> {
                 break;
             }
         }
-        if path[k].size() < 1e-3 {
+        if path[k].tiny() {
             path.remove(k);
             k = 0;
         } else {

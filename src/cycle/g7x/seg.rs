@@ -33,8 +33,10 @@ pub struct Seg {
     pub e: C,
     /// Line or arc.
     pub shape: Shape,
-    /// A corner still to be made (a fillet or chamfer of this size, `A`/`C` on a profile move); 0 once made.
-    pub corner: f64,
+    /// A corner still to be made between the pieces either side (`A`/`C` on
+    /// a profile move): of this size, a fillet when an arc, a chamfer when a
+    /// line; `None` once made, and for every other piece.
+    pub corner: Option<f64>,
 }
 
 /// Where a piece crosses a depth: at most two cut coordinates, in the piece's order.
@@ -71,12 +73,12 @@ impl Hits {
 impl Seg {
     /// A line from `s` to `e`.
     pub fn line(s: C, e: C) -> Seg {
-        Seg { s, e, shape: Shape::Line, corner: 0.0 }
+        Seg { s, e, shape: Shape::Line, corner: None }
     }
 
     /// An arc from `s` to `e` about `c`.
     pub fn arc(ccw: bool, s: C, c: C, e: C) -> Seg {
-        Seg { s, e, shape: Shape::Arc { ccw, c }, corner: 0.0 }
+        Seg { s, e, shape: Shape::Arc { ccw, c }, corner: None }
     }
 
     /// Its size: a line's length, an arc's chord or radius, the smaller.
@@ -87,13 +89,18 @@ impl Seg {
         }
     }
 
+    /// Whether rs274 drops it: smaller than 0.001 (one of no number for a size stays).
+    pub fn tiny(&self) -> bool {
+        self.size() < 1e-3
+    }
+
     /// Whether it never goes back along the cut (`re` does not grow; an arc
     /// stays on the far side of its centre).
     pub fn monotone(&self) -> bool {
         let dz = (self.e - self.s).re;
         match self.shape {
             Shape::Line => dz <= 1e-3,
-            Shape::Arc { .. } if self.corner != 0.0 => true,
+            Shape::Arc { .. } if self.corner.is_some_and(|d| d != 0.0) => true,
             Shape::Arc { ccw, c } => {
                 let (entry, exit) = ((self.s - c).im, (self.e - c).im);
                 if ccw {
