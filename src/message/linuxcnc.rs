@@ -137,6 +137,9 @@ templates! {
     LCNC_G7X_PROFILE = ProfileRefused:
         "G7X error: {message}: LinuxCNC gives up on the profile of {sub} offset by D{d}",
         "LinuxCNC 报警“G7X error: {message}”：LinuxCNC 无法处理子程序 {sub} 偏移 D{d} 后的轮廓";
+    LCNC_G7X_PARALLEL = ProfileRefused:
+        "G7X error: Cannot intersect parallel lines: two pieces of the profile of {sub} next to each other run along one line, and LinuxCNC offsets each (by D{d}, or for a corner A or C) and joins it to the next where they cross; write them as one move",
+        "LinuxCNC 报警“G7X error: Cannot intersect parallel lines”：子程序 {sub} 的轮廓中相邻两段在同一直线上，而 LinuxCNC 把每段偏移（偏移 D{d}，或为拐角 A、C 偏移）后在交点处与下一段相接；请把它们写成一段";
     LCNC_G7X_MOVE = ProfileRefused:
         "G7X error: {message} (in the profile of {sub}: an arc takes R, or I and K; a corner A or C)",
         "LinuxCNC 报警“G7X error: {message}”（子程序 {sub} 的轮廓中：圆弧用 R，或用 I 和 K；拐角用 A 或 C）";

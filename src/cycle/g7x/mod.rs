@@ -213,7 +213,8 @@ impl Fail {
                 let message = format!("Corner finish failed at ({},{})", cx::g(re), cx::g(im));
                 Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
             }
-            Fail::XTooLarge | Fail::Lost | Fail::Parallel => {
+            Fail::Parallel => Message::new(&msg::LCNC_G7X_PARALLEL, args![sub, d = w.d]),
+            Fail::XTooLarge | Fail::Lost => {
                 let message = self.rs274().unwrap_or_default();
                 Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
             }

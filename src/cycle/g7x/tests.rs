@@ -155,3 +155,23 @@ fn the_cuts_are_bounded() {
     assert_eq!(r.fail, Some(Fail::TooMany { limit: MAX_CUTS }));
     assert!(r.moves.len() <= 5 * MAX_CUTS, "{}", r.moves.len());
 }
+
+#[test]
+fn a_cut_that_never_ends_in_rs274_stops_the_plan() {
+    // rs274 (2.9.0~pre1) prints these moves, then loops for ever on the
+    // depth X10: the offset profile's first arc climbs back to it, and no
+    // piece after it crosses it (G71.1 Q X24 Z2 D1 I0.7 R0.5, G7).
+    let arc = |x: f64, z: f64, cx: f64, cz: f64| Step {
+        to: Point::new(x, z),
+        arc: Some(ArcData { center: Point::new(cx, cz), cw: true }),
+        corner: None,
+    };
+    let steps = [line(8.0, 0.0), arc(12.0, -2.0, 12.0, 0.0), line(12.0, -4.0), arc(18.0, -7.0, 18.0, -4.0)];
+    let steps = [&steps[..], &[line(20.0, -9.0), line(20.0, -13.0)]].concat();
+    let r = plan(&words(711, 1.0, 0.7, 0.5), Point::new(24.0, 2.0), &steps, 7, Span::default());
+    let Some(Fail::Endless { x, z }) = r.fail else { panic!("{:?}", r.fail) };
+    assert!((x - 10.0).abs() < 1e-6 && z.abs() < 1e-6, "X{x} Z{z}");
+    // The moves rs274 printed before it looped, the last the rapid to the offset profile's start.
+    assert_eq!(ends(&r).len(), 50);
+    assert_eq!(ends(&r).last(), Some(&(true, 5.0, 0.0)));
+}
