@@ -135,6 +135,10 @@ pub struct Grouper {
     after: After,
     /// The last rapid that moved X (the infeed of a Z thread) and that moved Z (of a face thread).
     infeed: [Infeed1; 2],
+    /// A rapid back along the axis and across at once after a pass's
+    /// retract (a cycle written block by block returns so): the motion that
+    /// begins the next pass's approach.
+    back_across: Option<usize>,
     /// The calls the block being read was reached through.
     pub via: Via,
 }
@@ -160,6 +164,7 @@ impl Grouper {
             cuts: self.cuts.iter().map(|c| c.shifted(moves, s)).collect(),
             after: self.after,
             infeed,
+            back_across: self.back_across.map(|m| m.saturating_add_signed(moves)),
             via: self.via.clone(),
         }
     }
@@ -183,6 +188,9 @@ impl Grouper {
             }
             After::Return => {
                 self.after = After::Nothing;
+                if on_long {
+                    self.back_across = mv;
+                }
                 false
             }
             _ => false,
@@ -294,10 +302,13 @@ impl Grouper {
         let short = if chain.segs[0].long == Axis::Z { 0 } else { 1 };
         let infeed = self.infeed[short];
         self.infeed = [None, None];
+        let back_across = self.back_across.take();
         if let (Some((line, mv)), true) = (infeed, blockwise) {
             chain.lines.insert(0, line);
             if let Some(i) = mv.filter(|i| *i < chain.moves.cut.start) {
-                chain.moves.approach = i..chain.moves.cut.start.min(i + 1);
+                // The return back and across just before the infeed is the approach's start, as a cycle's is.
+                let from = back_across.filter(|&k| k + 1 == i).unwrap_or(i);
+                chain.moves.approach = from..chain.moves.cut.start.min(i + 1);
             }
         }
         let max_infeed = s.get(P::GroupMaxInfeed);

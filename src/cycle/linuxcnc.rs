@@ -208,9 +208,21 @@ pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Findin
     let t = g.tan_q();
     let shifts: Vec<(f64, f64)> = depths.iter().map(|&(d, _)| (d, (k - d) * t)).collect();
     let areas = crate::chip::pass_areas(g.tool_angle, &shifts);
+    let mut geometry: Vec<PassGeometry> = Vec::with_capacity(depths.len());
+    for &(d, _) in &depths {
+        let mut p = g.pass_moves(d, at);
+        at = p.at;
+        // A return straight back along the axis is the pass's before it, as a
+        // block-by-block pass owns its return (one back and across starts the next's approach).
+        if let Some(last) = geometry.last_mut()
+            && p.approach.first().is_some_and(|m| m.1.0 == m.2.0)
+        {
+            last.back.push(p.approach.remove(0));
+        }
+        geometry.push(p);
+    }
     let mut prev = 0.0;
-    for (n, &(d, role)) in depths.iter().enumerate() {
-        let p = g.pass_moves(d, at);
+    for (n, (&(d, role), p)) in depths.iter().zip(&geometry).enumerate() {
         let conv = |v: &[Step]| v.iter().map(|m| mv(*m)).collect::<Vec<_>>();
         paths.push(PassPath::of(&conv(&p.approach), &conv(&p.cut), &conv(&p.back)));
         passes.push(Pass {
@@ -233,7 +245,6 @@ pub fn plan(g: &G76, limit: usize, warn_passes: usize) -> Result<Planned, Findin
             spindle: g.spindle,
         });
         prev = d;
-        at = p.at;
     }
     let end = (at != (g.x_end, g.z1)).then(|| mv((MoveKind::Rapid, at, (g.x_end, g.z1))));
     let notes = notes(g, &depths, warn_passes);
