@@ -298,3 +298,42 @@ fn linuxcnc_g71_roughs_its_profile_subroutine_and_d0_turns_the_part() {
     assert_eq!(plan.threads[0].crest_source, CrestSource::Outline);
     eq(plan.threads[0].crest, 16.0);
 }
+
+/// Planning again after an edit gives a full reading's plan also for a
+/// LinuxCNC G71 whose profile subroutine comes after the program's end
+/// and after the planner's checkpoint (every 256 blocks): edits of the
+/// profile, of the cycle's words and of the thread after it.
+#[test]
+fn a_linuxcnc_roughing_across_a_checkpoint_plans_again_as_in_full() {
+    let mut text = String::from("G18 G21 G90 G7\nM3 S600\n");
+    for k in 0..240 {
+        text += &format!("G0 X{} Z{}\n", 40 + k % 7, 20 + k % 5);
+    }
+    text +=
+        "G0 X40 Z2\nG71 Q300 X40 Z2 D0.3 I1 R0.5 F120\nG0 X40 Z2\nX29\nG33 Z-20 K2\nG0 X40\nM2\no300 sub\nG1 X20 Z0\n";
+    // A staircase: steps of 0.5 (diameter) and 1 along Z, no two moves along one line.
+    for k in 0..30 {
+        text += &if k % 2 == 0 {
+            format!("G1 Z-{}\n", k / 2 + 1)
+        } else {
+            format!("G1 X{}\n", 20.0 + 0.5 * f64::from(k / 2 + 1))
+        };
+    }
+    text += "G1 Z-18\nG1 X36\no300 endsub\n";
+    let s = screwcut::Settings::new(Dialect::LinuxCnc);
+    let edits = [
+        text.replace("G1 X24\n", "G1 X24.2\n"), // inside the profile, after the checkpoint
+        text.replace("D0.3 I1", "D0.2 I1"),     // the cycle's words
+        text.replace("X29\n", "X28.8\n"),       // the thread after it
+        text.replace("G1 X36\n", "G1 X35\nG1 Z-40\n"), // the profile's end
+        text.clone(),
+    ];
+    let mut planner = screwcut::planner::Planner::new(s.clone());
+    planner.plan(&text);
+    assert!(planner.last().unwrap().moves.iter().any(|m| m.kind == MoveKind::Rough));
+    for (k, t) in edits.iter().enumerate() {
+        assert_ne!(k == 4, t != &text, "edit {k}");
+        let inc = planner.plan(t).clone();
+        assert_eq!(inc, screwcut::plan(t, &s), "edit {k}");
+    }
+}
