@@ -112,6 +112,20 @@ try {
   check('the tooth section names the insert (16ER 2.0 ISO, r 0.25)', insert.placed.some((l) => l.key === 'insert_full' && l.lines.join(' ').includes('16ER 2.0 ISO r 0.25')), JSON.stringify(insert.placed.map((l) => l.lines)));
   await page.locator('#side-panel').screenshot({ path: path.join(shots, 'part-shoulder-en.png') });
   await page.locator('#tooth-panel').screenshot({ path: path.join(shots, 'part-insert-en.png') });
+
+  // ---- a two-start thread by axial offset (LinuxCNC has no start angle word) ----
+  let twoStart = 'G18 G21 G90 G7\nM3 S300\nG0 X42 Z5\n';
+  for (const x of [38.8, 38.2, 37.8]) twoStart += `G0 X${x}\nG33 Z-30 K3\nG0 X42\nZ5\nG0 X${x} Z6.5\nG33 Z-30 K3\nG0 X42\nZ5\n`;
+  twoStart += 'M2\n';
+  await page.goto('about:blank');
+  await page.goto(url + fragment({ dialect: 'linuxcnc', settings: {}, program: twoStart }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  const summary = await page.evaluate(() => ({ threads: window.__screwcut.result.threads.length, starts: window.__screwcut.result.threads[0].starts }));
+  check('passes half a lead further back are the second start: one thread of two starts', summary.threads === 1 && summary.starts === 2, JSON.stringify(summary));
+  const startLabels = await page.evaluate(() => window.__screwcut.inspect('labels', 'starts'));
+  const said = startLabels.placed.map((l) => l.lines.join(' '));
+  check('… the starts view puts the second at 180°, 1.5 along the lead', said.some((t) => t.includes('2: 180°')) && said.some((t) => t.includes('1: 0°')), JSON.stringify(said));
+  await page.locator('#starts-panel').screenshot({ path: path.join(shots, 'starts-axial-en.png') });
   check('no console or page errors', problems.length === 0, JSON.stringify(problems));
 } catch (e) {
   check('the compare test ran to the end', false, e && e.stack ? e.stack : String(e));
