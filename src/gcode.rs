@@ -110,7 +110,7 @@ pub enum G {
     Rough(crate::cycle::rough::Along),
     /// LinuxCNC's G70–G72 `Q- X- Z- …` (the code ×10: 700, 710–712,
     /// 720–722): a rapid to X/Z, then the profile of subroutine o(Q), read
-    /// by the program flow, run once as the finishing pass (G70) or roughed
+    /// by the program flow, run as the finishing passes (G70) or roughed
     /// over (G71, G72 and their .1/.2 forms).
     LinuxProfile(i64),
     /// Known to the controller but not drawn; `returns` says whether the tool ends where it started.

@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::assemble::{Assembler, Mark};
 use crate::block::Block;
-use crate::cycle::g7x::Words;
+use crate::cycle::g7x::Who;
 use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
 use crate::dialect::Dialect;
 use crate::event::Event;
@@ -237,15 +237,8 @@ impl Reading {
         self.it.m.profile_call = None;
         let moves = match &c.cycle {
             Cycle::Rough(r) => crate::cycle::rough::passes(r, c.start, &c.points, c.line, c.span),
-            Cycle::Finish => {
-                // A finishing pass ends where its profile does.
-                if let Some(&end) = c.points.last() {
-                    self.it.m.pos.p = end;
-                    self.it.m.motion = Motion::Linear;
-                }
-                crate::cycle::rough::finish(c.start, &c.points, c.line, c.span)
-            }
-            Cycle::LinuxRough { words, q } => self.linux_rough(&c, words, *q, profile_motion),
+            Cycle::LinuxRough { words, q } => self.linux_cycle(&c, Who::Rough(words), *q, profile_motion),
+            Cycle::LinuxFinish { passes, q } => self.linux_cycle(&c, Who::Finish(passes), *q, profile_motion),
         };
         self.events.push(Event::Close);
         for m in moves {
@@ -257,21 +250,26 @@ impl Reading {
         self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
     }
 
-    /// LinuxCNC's G71/G72 over the profile of o(`q`) read in `c`: its moves
+    /// LinuxCNC's G70–G72 over the profile of o(`q`) read in `c`: its moves
     /// (what stopped it said at the block). The tool ends at the last move,
     /// in its motion mode; without moves, where the profile does, in the
     /// profile's last mode (rs274 reads the profile's moves as if making them).
-    fn linux_rough(&mut self, c: &crate::exec::Capture, w: &Words, q: u32, profile_motion: Motion) -> Vec<Move> {
-        let r = match c.refused {
-            Some((f, span)) => {
-                self.diags.push_message(f.finding(w, q).0, span);
+    fn linux_cycle(&mut self, c: &crate::exec::Capture, who: Who, q: u32, profile_motion: Motion) -> Vec<Move> {
+        let r = match (c.refused, who) {
+            (Some((f, span)), _) => {
+                self.diags.push_message(f.finding(who, q).0, span);
                 crate::cycle::g7x::Roughing::default()
             }
-            None => crate::cycle::g7x::plan(w, c.start, &c.steps, c.line, c.span),
+            (None, Who::Rough(w)) => crate::cycle::g7x::plan(w, c.start, &c.steps, c.line, c.span),
+            (None, Who::Finish(p)) => crate::cycle::g7x::finish::plan(p, c.start, &c.steps, c.line, c.span),
         };
         if let Some(f) = r.fail {
-            let (finding, on_i) = f.finding(w, q);
-            self.diags.push_message(finding, if on_i { w.i_span } else { c.span });
+            let (finding, on_i) = f.finding(who, q);
+            let span = match who {
+                Who::Rough(w) if on_i => w.i_span,
+                _ => c.span,
+            };
+            self.diags.push_message(finding, span);
         }
         match r.moves.last() {
             Some(m) => {

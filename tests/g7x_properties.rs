@@ -4,8 +4,8 @@
 //! no length, turning back) roughed by any of G71, G71.1, G71.2, G72,
 //! G72.1, G72.2 with any D, I and R (none, negative, zero, tiny, huge)
 //! plans without a panic, in bounded time, keeping the invariants of
-//! `props::check`; its cuts are at most the cycle's bound (10000) and it
-//! says so when it stops there.
+//! `props::check`; its cuts are at most the cycle's bound (10000, three
+//! roughing moves each in a pocket) and it says so when it stops there.
 
 mod common;
 #[path = "common/props.rs"]
@@ -124,8 +124,9 @@ proptest! {
         prop_assert!(text.lines().nth(line as usize - 1).is_some_and(|l| l.starts_with("G7")), "line {line}");
         let cuts = plan.moves.iter().filter(|m| m.line == line && m.kind == MoveKind::Rough).count();
         let bounded = plan.with_code(Code::PassLimit).next().is_some();
-        prop_assert!(cuts <= 2 * 10_000 + 200, "{cuts} roughing moves");
-        prop_assert!(bounded || cuts < 2 * 10_000, "{cuts} roughing moves and no word of the bound");
+        // A cut is one roughing move, in a pocket three (down the wall, across, back); the profile's pieces are fewer.
+        prop_assert!(cuts <= 3 * 10_000 + 20, "{cuts} roughing moves");
+        prop_assert!(bounded || cuts <= 3 * 10_000, "{cuts} roughing moves and no word of the bound");
     }
 }
 

@@ -212,11 +212,13 @@ fn plain_theirs(calls: &[Call]) -> Vec<Plain> {
     out
 }
 
-/// The plan's rapids and plain feeds, without zero-length moves.
+/// The plan's rapids and plain feeds (roughing cuts among them; arcs
+/// not), without zero-length moves.
 fn plain_ours(plan: &Plan) -> Vec<Plain> {
     plan.moves
         .iter()
-        .filter(|m| matches!(m.kind, MoveKind::Rapid | MoveKind::Feed) && m.from.dist(m.to) > 1e-9)
+        .filter(|m| matches!(m.kind, MoveKind::Rapid | MoveKind::Feed | MoveKind::Rough) && m.arc.is_none())
+        .filter(|m| m.from.dist(m.to) > 1e-9)
         .map(|m| (m.kind == MoveKind::Rapid, m.to.x / 2.0, m.to.z))
         .collect()
 }
@@ -313,10 +315,10 @@ fn check_refused(name: &str) -> usize {
     let (message, block) = v.refused.clone().unwrap_or_else(|| panic!("{name}: rs274 accepts it"));
     let message = rs274::without_file(&message).to_string();
     // A sub sought to the end of the file: rs274 names the call's line
-    // in its message and quotes the file's last block. A G71/G72 refused
+    // in its message and quotes the file's last block. A G70–G72 refused
     // once its profile is read: rs274 quotes the profile's last block, its
     // endsub; the alarm is the cycle's.
-    let cycle = text.lines().position(|l| ["G71", "G72"].iter().any(|g| l.trim_start().starts_with(g)));
+    let cycle = text.lines().position(|l| ["G70", "G71", "G72"].iter().any(|g| l.trim_start().starts_with(g)));
     let line = line_in_message(&message).unwrap_or_else(|| {
         let i = match cycle {
             Some(k) if message.starts_with("G7X error") && block.trim().ends_with("endsub") => Some(k),
@@ -417,7 +419,8 @@ fn check_profile_cycle(name: &str) -> usize {
     let plan = linuxcnc(&text);
     let a = alarms(&plan);
     assert!(a.is_empty(), "{name}: rs274 accepts it, screwcut alarms: {a:#?}");
-    assert!(plan.moves.iter().any(|m| m.kind == MoveKind::Rough), "{name}: no roughing cut");
+    let roughs = text.lines().any(|l| ["G71", "G72"].iter().any(|g| l.contains(g)) && l.contains('Q'));
+    assert!(!roughs || plan.moves.iter().any(|m| m.kind == MoveKind::Rough), "{name}: no roughing cut");
     let (theirs, ours) = (all_theirs(&v.calls), all_ours(&plan));
     let skipped = theirs.len().saturating_sub(ours.len());
     assert!(skipped <= 1 && ours.len() <= theirs.len(), "{name}: {} moves, rs274 {}", ours.len(), theirs.len());
@@ -430,12 +433,15 @@ fn check_profile_cycle(name: &str) -> usize {
     ours.len()
 }
 
-/// LinuxCNC's G71 and G72 (and .1, .2) with their profile in a subroutine,
-/// against rs274 move for move (`cycle::g7x`): `oword-g71-*`, `oword-g72-*`.
+/// LinuxCNC's G70, G71 and G72 (and .1, .2) with their profile in a
+/// subroutine, against rs274 move for move (`cycle::g7x`): `oword-g70-*`,
+/// `oword-g71-*`, `oword-g72-*`, and `words-g70-g72` (G70 with D, E and P).
 #[test]
 fn profile_cycles_move_for_move() {
     let mut names = programs("oword-g71-");
     names.extend(programs("oword-g72-"));
+    names.extend(programs("oword-g70-"));
+    names.push("words-g70-g72".into());
     assert!(names.len() >= 7, "{names:?}");
     let compared = each(&names, check_profile_cycle);
     assert!(compared >= 400, "{compared} moves compared");

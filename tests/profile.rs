@@ -226,8 +226,9 @@ fn a_roughing_cycle_across_a_checkpoint_plans_again_as_in_full() {
 /// compared with rs274 move for move in tests/linuxcnc_owords.rs,
 /// `oword-g70-*`): the subroutine's blocks move nothing in line, the tool
 /// ends where the profile does, and a thread cut after it takes its crest
-/// from the outline, which the side section fills as the part. With D, E or
-/// P (extra distances, several passes) G70 is not drawn and says so.
+/// from the outline, which the side section fills as the part. With D and
+/// P it runs P passes, the first D from the profile, the last on it (E0):
+/// those off the profile are roughing.
 #[test]
 fn linuxcnc_g70_runs_its_profile_subroutine_as_the_part() {
     use screwcut::diagram::{Style, side};
@@ -251,11 +252,17 @@ fn linuxcnc_g70_runs_its_profile_subroutine_as_the_part() {
     assert_eq!(plan.threads[0].crest_source, screwcut::thread::CrestSource::Outline);
     eq(plan.threads[0].crest, 16.0);
     assert!(side(&plan).items.iter().any(|i| i.style == Style::Material), "the part is drawn");
-    // With P (several passes) G70 is a not-simulated note, its profile not run.
-    let passes = text.replace("G70 Q200 X12 Z2 F80", "G70 Q200 X12 Z2 F80 P2");
+    // D1 P2: passes at 0.5 (distance (2 − 1)·(1 − 0)/2) and 0; the first
+    // starts 0.5 out from X6 Z0.5 square to the chamfer's start.
+    let passes = text.replace("G70 Q200 X12 Z2 F80", "G70 Q200 X12 Z2 D1 P2 F80");
     let plan = plan_with(&passes, Dialect::LinuxCnc, &[]);
-    assert!(plan.moves.iter().all(|m| m.line != 5 || m.kind == MoveKind::Rapid));
-    assert!(plan.with_code(Code::NotSimulated).any(|d| d.line == 5));
+    no_alarm(&plan);
+    let g70: Vec<_> = plan.moves.iter().filter(|m| m.line == 5).collect();
+    let kinds: Vec<MoveKind> = g70.iter().map(|m| m.kind).collect();
+    assert!(kinds.starts_with(&[MoveKind::Rapid, MoveKind::Rough]), "{kinds:?}");
+    assert_eq!(kinds.iter().filter(|k| **k == MoveKind::Feed).count(), 3, "the last pass runs on the profile");
+    assert!(plan.with_code(Code::NotSimulated).all(|d| d.line != 5));
+    eq(plan.threads[0].crest, 16.0);
 }
 
 /// LinuxCNC's G71 `Q- X- Z- D- I- R-` roughs over the profile of

@@ -45,20 +45,6 @@ pub struct Rough {
 /// Most cuts drawn of one cycle (a tiny Δd on a large part).
 pub const MAX_CUTS: usize = 10_000;
 
-/// The finishing pass over a profile read for a cycle (LinuxCNC's G70 as
-/// rs274 runs it): a rapid from `a` to the profile's first point, then a
-/// feed along the rest; the moves are the cycle block's (`line`, `span`).
-pub fn finish(a: Point, shape: &[Point], line: u32, span: Span) -> Vec<Move> {
-    let mut out = Vec::with_capacity(shape.len());
-    let mut at = a;
-    for (i, &to) in shape.iter().enumerate() {
-        let kind = if i == 0 { MoveKind::Rapid } else { MoveKind::Feed };
-        out.push(Move { kind, from: at, to, line, span, arc: None });
-        at = to;
-    }
-    out
-}
-
 /// (cut, level) coordinates of a point: G71 cuts along Z at radius levels, G72 the other way.
 fn cl(p: Point, along: Along) -> (f64, f64) {
     match along {

@@ -15,7 +15,8 @@
 use super::{CallKind, Ctx, Exec, Flow, Macros};
 use crate::args;
 use crate::block::Block;
-use crate::cycle::g7x::{Fail, Step, Words};
+use crate::cycle::g7x::finish::Passes;
+use crate::cycle::g7x::{Fail, Job, Step, Words};
 use crate::cycle::rough::{MAX_CUTS, Rough};
 use crate::message as msg;
 use crate::motion::{Move, MoveKind, Point};
@@ -26,8 +27,13 @@ use crate::span::Span;
 pub enum Cycle {
     /// Fanuc's and GSK's G71/G72: roughing over it.
     Rough(Rough),
-    /// LinuxCNC's G70: one finishing pass over it.
-    Finish,
+    /// LinuxCNC's G70: finishing passes over the moves as read, arcs kept.
+    LinuxFinish {
+        /// D, E and P.
+        passes: Passes,
+        /// The profile's subroutine, o(q).
+        q: u32,
+    },
     /// LinuxCNC's G71/G72 (and .1/.2): roughing over the moves as read, arcs kept.
     LinuxRough {
         /// The cycle's words.
@@ -86,7 +92,7 @@ impl Exec {
     /// reads it, block by block ([`Exec::capture_block`]).
     pub fn capturing_words(&self) -> bool {
         let c = self.frames.last().and_then(|f| f.capture.as_ref());
-        c.is_some_and(|c| matches!(c.cycle, Cycle::LinuxRough { .. }))
+        c.is_some_and(|c| matches!(c.cycle, Cycle::LinuxRough { .. } | Cycle::LinuxFinish { .. }))
     }
 
     /// Adds the move of profile block `b` to a LinuxCNC profile being read,
@@ -211,9 +217,9 @@ pub fn linux_profile(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macro
         // Found after the call, as for `call`: met again in the flow it is refused.
         ex.defined.push(label.into());
     }
-    let cycle = match call.rough {
-        Some(words) => Cycle::LinuxRough { words, q: call.q },
-        None => Cycle::Finish,
+    let cycle = match call.job {
+        Job::Rough(words) => Cycle::LinuxRough { words, q: call.q },
+        Job::Finish(passes) => Cycle::LinuxFinish { passes, q: call.q },
     };
     let capture = Capture::new(cycle, ctx, block.span);
     if ex.call(ctx, CallKind::Macro, sub.next, 0, span, macros) {

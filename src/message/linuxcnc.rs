@@ -134,6 +134,9 @@ templates! {
     LCNC_G7X_NOT_MONOTONIC = ProfileRefused:
         "G7X error: Not monotonic: the profile of {sub} goes back along {axis}, and {name} needs it to run one way along {axis} from its first point to its last (pockets go in and out along {other} only)",
         "LinuxCNC 报警“G7X error: Not monotonic”：子程序 {sub} 的轮廓沿 {axis} 向回走，而 {name} 要求轮廓从第一点到最后一点沿 {axis} 单向走（凹槽只能沿 {other} 进出）";
+    LCNC_G70_NOT_MONOTONIC = ProfileRefused:
+        "G7X error: Not monotonic: the profile of {sub} goes back both along Z and along X, and G70 needs it to run one way along one of them from its first point to its last",
+        "LinuxCNC 报警“G7X error: Not monotonic”：子程序 {sub} 的轮廓沿 Z 和沿 X 都有向回走的段，而 G70 要求轮廓从第一点到最后一点至少沿其中一个方向单向走";
     LCNC_G7X_PROFILE = ProfileRefused:
         "G7X error: {message}: LinuxCNC gives up on the profile of {sub} offset by D{d}",
         "LinuxCNC 报警“G7X error: {message}”：LinuxCNC 无法处理子程序 {sub} 偏移 D{d} 后的轮廓";
@@ -143,6 +146,9 @@ templates! {
     LCNC_G7X_MOVE = ProfileRefused:
         "G7X error: {message} (in the profile of {sub}: an arc takes R, or I and K; a corner A or C)",
         "LinuxCNC 报警“G7X error: {message}”（子程序 {sub} 的轮廓中：圆弧用 R，或用 I 和 K；拐角用 A 或 C）";
+    LCNC_G7X_ARC = ArcRadiusMismatch:
+        "{message}: an arc of {name}'s path, from where the tool is, which LinuxCNC checks as a programmed arc (X as radii)",
+        "LinuxCNC 报警“{message}”：{name} 路径中的一段圆弧，从刀具所在处开始，LinuxCNC 按编程圆弧检查它（X 为半径）";
     LCNC_G7X_OFFSET = ProfileRefused:
         "{name}: offsetting the profile of {sub} by D{d} does not come to an end (LinuxCNC offsets it in steps of at most half its shortest piece): the cycle is not drawn",
         "{name}：子程序 {sub} 的轮廓偏移 D{d} 无法完成（LinuxCNC 每次最多偏移最短一段的一半）：不绘制该循环";
@@ -150,8 +156,8 @@ templates! {
         "{name}: the profile of {sub} does not cross the cut from X{x} Z{z}, and LinuxCNC 2.9 repeats that cut for ever: the moves are drawn up to there",
         "{name}：子程序 {sub} 的轮廓与从 X{x} Z{z} 开始的切削线不相交，LinuxCNC 2.9 会无限重复这一刀：只绘制到此为止的移动";
     LCNC_G7X_TOO_MANY = PassLimit:
-        "{name} needs more than {limit} cuts (I {i}): the moves are drawn up to there",
-        "{name} 需要超过 {limit} 刀（I {i}）：只绘制到此为止的移动";
+        "{name} needs more than {limit} cuts or passes (I {i}): the moves are drawn up to there",
+        "{name} 需要超过 {limit} 刀或 {limit} 次走刀（I {i}）：只绘制到此为止的移动";
 }
 
 phrases! {

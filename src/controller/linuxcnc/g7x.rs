@@ -11,7 +11,8 @@
 use super::Reader;
 use crate::args;
 use crate::block::{Block, Word};
-use crate::cycle::g7x::{Call, Words};
+use crate::cycle::g7x::finish::Passes;
+use crate::cycle::g7x::{Call, Job, Words};
 use crate::message as msg;
 
 /// A G70 (`code10` 700) or G71/G72 (710–712, 720–722) block.
@@ -59,19 +60,19 @@ pub fn block(r: &mut Reader, b: &Block, w: &Word, code10: i64) {
         return;
     }
     let q = v.round() as u32;
-    let rough = match Words::kind(code10) {
-        Some((along, pockets)) => Some(words(r, b, code10, along, pockets)),
-        None if b.has(b'D') || b.has(b'E') || b.has(b'P') => {
-            // G70 with extra distances or several passes.
-            r.noted(&msg::NOT_DRAWN, w, &msg::NS_LATHE_CYCLE);
-            return;
+    let job = match Words::kind(code10) {
+        Some((along, pockets)) => Job::Rough(words(r, b, code10, along, pockets)),
+        None => {
+            let mut value = |c: u8, default: f64| b.get(c).copied().map_or(default, |w| r.length(&w));
+            let (d, e) = (value(b'D', 0.0), value(b'E', 0.0));
+            Job::Finish(Passes { d, e, p: b.get(b'P').map_or(1.0, |w| w.value()), inch: r.m.inch })
         }
-        None => None,
     };
-    r.m.profile_call = Some(Call { q, rough });
+    r.m.profile_call = Some(Call { q, job });
 }
 
-/// The roughing's words: D (0 if not given), I (1) and R (0.5).
+/// The roughing's words: D (0 if not given), I (1) and R (0.5); G70's are
+/// D (0), E (0) and P (1).
 fn words(
     r: &mut Reader,
     b: &Block,
@@ -82,5 +83,5 @@ fn words(
     let mut value = |c: u8, default: f64| b.get(c).copied().map_or(default, |w| r.length(&w));
     let (d, i, rr) = (value(b'D', 0.0), value(b'I', 1.0), value(b'R', 0.5));
     let i_span = b.get(b'I').map_or(b.span, |w| w.span);
-    Words { code10, along, pockets, d, i, r: rr, i_span }
+    Words { code10, along, pockets, d, i, r: rr, i_span, inch: r.m.inch }
 }

@@ -120,18 +120,24 @@ pub fn min(a: f64, b: f64) -> f64 {
 /// `v` as C++ streams write a double by default (`%g`, six significant
 /// digits), as rs274's messages give points.
 pub fn g(v: f64) -> String {
+    g_prec(v, 6)
+}
+
+/// `v` as C's `%.{digits}g` writes it.
+pub fn g_prec(v: f64, digits: i32) -> String {
     if v == 0.0 || !v.is_finite() {
         return if v.is_nan() { "nan".into() } else { format!("{v}") };
     }
-    let sci = format!("{v:.5e}");
+    let digits = digits.max(1);
+    let sci = format!("{v:.*e}", (digits - 1) as usize);
     let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
     let exp: i32 = exp.parse().unwrap_or(0);
     let trim = |s: &str| s.trim_end_matches('0').trim_end_matches('.').to_string();
-    if !(-4..6).contains(&exp) {
+    if !(-4..digits).contains(&exp) {
         let sign = if exp < 0 { '-' } else { '+' };
         return format!("{}e{sign}{:02}", trim(mantissa), exp.abs());
     }
-    let fixed = format!("{:.*}", (5 - exp) as usize, v);
+    let fixed = format!("{:.*}", (digits - 1 - exp) as usize, v);
     if fixed.contains('.') { trim(&fixed) } else { fixed }
 }
 
@@ -150,5 +156,6 @@ mod tests {
         assert_eq!(min(1.0, f64::NAN), 1.0);
         let shown: Vec<String> = [-2.0, 8.5, 0.70710612, 1234567.0, 0.00001234, -0.0].into_iter().map(g).collect();
         assert_eq!(shown, ["-2", "8.5", "0.707106", "1.23457e+06", "1.234e-05", "-0"]);
+        assert_eq!(g_prec(0.44721359, 4), "0.4472");
     }
 }

@@ -1,13 +1,15 @@
 //! LinuxCNC's lathe roughing cycles `G71 Q- X- Z- D- I- R- F-` (turning,
 //! cuts along Z) and `G72 …` (facing, cuts along X), with G71.1/G72.1 (no
-//! pockets roughed) and G71.2/G72.2 (only the pockets), planned move for
-//! move as LinuxCNC 2.9's interpreter plans them. Learnt from the G-code
-//! manual's section "G70, G71, G72 Lathe finishing and roughing cycles"
-//! (Q the profile subroutine, X/Z the start point, D the distance left to
-//! the profile, I the depth of each cut, R the retract) and from the
-//! interpreter's source `src/emc/rs274ngc/interp_g7x.cc` (`convert_g7x`,
-//! `g7x::do_g71`, `add_distance`, `pocket`), compared with what `rs274`
-//! prints (`tests/linuxcnc/oword-g71-*`, `oword-g72-*`).
+//! pockets roughed) and G71.2/G72.2 (only the pockets), and the finishing
+//! cycle G70, planned move for move as LinuxCNC 2.9's interpreter plans
+//! them. Learnt from the G-code manual's sections "G70 Lathe finishing
+//! cycle" and "G71 G72 Lathe roughing cycles" (`docs/src/gcode/g-code.adoc`:
+//! Q the profile subroutine, X/Z the start point, D the distance left to
+//! the profile, I the cutting increment, R the retract; A and C corners)
+//! and from the interpreter's source `src/emc/rs274ngc/interp_g7x.cc`
+//! (`convert_g7x`, `g7x::do_g70`, `do_g71`, `add_distance`, `pocket`), at
+//! the packaged commit, compared with what `rs274` prints
+//! (`tests/linuxcnc/oword-g70-*`, `oword-g71-*`, `oword-g72-*`).
 //!
 //! The profile is the subroutine's moves from the start point (the first,
 //! the lead-in, is the move to its first point). G72 turns it a quarter
@@ -26,12 +28,19 @@
 //! finishing pass: the profile offset by D is the last pass, and the tool
 //! stays at its end (rs274 does not go back to the start).
 //!
+//! G70, the finishing cycle, runs the same profile through the same frame,
+//! corners and offset (`finish`). Each move is checked as rs274 checks it
+//! when it makes it (`emit`: an arc whose radius from where the tool is
+//! differs from its end's is refused).
+//!
 //! Pure: the profile's moves in, the moves out (the cuts and the returns
 //! inside pockets are roughing cuts; the moves along the profile are too,
 //! unless D is 0, when they turn the part's finished outline).
 
 mod corner;
 mod cx;
+mod emit;
+pub mod finish;
 mod offset;
 pub mod read;
 mod seg;
@@ -41,9 +50,10 @@ use crate::args;
 use crate::cycle::rough::Along;
 use crate::diagnostic::Finding;
 use crate::message::{self as msg, Message};
-use crate::motion::{ArcData, Move, MoveKind, Point};
+use crate::motion::{ArcData, Move, Point};
 use crate::span::Span;
 use cx::{C, I};
+use emit::Emit;
 use seg::Seg;
 use walk::{Out, Walk};
 
@@ -78,6 +88,8 @@ pub struct Words {
     pub r: f64,
     /// Where I is written (else the block).
     pub i_span: Span,
+    /// The program's lengths are inches (rs274's arc tolerances).
+    pub inch: bool,
 }
 
 impl Words {
@@ -106,14 +118,23 @@ impl Words {
     }
 }
 
-/// A LinuxCNC G70–G72 block read: the subroutine of its profile and, for
-/// G71/G72, the roughing's words.
+/// A LinuxCNC G70–G72 block read: the subroutine of its profile and what
+/// the cycle does with it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Call {
     /// The subroutine number, Q.
     pub q: u32,
-    /// The roughing; `None`: G70's finishing pass.
-    pub rough: Option<Words>,
+    /// The cycle.
+    pub job: Job,
+}
+
+/// What a LinuxCNC profile cycle does with its profile.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Job {
+    /// G70: finishing passes.
+    Finish(finish::Passes),
+    /// G71, G72: roughing.
+    Rough(Words),
 }
 
 /// A corner a profile move rounds or bevels at its end (`A`, `C`).
@@ -177,6 +198,19 @@ pub enum Fail {
     NoIk,
     /// A profile move with both A (fillet) and C (chamfer).
     BothCorners,
+    /// An arc of the path that rs274 refuses as it makes it, from where
+    /// the tool is (Z, radius): its radii there and at its end differ, or
+    /// one is nothing.
+    Arc {
+        /// No radius, rather than different radii.
+        zero: bool,
+        /// The tool's point.
+        from: (f64, f64),
+        /// The centre.
+        c: (f64, f64),
+        /// The end.
+        to: (f64, f64),
+    },
 }
 
 impl Fail {
@@ -192,39 +226,61 @@ impl Fail {
             Fail::RAndIk => "both R and I or K flag used for arc",
             Fail::NoIk => "either I or K must be present for arc",
             Fail::BothCorners => "Both A and C parameters on a corner",
-            Fail::Offset | Fail::Endless { .. } | Fail::TooMany { .. } => return None,
+            Fail::Offset | Fail::Endless { .. } | Fail::TooMany { .. } | Fail::Arc { .. } => return None,
         })
     }
 }
 
+/// The cycle a failure is about, for what is said of it.
+#[derive(Clone, Copy, Debug)]
+pub enum Who<'a> {
+    /// A G71/G72.
+    Rough(&'a Words),
+    /// A G70.
+    Finish(&'a finish::Passes),
+}
+
 impl Fail {
-    /// What to say about the failure of cycle `w` over the profile of o(`q`),
-    /// and whether it is about the I word (else the block).
-    pub fn finding(self, w: &Words, q: u32) -> (Finding, bool) {
-        let (name, sub) = (w.title(), format!("o{q}"));
-        let (axis, other) = if w.along == Along::Z { ("Z", "X") } else { ("X", "Z") };
+    /// What to say about the failure of cycle `who` over the profile of
+    /// o(`q`), and whether it is about the I word (else the block).
+    pub fn finding(self, who: Who, q: u32) -> (Finding, bool) {
+        let sub = format!("o{q}");
+        let (name, d, along, i) = match who {
+            Who::Rough(w) => (w.title(), w.d, Some(w.along), w.i),
+            Who::Finish(p) => ("G70".to_string(), p.d, None, 1.0),
+        };
         let m = match self {
             Fail::IZero => {
-                let word = format!("I{}", crate::num::fmt(w.i));
+                let word = format!("I{}", crate::num::fmt(i));
                 return (Message::new(&msg::LCNC_G7X_I, args![word]), true);
             }
-            Fail::NotMonotone => Message::new(&msg::LCNC_G7X_NOT_MONOTONIC, args![sub, name, axis, other]),
+            Fail::NotMonotone => match along {
+                Some(along) => {
+                    let (axis, other) = if along == Along::Z { ("Z", "X") } else { ("X", "Z") };
+                    Message::new(&msg::LCNC_G7X_NOT_MONOTONIC, args![sub, name, axis, other])
+                }
+                None => Message::new(&msg::LCNC_G70_NOT_MONOTONIC, args![sub]),
+            },
             Fail::Corner { re, im } => {
                 let message = format!("Corner finish failed at ({},{})", cx::g(re), cx::g(im));
-                Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
+                Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d])
             }
-            Fail::Parallel => Message::new(&msg::LCNC_G7X_PARALLEL, args![sub, d = w.d]),
+            Fail::Parallel => Message::new(&msg::LCNC_G7X_PARALLEL, args![sub, d]),
             Fail::XTooLarge | Fail::Lost => {
                 let message = self.rs274().unwrap_or_default();
-                Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d = w.d])
+                Message::new(&msg::LCNC_G7X_PROFILE, args![message, sub, d])
             }
             Fail::RAndIk | Fail::NoIk | Fail::BothCorners => {
                 let message = self.rs274().unwrap_or_default();
                 Message::new(&msg::LCNC_G7X_MOVE, args![message, sub])
             }
-            Fail::Offset => Message::new(&msg::LCNC_G7X_OFFSET, args![name, sub, d = w.d]),
+            Fail::Offset => Message::new(&msg::LCNC_G7X_OFFSET, args![name, sub, d]),
+            Fail::Arc { zero, from, c, to } => {
+                let message = emit::arc_message(zero, from, c, to);
+                Message::new(&msg::LCNC_G7X_ARC, args![message, name])
+            }
             Fail::Endless { x, z } => Message::new(&msg::LCNC_G7X_ENDLESS, args![name, sub, x, z]),
-            Fail::TooMany { limit } => Message::new(&msg::LCNC_G7X_TOO_MANY, args![name, limit, i = w.i]),
+            Fail::TooMany { limit } => Message::new(&msg::LCNC_G7X_TOO_MANY, args![name, limit, i]),
         };
         (m, false)
     }
@@ -289,16 +345,16 @@ impl Frame {
     }
 }
 
-/// Turns (G72) and mirrors the profile so that it runs down the cut from
-/// the start, deeper at its end than at its first point.
-fn orient(path: &mut [Seg], along: Along) -> Frame {
-    let mut f = Frame::default();
-    if along == Along::X {
-        path.iter_mut().for_each(|s| s.map(|p| (-p) * I, false));
-        f.0 ^= 4;
-    }
-    let (first, last) = (path[0].e, path[path.len() - 1].e);
-    let d = first - last;
+/// Turns the profile a quarter turn, into G72's frame.
+fn turn(path: &mut [Seg], f: &mut Frame) {
+    path.iter_mut().for_each(|s| s.map(|p| (-p) * I, false));
+    f.0 ^= 4;
+}
+
+/// Mirrors the profile so that its first piece's end is above its last
+/// piece's end in depth and beyond it along the cut (rs274's `swap`).
+fn mirror(path: &mut [Seg], f: &mut Frame) {
+    let d = path[0].e - path[path.len() - 1].e;
     if d.im > 0.0 {
         path.iter_mut().for_each(|s| s.map(C::conj, true));
         f.0 ^= 2;
@@ -307,7 +363,26 @@ fn orient(path: &mut [Seg], along: Along) -> Frame {
         path.iter_mut().for_each(|s| s.map(|p| -p.conj(), true));
         f.0 ^= 1;
     }
-    f
+}
+
+/// A first piece that starts behind its end along the cut starts square
+/// above it instead (the lead-in comes straight down); then every piece
+/// must run one way along the cut (rs274's `monotonic`).
+fn monotone(path: &mut [Seg]) -> Result<(), Fail> {
+    if let Some(first) = path.first_mut() {
+        if first.e.re > first.s.re {
+            first.s.re = first.e.re;
+        }
+    }
+    if path.iter().all(Seg::monotone) { Ok(()) } else { Err(Fail::NotMonotone) }
+}
+
+/// Makes the profile's corners and drops the pieces rs274 drops; `false`
+/// when nothing is left.
+fn finish_corners(path: &mut Vec<Seg>) -> Result<bool, Fail> {
+    corner::make(path)?;
+    path.retain(|s| !s.tiny());
+    Ok(!path.is_empty())
 }
 
 /// Plans cycle `w` from the start point `start` over the profile `steps`,
@@ -322,22 +397,17 @@ pub fn plan(w: &Words, start: Point, steps: &[Step], line: u32, span: Span) -> R
     if w.i.is_nan() || w.i <= 0.0 {
         return fail(Fail::IZero);
     }
-    let frame = orient(&mut path, w.along);
-    if let Err(f) = corner::make(&mut path) {
-        return fail(f);
+    let mut frame = Frame::default();
+    if w.along == Along::X {
+        turn(&mut path, &mut frame);
     }
-    path.retain(|s| !s.tiny());
-    if path.is_empty() {
-        return Roughing::default();
+    mirror(&mut path, &mut frame);
+    match finish_corners(&mut path) {
+        Ok(true) => {}
+        Ok(false) => return Roughing::default(),
+        Err(f) => return fail(f),
     }
-    // A first point beyond the start along the cut: the lead-in comes straight down.
-    if path[0].e.re > path[0].s.re {
-        path[0].s.re = path[0].e.re;
-    }
-    if !path.iter().all(Seg::monotone) {
-        return fail(Fail::NotMonotone);
-    }
-    if let Err(f) = offset::add_distance(&mut path, w.d) {
+    if let Err(f) = monotone(&mut path).and_then(|()| offset::add_distance(&mut path, w.d)) {
         return fail(f);
     }
     let (first, last) = (path[0].s, path[path.len() - 1].e);
@@ -354,38 +424,10 @@ pub fn plan(w: &Words, start: Point, steps: &[Step], line: u32, span: Span) -> R
         }
         f => f,
     });
-    let finished = w.d == 0.0;
-    Roughing { moves: moves(&walk.out, frame, start, finished, line, span), fail }
-}
-
-/// The walk's moves in the program's coordinates, from `start`; `finished`:
-/// the moves along the profile turn the part's outline. An arc to where
-/// the tool is already is no move (rs274 leaves it out).
-fn moves(out: &[Out], frame: Frame, start: Point, finished: bool, line: u32, span: Span) -> Vec<Move> {
-    let point = |q: C| frame.point(q);
-    let mut at = start;
-    let mut moves = Vec::with_capacity(out.len());
-    for o in out {
-        let (kind, to, arc) = match *o {
-            Out::Rapid(q) => (MoveKind::Rapid, point(q), None),
-            Out::Feed(q, contour) => {
-                (if contour && finished { MoveKind::Feed } else { MoveKind::Rough }, point(q), None)
-            }
-            Out::Arc { ccw, c, to } => {
-                let to = point(to);
-                if (to.z - at.z).abs() < 1e-4 && (to.x - at.x).abs() / 2.0 < 1e-4 {
-                    continue;
-                }
-                let arc = ArcData { center: point(c), cw: ccw == frame.mirrored() };
-                (if finished { MoveKind::Arc } else { MoveKind::Rough }, to, Some(arc))
-            }
-        };
-        if to.is_finite() && at.dist(to) > 1e-9 {
-            moves.push(Move { kind, from: at, to, line, span, arc });
-        }
-        at = to;
-    }
-    moves
+    let mut moves = Vec::with_capacity(walk.out.len());
+    let emit = Emit { frame, finished: w.d == 0.0, inch: w.inch, line, span };
+    let refused = emit.moves(&walk.out, &mut start.clone(), &mut moves);
+    Roughing { moves, fail: refused.or(fail) }
 }
 
 #[cfg(test)]

@@ -1,10 +1,11 @@
 //! The roughing against what rs274 (LinuxCNC 2.9) printed for small profiles.
 
 use super::*;
+use crate::motion::MoveKind;
 
 fn words(code10: i64, d: f64, i: f64, r: f64) -> Words {
     let (along, pockets) = Words::kind(code10).unwrap();
-    Words { code10, along, pockets, d, i, r, i_span: Span::default() }
+    Words { code10, along, pockets, d, i, r, i_span: Span::default(), inch: false }
 }
 
 fn line(x: f64, z: f64) -> Step {
@@ -174,4 +175,26 @@ fn a_cut_that_never_ends_in_rs274_stops_the_plan() {
     // The moves rs274 printed before it looped, the last the rapid to the offset profile's start.
     assert_eq!(ends(&r).len(), 50);
     assert_eq!(ends(&r).last(), Some(&(true, 5.0, 0.0)));
+}
+
+#[test]
+fn an_arc_rs274_would_not_make_stops_the_plan() {
+    // G72.1 Q X44 Z1 D1 I0.5 R0.5 over X40 Z-4, X38 Z-4.5, G3 X36 Z-5.5 R1,
+    // X33 Z-7, X29 Z-7 (G7): following the profile across a pocket, the
+    // tool reaches the offset arc away from its start; rs274 refuses it
+    // with this message after two moves that go somewhere.
+    let g3 = |x: f64, z: f64, cx: f64, cz: f64| Step {
+        to: Point::new(x, z),
+        arc: Some(ArcData { center: Point::new(cx, cz), cw: false }),
+        corner: None,
+    };
+    let steps = [line(40.0, -4.0), line(38.0, -4.5), g3(36.0, -5.5, 36.0, -4.5), line(33.0, -7.0), line(29.0, -7.0)];
+    let r = plan(&words(721, 1.0, 0.5, 0.5), Point::new(44.0, 1.0), &steps, 7, Span::default());
+    let Some(Fail::Arc { zero: false, from, c, to }) = r.fail else { panic!("{:?}", r.fail) };
+    assert_eq!(
+        emit::arc_message(false, from, c, to),
+        "Radius to end of arc differs from radius to start: start=(Z-4.2056,X17.3528) center=(Z-5.5000,X18.0000) \
+         end=(Z-4.7929,X17.2929) r1=1.4472 r2=1.0000 abs_err=0.4472 rel_err=30.9017%"
+    );
+    assert_eq!(ends(&r), [(false, 19.5528, -3.1056), (false, 17.3528, -4.2056)]);
 }
