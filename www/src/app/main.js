@@ -8,8 +8,8 @@ import { createEditor } from '../editor/editor.js';
 import { startEngine } from '../engine/client.js';
 import { patchList } from '../engine/parts.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
-import { diagnosticRow, passHead, passLines, passRow, passVia, patchRows, threadName, tipText, VirtualRows } from '../shared/lists.js';
-import { esc, num } from '../shared/table.js';
+import { diagnosticRows, passHead, passLines, passRow, passVia, patchRows, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
+import { esc } from '../shared/table.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { showBehind } from './behind.js';
 import { bindDesignation, DESIGNATION, renderCheck } from './check.js';
@@ -71,10 +71,16 @@ function settingsText() {
 
 let library = null;
 
+/** The language last written to the preferences (written again only when it changed). */
+let savedLang = null;
+
 /** Keeps the open program (and the language) once typing pauses. */
 function persist() {
   if (!library) return;
-  library.savePrefs({ lang: state.lang });
+  if (state.lang !== savedLang) {
+    library.savePrefs({ lang: state.lang });
+    savedLang = state.lang;
+  }
   library.saveSoon();
 }
 
@@ -205,13 +211,7 @@ function banner(text) {
 
 function renderThreads(r, stale) {
   const sel = $('thread');
-  const options = r.threads
-    .map((th, i) => {
-      const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
-      const text = `${i + 1}: ${threadName(th, t)} · ${t('lead_of', { v: num(th.lead) })} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
-      return `<option value="${i}">${esc(text)}</option>`;
-    })
-    .join('');
+  const options = threadOptions(r.threads, t, getLang());
   if (sel.dataset.html !== options) {
     sel.innerHTML = options;
     sel.dataset.html = options;
@@ -255,7 +255,7 @@ function renderDiagnostics(list) {
   const shown = list.map((d, i) => [d, i]).filter(([d]) => ui.severities.has(d.severity));
   update({ diagnosticsShown: shown });
   const MAX = 2000;
-  const rows = shown.slice(0, MAX).map(([d, i]) => diagnosticRow(d, i, t, false));
+  const rows = diagnosticRows(shown.slice(0, MAX), t, getLang());
   const more = shown.length > MAX ? `<li class="more">${esc(t('more', { n: shown.length - MAX }))}</li>` : '';
   patchRows($('diagnostics'), rows, more);
   const counts = { error: 0, warning: 0, info: 0 };

@@ -132,9 +132,11 @@ export class Engine {
     const t1 = performance.now();
     this.apply(r);
     if (input !== undefined && input !== null) this.pendingFrame = { seq, input };
-    this.postResult(r, seq, { plan: t1 - t0, views: performance.now() - t1 });
+    const t2 = performance.now();
+    // In a worker the drawings go on screen first: the page's lists follow them.
     if (this.immediate) for (const v of Object.values(this.views)) v.flush();
     this.maybeFrameNow();
+    this.postResult(r, seq, { plan: t1 - t0, views: t2 - t1, draw: performance.now() - t2 });
   }
 
   /** Shows answer `r` in the views: what the session shows (the last good drawing, greyed, while the text has an alarm). */

@@ -127,6 +127,46 @@ export function diagnosticRow(d, i, t, hot) {
   return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}${d.via ? `<span class="via">${esc(t('called_from', { lines: d.via.join(' ← ') }))}</span>` : ''}${d.switch_to ? ` <button type="button" class="switch" data-dialect="${esc(d.switch_to)}" data-title="${esc(d.switch_title)}">${esc(t('switch_to', { title: d.switch_title }))}</button>` : ''}</span></li>`;
 }
 
+/** The diagnostics' rows last written, by what they show (`diagnosticRows`). */
+let rowsByContent = new Map();
+
+/**
+ * The rows of `shown` (`[diagnostic, index]`) in language `t` (`lang`): a row
+ * written last time for the same diagnostic at the same place is written
+ * again as it was, so an edit that changes one diagnostic builds one row.
+ */
+export function diagnosticRows(shown, t, lang) {
+  const before = rowsByContent;
+  rowsByContent = new Map();
+  return shown.map(([d, i]) => {
+    const key = `${i}|${lang}|${d.severity}|${d.line}:${d.column}|${d.code}|${d.message}|${d.via || ''}|${d.switch_to || ''}|${d.switch_title || ''}`;
+    const html = before.get(key) ?? diagnosticRow(d, i, t, false);
+    rowsByContent.set(key, html);
+    return html;
+  });
+}
+
+/** Each thread summary's option as last written, by entry, with its place and language (`threadOptions`). */
+const optionOf = new WeakMap();
+
+/**
+ * The thread list's options in language `t` (`lang`): a summary the engine
+ * did not send again keeps its identity, and so its option.
+ */
+export function threadOptions(threads, t, lang) {
+  return threads
+    .map((th, i) => {
+      const kept = optionOf.get(th);
+      if (kept && kept.i === i && kept.lang === lang) return kept.html;
+      const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
+      const text = `${i + 1}: ${threadName(th, t)} · ${t('lead_of', { v: num(th.lead) })} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
+      const html = `<option value="${i}">${esc(text)}</option>`;
+      optionOf.set(th, { i, lang, html });
+      return html;
+    })
+    .join('');
+}
+
 /** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, evenArea, time, role, lines, shift, angle}`). */
 export function passObjects(c) {
   if (!c) return [];
