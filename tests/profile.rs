@@ -263,6 +263,12 @@ fn linuxcnc_g70_runs_its_profile_subroutine_as_the_part() {
     assert_eq!(kinds.iter().filter(|k| **k == MoveKind::Feed).count(), 3, "the last pass runs on the profile");
     assert!(plan.with_code(Code::NotSimulated).all(|d| d.line != 5));
     eq(plan.threads[0].crest, 16.0);
+    // Under cutter compensation rs274 runs G70 (not G71/G72); the path is the tip's, said where G42.1 is.
+    let comp = text.replace("G70 Q200 X12 Z2 F80", "G42.1 D0.4\nG0 X20 Z5\nG70 Q200 X12 Z2 F80");
+    let plan = plan_with(&comp, Dialect::LinuxCnc, &[]);
+    no_alarm(&plan);
+    assert_eq!(plan.moves.iter().filter(|m| m.line == 7 && m.kind == MoveKind::Feed).count(), 3);
+    assert!(plan.with_code(Code::NotSimulated).any(|d| d.line == 5 && d.message.contains("compensation")));
 }
 
 /// LinuxCNC's G71 `Q- X- Z- D- I- R-` roughs over the profile of

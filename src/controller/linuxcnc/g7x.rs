@@ -1,12 +1,13 @@
-//! LinuxCNC's lathe profile cycles, the block itself: G70 `Q- X- Z- F-`
-//! (finishing) and G71/G72 `Q- X- Z- D- I- R- F-` (roughing, and their
-//! .1/.2 forms), with the profile in subroutine o(Q) (the G-code manual's
-//! "G70, G71, G72 Lathe finishing and roughing cycles"; the interpreter's
-//! `convert_g7x` in `interp_g7x.cc`). rs274 checks Q, cutter compensation
-//! and the plane, in that order, before anything moves; then rapids to X
-//! and Z, and reads the profile, which the program flow does here
-//! (`exec::profile`): the roughing itself is `cycle::g7x`. D, I and R are
-//! lengths as written (not halved under G7).
+//! LinuxCNC's lathe profile cycles, the block itself: G70 `Q- X- Z- D- E-
+//! P- F-` (finishing) and G71/G72 `Q- X- Z- D- I- R- F-` (roughing, and
+//! their .1/.2 forms), with the profile in subroutine o(Q) (the G-code
+//! manual's "G70 Lathe finishing cycle" and "G71 G72 Lathe roughing
+//! cycles"; the interpreter's `convert_g7x` in `interp_g7x.cc`). rs274
+//! checks Q, cutter compensation (G71/G72 only) and the plane, in that
+//! order, before anything moves; then rapids to X and Z, and reads the
+//! profile, which the program flow does here (`exec::profile`); the cycles
+//! themselves are `cycle::g7x`. D, E, I and R are lengths as written (not
+//! halved under G7).
 
 use super::Reader;
 use crate::args;
@@ -23,7 +24,8 @@ pub fn block(r: &mut Reader, b: &Block, w: &Word, code10: i64) {
         r.diag(&msg::LCNC_G7X_NO_Q, w.span, args![word = w]);
         return;
     };
-    if r.m.comp.is_some() {
+    // G70 runs under compensation (its path is then not drawn compensated, as said where G41/G42 is).
+    if r.m.comp.is_some() && code10 != 700 {
         r.diag(&msg::LCNC_G7X_COMP, w.span, args![name]);
         return;
     }
