@@ -156,8 +156,11 @@ templates! {
         "{name}: the profile of {sub} does not cross the cut from X{x} Z{z}, and LinuxCNC 2.9 repeats that cut for ever: the moves are drawn up to there",
         "{name}：子程序 {sub} 的轮廓与从 X{x} Z{z} 开始的切削线不相交，LinuxCNC 2.9 会无限重复这一刀：只绘制到此为止的移动";
     LCNC_G7X_TOO_MANY = PassLimit:
-        "{name} needs more than {limit} cuts or passes (I {i}): the moves are drawn up to there",
-        "{name} 需要超过 {limit} 刀或 {limit} 次走刀（I {i}）：只绘制到此为止的移动";
+        "{name} needs more than {limit} cuts (I {i}): the moves are drawn up to there",
+        "{name} 需要超过 {limit} 刀（I {i}）：只绘制到此为止的移动";
+    LCNC_G70_TOO_MANY = PassLimit:
+        "G70 runs more than {limit} passes, or moves (P {p}): the moves are drawn up to there",
+        "G70 的走刀超过 {limit} 次或移动过多（P {p}）：只绘制到此为止的移动";
 }
 
 phrases! {

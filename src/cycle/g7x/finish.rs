@@ -54,10 +54,11 @@ pub fn plan(w: &Passes, start: Point, steps: &[Step], line: u32, span: Span) -> 
         return fail(f);
     }
     // C++ turns P into a whole number of passes by dropping its fraction.
-    let count = if w.p.is_finite() { w.p.trunc().clamp(0.0, (MAX_PASSES + 1) as f64) as i64 } else { 0 };
+    let count = if w.p.is_finite() { w.p.trunc().clamp(0.0, 1e15) as i64 } else { 0 };
     let mut moves = Vec::new();
     let mut at = start;
-    for pass in (1..=count.min(MAX_PASSES)).rev() {
+    // The passes rs274 runs first, at most MAX_PASSES of them.
+    for pass in ((count - MAX_PASSES).max(0) + 1..=count).rev() {
         let distance = (pass - 1) as f64 * (w.d - w.e) / w.p + w.e;
         let mut offset = path.clone();
         if let Err(f) = offset::add_distance(&mut offset, distance) {

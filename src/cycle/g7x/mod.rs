@@ -280,7 +280,10 @@ impl Fail {
                 Message::new(&msg::LCNC_G7X_ARC, args![message, name])
             }
             Fail::Endless { x, z } => Message::new(&msg::LCNC_G7X_ENDLESS, args![name, sub, x, z]),
-            Fail::TooMany { limit } => Message::new(&msg::LCNC_G7X_TOO_MANY, args![name, limit, i]),
+            Fail::TooMany { limit } => match who {
+                Who::Rough(_) => Message::new(&msg::LCNC_G7X_TOO_MANY, args![name, limit, i]),
+                Who::Finish(w) => Message::new(&msg::LCNC_G70_TOO_MANY, args![limit, p = w.p]),
+            },
         };
         (m, false)
     }

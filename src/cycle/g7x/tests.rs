@@ -198,3 +198,21 @@ fn an_arc_rs274_would_not_make_stops_the_plan() {
     );
     assert_eq!(ends(&r), [(false, 19.5528, -3.1056), (false, 17.3528, -4.2056)]);
 }
+
+#[test]
+fn g70_runs_p_passes_from_d_to_e() {
+    // rs274: G70 Q X28 Z2 D1 E0.2 P2.5 runs two passes, at (2 − 1)·0.8/2.5 + 0.2 = 0.52 and at 0.2.
+    let w = finish::Passes { d: 1.0, e: 0.2, p: 2.5, inch: false };
+    let r = finish::plan(&w, Point::new(28.0, 2.0), &pin(), 7, Span::default());
+    assert_eq!(r.fail, None);
+    let starts: Vec<_> = ends(&r).into_iter().filter(|m| m.0).collect();
+    // Each pass: a rapid to the start (the first is there already), a rapid to the offset chamfer's start.
+    let first = |d: f64| (true, 6.0 + d * std::f64::consts::FRAC_1_SQRT_2, d * std::f64::consts::FRAC_1_SQRT_2);
+    let q = |(k, x, z): (bool, f64, f64)| (k, (x * 1e4).round() / 1e4, (z * 1e4).round() / 1e4);
+    assert_eq!(starts, [q(first(0.52)), (true, 14.0, 2.0), q(first(0.2))]);
+    // Thousands of passes: the first thousand rs274 runs, the farthest from the profile, and an alarm.
+    let many = finish::Passes { d: 1.0, e: 0.0, p: 5000.0, inch: false };
+    let r = finish::plan(&many, Point::new(28.0, 2.0), &pin(), 7, Span::default());
+    assert_eq!(r.fail, Some(Fail::TooMany { limit: 1000 }));
+    assert_eq!(r.moves.iter().filter(|m| m.kind == MoveKind::Feed).count(), 0, "none on the profile itself");
+}
