@@ -54,8 +54,27 @@ fn main() {
     let out_dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/bench");
     let _ = std::fs::create_dir_all(&out_dir);
     // The loop program alone: `--loops`.
+    if args.iter().any(|a| a == "--typed") {
+        typed();
+        return;
+    }
+    // Profiling mode: the 50,000-line program's first-pass digit typed and deleted N times (incremental re-plans only).
+    if let Some(i) = args.iter().position(|a| a == "--typed-profile") {
+        let n: usize = args[i + 1].parse().expect("count");
+        let text = plain(50_000);
+        let at = text.match_indices('\n').nth(8).map_or(0, |(i, _)| i);
+        let edited = format!("{}1{}", &text[..at], &text[at..]);
+        let mut p = Planner::new(Settings::new(Dialect::Gsk980tdc));
+        p.plan(&text);
+        for k in 0..n {
+            p.plan(if k % 2 == 0 { &edited } else { &text });
+        }
+        println!("{}", p.last().map_or(0, |l| l.moves.len()));
+        return;
+    }
     if args.iter().any(|a| a == "--loops") {
         loops(&out_dir);
+        typed();
         return;
     }
     // One thread of many passes through the editor's planner alone: `--one-thread`.
@@ -110,6 +129,7 @@ fn main() {
         }
     }
     loops(&out_dir);
+    typed();
     one_thread();
 }
 
@@ -123,6 +143,60 @@ fn best_ms<R>(runs: usize, mut f: impl FnMut() -> (f64, R)) -> (f64, R) {
         last = Some(r);
     }
     (best, last.expect("at least one run"))
+}
+
+/// The browser bench's plain program (`bench/browser.mjs`, `program`): a
+/// turning section, then five G32 passes, repeated, `lines` long.
+fn plain(lines: usize) -> String {
+    let mut out = vec!["O2000".to_string(), "G50 X100 Z100".into(), "S300 M03 T0101".into()];
+    let mut n = 0;
+    while out.len() < lines - 1 {
+        let d = 30 + n % 20;
+        out.extend([format!("G00 X{} Z70", d + 10), format!("G01 X{d} F0.2"), "Z20".into(), format!("X{}", d + 5)]);
+        out.push("G00 Z70".into());
+        for x in [0.9, 1.5, 2.1, 2.5, 2.6] {
+            out.extend([
+                format!("X{:.1}", d as f64 - x),
+                "G32 Z13 F2".into(),
+                format!("G00 X{}", d + 10),
+                "Z70".into(),
+            ]);
+        }
+        n += 1;
+    }
+    out.push("M30".into());
+    out.truncate(lines);
+    out.join("\n") + "\n"
+}
+
+/// The keystroke the browser bench types (a digit at the end of line 9, the
+/// first pass) into its 5,000- and 50,000-line programs, re-planned natively
+/// by the incremental planner.
+fn typed() {
+    let settings = Settings::new(Dialect::Gsk980tdc);
+    for lines in [5_000, 50_000] {
+        let text = plain(lines);
+        let at = text.match_indices('\n').nth(8).map_or(0, |(i, _)| i);
+        let edited = format!("{}1{}", &text[..at], &text[at..]);
+        let (full, _) = best_ms(5, || {
+            let t = Instant::now();
+            let plan = screwcut::plan(&edited, &settings);
+            (t.elapsed().as_secs_f64() * 1e3, plan.moves.len())
+        });
+        let (ms, (resumed, stopped)) = best_ms(10, || {
+            let mut p = Planner::new(settings.clone());
+            p.plan(&text);
+            let t = Instant::now();
+            p.plan(&edited);
+            (t.elapsed().as_secs_f64() * 1e3, (p.resumed_at(), p.stopped_at()))
+        });
+        let stop = stopped.map_or("read to the end".to_string(), |l| format!("stopped at line {l}"));
+        println!(
+            "  a digit typed in the first pass of the plain {lines}-line program: incremental re-plan best of 10 {ms:.2} ms \
+             (resumed at line {resumed}, {stop}); a full plan {full:.2} ms"
+        );
+        println!("FIG typed{}k_ms {ms:.3}", lines / 1000);
+    }
 }
 
 /// The 5,000-line Fanuc 0i program with subprograms, `M98 P… L3`, `G65`

@@ -167,6 +167,14 @@ const FIGURES: &[Figure] = &[
         unit: "ms",
     },
     Figure {
+        key: "native_typed5k_ms",
+        what: "native planner, a digit typed in the first pass, 5,000 lines: re-plan",
+        before: "—",
+        target: "—",
+        unit: "ms",
+    },
+    Figure { key: "native_typed50k_ms", what: "… 50,000 lines: re-plan", before: "—", target: "—", unit: "ms" },
+    Figure {
         key: "native_loops5k_edit_sub_ms",
         what: "the same, re-plan after a digit typed in a subprogram",
         before: "—",
