@@ -108,6 +108,10 @@ pub enum G {
     /// block sets the depth of cut and the escape, its second (with P and Q)
     /// roughs over the contour N(P) … N(Q).
     Rough(crate::cycle::rough::Along),
+    /// The pattern repeating cycle G73: its first block sets the relief
+    /// U(Δi) W(Δk) and the number of divisions R(d), its second (with P and
+    /// Q) cuts the contour N(P) … N(Q) d times.
+    Pattern,
     /// LinuxCNC's G70–G72 `Q- X- Z- …` (the code ×10: 700, 710–712,
     /// 720–722): a rapid to X/Z, then the profile of subroutine o(Q), read
     /// by the program flow, run as the finishing passes (G70) or roughed

@@ -316,7 +316,8 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
             let t = r.target(b);
             r.rapid(&t, b.line, b.span);
         }
-        G::Rough(along) => rough(r, b, w, along),
+        G::Rough(along) => controller::stock::rough(r, b, w, along),
+        G::Pattern => controller::stock::pattern(r, b, w),
         G::NotSimulated { what, returns } => {
             r.noted(&msg::NOT_DRAWN, w, what);
             if !returns {
@@ -327,39 +328,6 @@ fn one_shot_block(r: &mut Reader, ctl: &Controller, b: &Block, g: G, w: &Word) {
         }
         _ => (ctl.command)(r, b, Command::OneShot(g, w)),
     }
-}
-
-/// G71/G72 (Fanuc Series 21i-TB operator's manual B-63604EN §13.2.1–2;
-/// GSK980TDc user manual §3.20): the first block `G71 U(Δd) R(e)` (`G72
-/// W(Δd) R(e)`) sets the depth of cut and the escape; the second, with P
-/// and Q, takes the finishing allowances U(Δu) W(Δw) and F, and leaves the
-/// cycle for the program flow, which roughs over the contour. Without a
-/// first block the roughing is not drawn (said once).
-fn rough(r: &mut Reader, b: &Block, w: &Word, along: crate::cycle::rough::Along) {
-    use crate::cycle::rough::{Along, Rough};
-    let k = usize::from(along == Along::X);
-    r.m.rough_call = None;
-    if !(b.has(b'P') && b.has(b'Q')) {
-        let depth = b.get(if along == Along::Z { b'U' } else { b'W' }).copied();
-        let escape = b.get(b'R').copied();
-        if let (Some(d), Some(e)) = (depth, escape) {
-            let (d, e) = (r.length(&d), r.length(&e));
-            r.m.rough_regs[k] = Some((d.abs(), e.abs()));
-        }
-        return;
-    }
-    let what = if along == Along::Z { &msg::NS_G71 } else { &msg::NS_G72 };
-    let Some((depth, escape)) = r.m.rough_regs[k] else {
-        r.noted(&msg::NOT_DRAWN, w, what);
-        return;
-    };
-    let word = |r: &mut Reader, c: u8| b.get(c).copied().map_or(0.0, |v| r.length(&v));
-    let (du, dw) = (word(r, b'U'), word(r, b'W'));
-    if let Some(f) = b.get(b'F') {
-        r.m.feed = Some(f.value());
-        r.m.feed_line = b.line;
-    }
-    r.m.rough_call = Some(Rough { along, depth, escape, du, dw });
 }
 
 /// G50 X Z: the current position gets these coordinates; U/W shift them. G50 S clamps the spindle.

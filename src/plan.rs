@@ -234,9 +234,11 @@ impl Reading {
         let profile_motion = self.it.m.motion;
         self.it.m = (*c.modal).clone();
         self.it.m.rough_call = None;
+        self.it.m.pattern_call = None;
         self.it.m.profile_call = None;
         let moves = match &c.cycle {
             Cycle::Rough(r) => crate::cycle::rough::passes(r, c.start, &c.points, c.line, c.span),
+            Cycle::Pattern(p) => self.pattern(p, &c),
             Cycle::LinuxRough { words, q } => self.linux_cycle(&c, Who::Rough(words), *q, profile_motion),
             Cycle::LinuxFinish { passes, q } => self.linux_cycle(&c, Who::Finish(passes), *q, profile_motion),
         };
@@ -248,6 +250,16 @@ impl Reading {
             });
         }
         self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
+    }
+
+    /// G73's passes over the contour read in `c`; too many motions are an alarm at the cycle block.
+    fn pattern(&mut self, p: &crate::cycle::pattern::Pattern, c: &crate::exec::Capture) -> Vec<Move> {
+        use crate::cycle::pattern::{MAX_MOVES, passes};
+        passes(p, c.start, &c.points, c.line, c.span).unwrap_or_else(|moves| {
+            let args = crate::args![d = p.d, points = c.points.len(), moves, limit = MAX_MOVES];
+            self.diags.push(&crate::message::G73_TOO_MANY_MOVES, c.span, args);
+            Vec::new()
+        })
     }
 
     /// LinuxCNC's G70–G72 over the profile of o(`q`) read in `c`: its moves

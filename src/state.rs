@@ -246,9 +246,25 @@ pub struct Modal {
     pub rough_regs: [Option<(f64, f64)>; 2],
     /// A G71/G72 with P and Q just read: its cycle, for the program flow to rough over the contour.
     pub rough_call: Option<crate::cycle::rough::Rough>,
+    /// G73's relief and divisions as its first blocks set them.
+    pub pattern_regs: PatternRegs,
+    /// A G73 with P and Q just read: its cycle, for the program flow to cut the contour d times.
+    pub pattern_call: Option<crate::cycle::pattern::Pattern>,
     /// A LinuxCNC G70–G72 just read: the subroutine of its profile (`Q`) and
     /// the cycle, for the program flow to read the profile.
     pub profile_call: Option<crate::cycle::g7x::Call>,
+}
+
+/// What the first blocks `G73 U(Δi) W(Δk) R(d)` set, in program units
+/// (each word kept until another first block gives it again).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PatternRegs {
+    /// Relief across Δi (a radius); 0 until given.
+    pub di: f64,
+    /// Relief along Z Δk; 0 until given.
+    pub dk: f64,
+    /// The number of divisions d: `None` until given, `Some(0)` after a refused R.
+    pub d: Option<u32>,
 }
 
 impl Default for Modal {
@@ -288,6 +304,8 @@ impl Default for Modal {
             noted: Vec::new(),
             rough_regs: [None, None],
             rough_call: None,
+            pattern_regs: PatternRegs::default(),
+            pattern_call: None,
             profile_call: None,
         }
     }

@@ -29,7 +29,7 @@ const CASES: &[Case] = &[
     (Code::MalformedProgramNumber, G, &[], "O12.5\n", 1, 1, "'O12.5'"),
     (Code::ProgramTooLarge, G, &["limits.program_bytes=10"], "G00 X10 Z20\n", 1, 1, "12 bytes"),
     (Code::UnsupportedGCode, G, &[], "G07 X10\n", 1, 1, "G7"),
-    (Code::NotSimulated, G, &[], "G73 U2 W0 R1\n", 1, 1, "G73"),
+    (Code::NotSimulated, G, &[], "G74 R1.\n", 1, 1, "G74"),
     (Code::ConflictingGCodes, G, &[], "G00 G01 X10\n", 1, 5, "G0 and G1"),
     (Code::AxisConflict, G, &[], "G00 X10 U5\n", 1, 5, "X10 and U5"),
     (Code::NoDecimalPoint, F, &[], "G00 X75\n", 1, 5, "0.075 mm"),

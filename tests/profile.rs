@@ -6,8 +6,9 @@
 //! G70–G76: "the move commands of the finishing shape are specified in the
 //! blocks from sequence number ns to nf"; GSK980TDc user manual §3.20 has
 //! the same two-block forms). G71 and G72 rough over the contour
-//! (`cycle::rough`, Series 21i-TB manual B-63604EN §13.2.1–2); G73's
-//! pattern repeating is not planned: a not-simulated note says so.
+//! (`cycle::rough`, Series 21i-TB manual B-63604EN §13.2.1–2); G73 cuts it
+//! d times, shifted (`cycle::pattern`, the pattern repeating cycle as the
+//! YASNAC LX3 manual §2.8.2.5.4 draws it, A → A′ → B).
 
 mod common;
 use common::*;
@@ -78,8 +79,8 @@ fn g71_roughs_over_its_contour_and_g70_runs_it() {
     }
 }
 
-/// Roughing alone (no G70): the contour is read, not run: no moves on its lines.
-/// G73 (pattern repeating) is read, not roughed.
+/// Roughing alone (no G70): the contour is read, not run: no moves on its
+/// lines (G72 and G73 alike: their passes are the cycle block's).
 #[test]
 fn without_g70_the_contour_is_not_run() {
     let plan = plan_with(
@@ -349,4 +350,145 @@ fn a_linuxcnc_roughing_across_a_checkpoint_plans_again_as_in_full() {
         let inc = planner.plan(t).clone();
         assert_eq!(inc, screwcut::plan(t, &s), "edit {k}");
     }
+}
+
+/// The motions of the block on `line`: (kind, X, Z) of each end, rounded to 1e-6.
+fn ends_of(plan: &Plan, line: u32) -> Vec<(MoveKind, f64, f64)> {
+    let r = |v: f64| (v * 1e6).round() / 1e6;
+    plan.moves.iter().filter(|m| m.line == line).map(|m| (m.kind, r(m.to.x), r(m.to.z))).collect()
+}
+
+/// Fanuc 0i, G73 (pattern repeating; YASNAC LX3 manual §2.8.2.5.4, the
+/// tool path A → A′ → B, whose words are Fanuc's U, W, R; Fanuc concise
+/// guide "G73 profile repetition": the profile repeated R times, moved
+/// each time, U the radial stock to remove): Δi 3 (radius), Δk 0, d 3,
+/// Δu 0.4, Δw 0.1 shift the three passes by 3·2/2 + 0.2 = 3.2, 3·1/2 + 0.2
+/// = 1.7 and 0.2 across (diameters 6.4, 3.4, 0.4) and 0.1 along Z. Each
+/// is a rapid from A (X60 Z5) to the shifted A′, the shifted contour fed,
+/// a rapid back to A. G70 then turns the contour itself, the outline under
+/// the G76 after it: its crest is its own (27.4 + 2 × 1.3 = 30) and the
+/// turned major X30 is measured, no crest assumed.
+#[test]
+fn fanuc_g73_cuts_the_contour_d_times_towards_it() {
+    let text = "O0073\nG21 G97 S800 M03 T0101\nG00 X60. Z5.\nG73 U3. W0. R3\nG73 P10 Q20 U0.4 W0.1 F0.2\n\
+                N10 G00 X26. Z2.\nG01 X30. Z-2. F0.1\nZ-30.\nX40. Z-40.\nN20 X52.\nG70 P10 Q20\nG00 X100. Z100.\n\
+                T0303 S500\nG00 X34. Z5.\nG76 P020060 Q100 R0.1\nG76 X27.4 Z-26. P1300 Q400 F2.\nG00 X100. Z100.\nM30\n";
+    let plan = plan_with(text, Dialect::Fanuc0i, &[]);
+    no_alarm(&plan);
+    let (rapid, rough) = (MoveKind::Rapid, MoveKind::Rough);
+    let pass = |dx: f64| {
+        let r = |v: f64| (v * 1e6).round() / 1e6;
+        vec![
+            (rapid, r(26.0 + dx), 2.1),
+            (rough, r(30.0 + dx), -1.9),
+            (rough, r(30.0 + dx), -29.9),
+            (rough, r(40.0 + dx), -39.9),
+            (rough, r(52.0 + dx), -39.9),
+            (rapid, 60.0, 5.0),
+        ]
+    };
+    let expected: Vec<_> = [6.4, 3.4, 0.4].into_iter().flat_map(pass).collect();
+    assert_eq!(ends_of(&plan, 5), expected);
+    // The first pass starts at X32.4 Z2.1 (radius 16.2 = 13 + 3.2), the last at X26.4 (13 + 0.2).
+    assert!(plan.with_code(Code::NotSimulated).all(|d| d.line != 4 && d.line != 5), "{:?}", plan.diagnostics);
+    // G70 runs the contour on its own lines; the thread measures the diameter it turned.
+    assert_eq!(plan.moves.iter().filter(|m| (6..=10).contains(&m.line)).count(), 5);
+    let t = &plan.threads[0];
+    eq(t.crest, 30.0);
+    eq(t.turned.expect("the outline under the thread"), 30.0);
+    assert!(plan.with_code(Code::CrestAssumed).next().is_none());
+}
+
+/// GSK980TDc reads the same two blocks (its R is the number of passes
+/// too): Δi 4, Δk 1, d 2, Δu 0.5, Δw 0.2 put the first pass 4 + 0.25 =
+/// 4.25 across (diameter 8.5) and 1.2 along Z off the contour, the second
+/// at the allowance (0.25, 0.2). With R1 the one pass is at the allowance.
+/// The G32 passes after G70 take their crest from the outline, X30.
+#[test]
+fn gsk_g73_and_one_division() {
+    let text = |r: &str| {
+        format!(
+            "O0074\nG50 X100. Z100.\nT0101 S800 M03\nG00 X66. Z3.\nG73 U4. W1. R{r}\nG73 P10 Q20 U0.5 W0.2 F0.25\n\
+             N10 G00 X24. Z1.\nG01 X30. Z-2. F0.1\nZ-28.\nX44. Z-40.\nN20 X54.\nG70 P10 Q20\nG00 X100. Z100.\n\
+             T0303 S500\nG00 X32. Z5.\nX29.1\nG32 Z-26. F2.\nG00 X32.\nZ5.\nX27.4\nG32 Z-26. F2.\nG00 X32.\nZ5.\nM30\n"
+        )
+    };
+    let plan = plan_with(&text("2"), Dialect::Gsk980tdc, &[]);
+    no_alarm(&plan);
+    let (rapid, rough) = (MoveKind::Rapid, MoveKind::Rough);
+    assert_eq!(
+        ends_of(&plan, 6),
+        [
+            (rapid, 32.5, 2.2),
+            (rough, 38.5, -0.8),
+            (rough, 38.5, -26.8),
+            (rough, 52.5, -38.8),
+            (rough, 62.5, -38.8),
+            (rapid, 66.0, 3.0),
+            (rapid, 24.5, 1.2),
+            (rough, 30.5, -1.8),
+            (rough, 30.5, -27.8),
+            (rough, 44.5, -39.8),
+            (rough, 54.5, -39.8),
+            (rapid, 66.0, 3.0),
+        ]
+    );
+    assert_eq!(plan.threads[0].crest_source, screwcut::thread::CrestSource::Outline);
+    eq(plan.threads[0].crest, 30.0);
+    assert!(plan.with_code(Code::CrestAssumed).next().is_none());
+    // d = 1: one pass, at the allowance.
+    let one = plan_with(&text("1"), Dialect::Gsk980tdc, &[]);
+    no_alarm(&one);
+    assert_eq!(ends_of(&one, 6), ends_of(&plan, 6)[6..].to_vec());
+}
+
+/// G73's bad words are alarms at the word, and nothing is cut: R0 and a
+/// fractional R (d is a whole number of passes, 1 or more), R over
+/// `limits.passes_per_start`, a relief U/W with no R before any R. Without
+/// any first block the passes are not drawn, said once. A G71 depth of 0 is
+/// an alarm too (Fanuc's PS0062). A long contour cut many times stops at
+/// the motion bound with an alarm at the cycle block.
+#[test]
+fn g73_bad_words_are_alarms() {
+    let text = |first: &str| {
+        format!(
+            "O0075\nG21 T0101 S800 M03\nG00 X60. Z5.\n{first}G73 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X26. Z2.\nG01 Z-30. F0.1\nN20 X52.\nM30\n"
+        )
+    };
+    let cut = |plan: &Plan| plan.moves.iter().filter(|m| m.kind == MoveKind::Rough).count();
+    for dialect in [Dialect::Fanuc0i, Dialect::Gsk980tdc] {
+        let good = plan_with(&text("G73 U3. W0. R3\n"), dialect, &[]);
+        no_alarm(&good);
+        assert_eq!(cut(&good), 6);
+        for (first, code, col, what) in [
+            ("G73 U3. W0. R0\n", Code::ValueOutOfRange, 13, "1 or more"),
+            ("G73 U3. W0. R2.5\n", Code::ValueOutOfRange, 13, "whole number"),
+            ("G73 U3. W0. R1000\n", Code::PassLimit, 13, "1000 passes: more than 999"),
+            ("G73 U3. W0.\n", Code::MissingWord, 1, "no number of divisions R(d)"),
+        ] {
+            let plan = plan_with(&text(first), dialect, &[]);
+            let d = at(&plan, code, 4, col);
+            assert!(d.message.contains(what), "{}", d.message);
+            assert_eq!(cut(&plan), 0, "{first}");
+        }
+        let few = plan_with(&text("G73 U3. W0. R6\n"), dialect, &["limits.passes_per_start=5"]);
+        at(&few, Code::PassLimit, 4, 13);
+        let none = plan_with(&text(""), dialect, &[]);
+        assert!(at(&none, Code::NotSimulated, 4, 1).message.contains("G73"));
+        assert_eq!(cut(&none), 0);
+        let g71 = plan_with(&text("G71 U0 R0.5\n").replace("G73 P", "G71 P"), dialect, &[]);
+        at(&g71, Code::ValueOutOfRange, 4, 5);
+    }
+    // 999 passes of a contour of 100 moves, each with its rapid in and out: 999 × 101 = 100,899
+    // motions, over the 80,000 of one cycle.
+    let mut long =
+        String::from("O0076\nG21 T0101 S800 M03\nG00 X60. Z5.\nG73 U3. W0. R999\nG73 P10 Q20 F0.2\nN10 G00 X20. Z2.\n");
+    for k in 1..99 {
+        long += &format!("G01 Z-{k}.\n");
+    }
+    long += "N20 X52.\nM30\n";
+    let plan = plan_with(&long, Dialect::Fanuc0i, &[]);
+    let d = at(&plan, Code::PassLimit, 5, 1);
+    assert!(d.message.contains("100899 motions"), "{}", d.message);
+    assert_eq!(cut(&plan), 0);
 }

@@ -17,6 +17,7 @@ pub mod linuxcnc;
 pub mod macros;
 pub mod reader;
 pub mod renhe;
+pub mod stock;
 pub mod words;
 
 pub use reader::{Reader, Rules};
@@ -172,7 +173,7 @@ pub fn lathe_g_code(code10: i64) -> Option<(Group, G)> {
         700 => (OneShot, ns(&crate::message::NS_G70, true)),
         710 => (OneShot, Rough(crate::cycle::rough::Along::Z)),
         720 => (OneShot, Rough(crate::cycle::rough::Along::X)),
-        730 => (OneShot, ns(&crate::message::NS_G73, true)),
+        730 => (OneShot, Pattern),
         740 => (OneShot, ns(&crate::message::NS_G74, true)),
         750 => (OneShot, ns(&crate::message::NS_G75, true)),
         760 => (OneShot, G76),

@@ -1,6 +1,6 @@
 //! The threading cycles G92, G76 and G78, planned pass by pass (and the
-//! lathe profile cycles' roughing: [`rough`] for Fanuc's G71/G72, [`g7x`]
-//! for LinuxCNC's).
+//! lathe profile cycles' roughing: [`rough`] for Fanuc's and GSK's G71/G72,
+//! [`pattern`] for their G73, [`g7x`] for LinuxCNC's).
 //!
 //! Pure functions of what a cycle block gave (read by the controller's
 //! module) and the settings: a [`Geometry`] (start point A, the root line of
@@ -13,6 +13,7 @@ pub mod g7x;
 pub mod infeed;
 pub mod linuxcnc;
 pub mod multi;
+pub mod pattern;
 pub mod rough;
 pub mod runout;
 pub mod schedule;

@@ -7,8 +7,8 @@
 //! (G70–G76)": the blocks between the sequence numbers P and Q specify the
 //! finishing shape; GSK980TDc user manual §3.20, the same forms).
 //!
-//! G71 and G72 rough over the contour (`cycle::rough`); G73 is not planned
-//! (a not-simulated note); G70's return to its start point is not drawn.
+//! G71 and G72 rough over the contour (`cycle::rough`), G73 cuts it d
+//! times (`cycle::pattern`); G70's return to its start point is not drawn.
 //! LinuxCNC's G70–G72 read their profile from a subroutine, o(Q), the same
 //! way (`linux_profile`; its roughing is `cycle::g7x`).
 
@@ -17,6 +17,7 @@ use crate::args;
 use crate::block::Block;
 use crate::cycle::g7x::finish::Passes;
 use crate::cycle::g7x::{Fail, Job, Step, Words};
+use crate::cycle::pattern::Pattern;
 use crate::cycle::rough::{MAX_CUTS, Rough};
 use crate::message as msg;
 use crate::motion::{Move, MoveKind, Point};
@@ -27,6 +28,8 @@ use crate::span::Span;
 pub enum Cycle {
     /// Fanuc's and GSK's G71/G72: roughing over it.
     Rough(Rough),
+    /// Fanuc's and GSK's G73: the contour cut d times, shifted.
+    Pattern(Pattern),
     /// LinuxCNC's G70: finishing passes over the moves as read, arcs kept.
     LinuxFinish {
         /// D, E and P.
@@ -144,18 +147,22 @@ pub fn after(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Op
     };
     if g != 70 {
         let known = ctx.modal.pos.kx && ctx.modal.pos.kz;
-        let Some(rough) = ctx.modal.rough_call.filter(|_| g != 73 && known) else {
+        let cycle = match g {
+            73 => ctx.modal.pattern_call.map(Cycle::Pattern),
+            _ => ctx.modal.rough_call.map(Cycle::Rough),
+        };
+        let Some(cycle) = cycle.filter(|_| known) else {
             // Not roughed: on after N(nf).
             ex.go(ctx, end.next);
             return Some(Flow::Run);
         };
-        // G71/G72: read the contour (its blocks move the tool, not drawn), rough over it, on after N(nf).
+        // G71–G73: read the contour (its blocks move the tool, not drawn), rough over it, on after N(nf).
         let Some(start) = ctx.sequence(ns, ctx.here.offset) else {
             ctx.diag(&msg::SEQUENCE_NOT_FOUND, p.span, args![n = ns as i64]);
             ex.go(ctx, end.next);
             return Some(Flow::Run);
         };
-        let capture = Capture::new(Cycle::Rough(rough), ctx, block.span);
+        let capture = Capture::new(cycle, ctx, block.span);
         if ex.call(ctx, CallKind::Sub, start.at, 0, block.span, macros) {
             if let Some(f) = ex.frames.last_mut() {
                 f.until = Some(nf);

@@ -1,5 +1,6 @@
 //! Planning cycles and grouping passes: the cycles' geometry, run-out and
-//! screw-in, the depth schedule, starts and the motion limit.
+//! screw-in, the depth schedule, starts and the motion limit; the words
+//! and contours of the stock-removal cycles G71–G73.
 
 use super::{phrases, templates};
 
@@ -34,6 +35,21 @@ templates! {
     TOO_MANY_STARTS = TooManyStarts:
         "{n} starts (distinct start angles Q): at most {limit} (setting limits.starts)",
         "{n} 头（不同的起始角 Q）：最多 {limit} 头（设置 limits.starts）";
+    ROUGH_DEPTH_ZERO = ValueOutOfRange:
+        "{word}: the depth of cut Δd must be more than 0",
+        "{word}：切削深度 Δd 必须大于 0";
+    G73_DIVISIONS = ValueOutOfRange:
+        "{word}: the number of divisions d of G73 is its number of passes, a whole number 1 or more",
+        "{word}：G73 的分割次数 d 就是走刀次数，应为不小于 1 的整数";
+    G73_DIVISIONS_OVER = PassLimit:
+        "{word}: {d} passes: more than {limit} (setting limits.passes_per_start)",
+        "{word}：{d} 次走刀：超过 {limit} 次（设置 limits.passes_per_start）";
+    G73_NO_DIVISIONS = MissingWord:
+        "{word} sets the relief U(Δi) W(Δk), but no number of divisions R(d) has been given: give R",
+        "{word} 给出了退刀量 U(Δi) W(Δk)，但之前没有给出分割次数 R(d)：请指定 R";
+    G73_TOO_MANY_MOVES = PassLimit:
+        "G73: {d} passes over a contour of {points} points are {moves} motions, more than the {limit} the preview plans for one cycle",
+        "G73：{d} 次走刀、轮廓 {points} 个点，共 {moves} 段运动，超过预览对一个循环规划的 {limit} 段";
     MOVE_LIMIT = MoveLimit:
         "more than {limit} motions (setting limits.moves): the rest of the program is not drawn",
         "运动超过 {limit} 段（设置 limits.moves）：程序其余部分不绘制";
