@@ -163,6 +163,9 @@ codes! {
     StartInsideThread = "start-inside-thread", Warning;
     /// A taper R(i) of the opposite sign to U that is larger than |U/2|: the cut would start beyond the start point.
     TaperBeyondStart = "taper-beyond-start", Error;
+    /// A G71/G72 contour its cycle cannot rough: it goes back along the cut,
+    /// or has pockets where the controller roughs type I only.
+    ContourNotMonotone = "contour-not-monotone", Error;
     // ---- Renhe ----
     /// Renhe: absolute X or Z in a G32/G33 thread block.
     E18_03 = "E18-03", Error;

@@ -213,6 +213,7 @@ impl Reading {
     /// words as rs274 does.
     fn capture(&mut self, b: &Block) {
         let mut quiet = Diagnostics::with_limit(1);
+        self.exec.capture_first(b);
         self.it.step(b, &mut self.events, &mut quiet);
         if self.exec.capturing_words() {
             self.events.clear();
@@ -237,7 +238,7 @@ impl Reading {
         self.it.m.pattern_call = None;
         self.it.m.profile_call = None;
         let moves = match &c.cycle {
-            Cycle::Rough(r) => crate::cycle::rough::passes(r, c.start, &c.points, c.line, c.span),
+            Cycle::Rough(r) => self.stock(r, &c),
             Cycle::Pattern(p) => self.pattern(p, &c),
             Cycle::LinuxRough { words, q } => self.linux_cycle(&c, Who::Rough(words), *q, profile_motion),
             Cycle::LinuxFinish { passes, q } => self.linux_cycle(&c, Who::Finish(passes), *q, profile_motion),
@@ -250,6 +251,30 @@ impl Reading {
             });
         }
         self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
+    }
+
+    /// G71/G72 over the contour read in `c`: type II (pockets) when the
+    /// controller has it and the contour's first block moves both axes,
+    /// else type I; a contour its type refuses is an alarm at the cycle block.
+    fn stock(&mut self, r: &crate::cycle::rough::Rough, c: &crate::exec::Capture) -> Vec<Move> {
+        use crate::cycle::rough::{Along, Unfit, check, passes};
+        let type2 = r.pockets && c.first == Some((true, true));
+        let (what, cut, across, zero) = match r.along {
+            Along::Z => ("G71", 'Z', 'X', "W0"),
+            Along::X => ("G72", 'X', 'Z', "U0"),
+        };
+        let (template, args) = match check(r, &c.points, type2) {
+            Ok(()) if type2 => return crate::cycle::pockets::passes(r, c.start, &c.points, c.line, c.span),
+            Ok(()) => return passes(r, c.start, &c.points, c.line, c.span),
+            Err(Unfit::Back) => (&crate::message::CONTOUR_GOES_BACK, crate::args![what, cut]),
+            Err(Unfit::Pockets) if r.pockets => (&crate::message::CONTOUR_TYPE_ONE, crate::args![what, across, zero]),
+            Err(Unfit::Pockets) => {
+                let controller = self.it.s.dialect().title();
+                (&crate::message::CONTOUR_NO_POCKETS, crate::args![what, across, controller])
+            }
+        };
+        self.diags.push(template, c.span, args);
+        Vec::new()
     }
 
     /// G73's passes over the contour read in `c`; too many motions are an alarm at the cycle block.

@@ -492,3 +492,76 @@ fn g73_bad_words_are_alarms() {
     assert!(d.message.contains("100899 motions"), "{}", d.message);
     assert_eq!(cut(&plan), 0);
 }
+
+/// The contour with one pocket of `pockets` (a rise to X50 at Z-20, down to
+/// X40 at Z-30 … Z-40, up to X56 at Z-45), its first block `first`.
+fn pocket_program(first: &str) -> String {
+    format!(
+        "O0077\nG21 G97 S800 M03 T0101\nG00 X62. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n{first}\n\
+         G01 Z-10. F0.1\nX50. Z-20.\nZ-25.\nX40. Z-30.\nZ-40.\nX56. Z-45.\nZ-55.\nN20 X62.\nG70 P10 Q20\nG00 X100. Z100.\nM30\n"
+    )
+}
+
+/// Fanuc 0i, G71 type II: the contour's first block moves both axes (Z2.
+/// beside X30.), so it may go down again along X: a pocket between the
+/// rise to X50 and the wall up to X56. Depths of 2 (radius) from A (r31)
+/// over the shape shifted by Δu/2 = 0.2 and Δw = 0.1: from Z2 each cut
+/// ends at the first rise — r29 at the last wall (Z-54.9), r27 on the
+/// rise r20.2 → r28.2 (Z-39.9 − 5·6.8/8 = Z-44.15), r25 … r17 on the rise
+/// r15.2 → r25.2 (Z-9.9 − (r − 15.2)), r15.2 (A′) to Z-9.9; then the
+/// pocket, entered down the wall from the top of the rise (r25.2): r25 from
+/// Z-25.1 (Z-24.9 − 5·0.2/5) to Z-42.9 (Z-39.9 − 5·4.8/8),
+/// r23 from Z-27.1 to Z-41.65, r21 from Z-29.1 to Z-40.4 (its floor r20.2
+/// is above r19). Type I (the first block X30. alone) refuses the same
+/// contour; GSK980TDc, which has type I only, refuses it either way; a
+/// contour going back along Z is refused by both types.
+#[test]
+fn fanuc_type_ii_roughs_a_pocket() {
+    let plan = plan_with(&pocket_program("N10 G00 X30. Z2."), Dialect::Fanuc0i, &[]);
+    no_alarm(&plan);
+    let level = |m: &&screwcut::motion::Move| {
+        m.line == 5
+            && m.kind == MoveKind::Rough
+            && (m.from.x - m.to.x).abs() < 1e-9
+            && (m.from.x / 2.0).fract().abs() < 1e-9
+    };
+    let r6 = |v: f64| (v * 1e6).round() / 1e6;
+    let cuts: Vec<(f64, f64, f64)> =
+        plan.moves.iter().filter(level).map(|m| (m.from.x / 2.0, r6(m.from.z), r6(m.to.z))).collect();
+    assert_eq!(
+        cuts,
+        [
+            (29.0, 2.0, -54.9),
+            (27.0, 2.0, -44.15),
+            (25.0, 2.0, -19.7),
+            (23.0, 2.0, -17.7),
+            (21.0, 2.0, -15.7),
+            (19.0, 2.0, -13.7),
+            (17.0, 2.0, -11.7),
+            (25.0, -25.1, -42.9),
+            (23.0, -27.1, -41.65),
+            (21.0, -29.1, -40.4),
+        ]
+    );
+    // The cut at A′'s depth (r15.2) and the last cut along the shifted shape, which ends at X62.4 Z-54.9.
+    assert!(
+        plan.moves.iter().any(|m| m.line == 5 && m.kind == MoveKind::Rough && m.from.z == 2.0 && r6(m.to.z) == -9.9)
+    );
+    let last = plan.moves.iter().rfind(|m| m.line == 5 && m.kind == MoveKind::Rough).unwrap();
+    pt(last.to, 62.4, -54.9);
+    // G70 runs the contour itself.
+    assert_eq!(plan.moves.iter().filter(|m| (6..=14).contains(&m.line)).count(), 9);
+
+    let one = plan_with(&pocket_program("N10 G00 X30."), Dialect::Fanuc0i, &[]);
+    let d = at(&one, Code::ContourNotMonotone, 5, 1);
+    assert!(d.message.contains("first block moves X only (type I"), "{}", d.message);
+    assert!(one.moves.iter().all(|m| m.line != 5), "not roughed");
+    for first in ["N10 G00 X30.", "N10 G00 X30. Z2."] {
+        let gsk = plan_with(&pocket_program(first), Dialect::Gsk980tdc, &[]);
+        let d = at(&gsk, Code::ContourNotMonotone, 5, 1);
+        assert!(d.message.contains("GSK980TDc roughs a shape monotone along X and Z only"), "{}", d.message);
+    }
+    let back = pocket_program("N10 G00 X30. Z2.").replace("Z-55.", "Z-42.");
+    let d = at(&plan_with(&back, Dialect::Fanuc0i, &[]), Code::ContourNotMonotone, 5, 1);
+    assert!(d.message.contains("goes back along Z"), "{}", d.message);
+}

@@ -39,6 +39,8 @@ pub static CONTROLLER: Controller = Controller {
             source: "Fanuc 0i",
         }),
         spindle_stops: &[],
+        // G71/G72 type II when the contour's first block moves both axes (W0 for no Z move).
+        pockets: true,
     },
     g_code,
     command,

@@ -46,6 +46,7 @@ pub static CONTROLLER: Controller = Controller {
             source: "GSK980TDc",
         }),
         spindle_stops: &[],
+        pockets: false,
     },
     g_code,
     command,

@@ -52,6 +52,7 @@ pub static CONTROLLER: Controller = Controller {
         }),
         // rs274 stops the spindle for a tool change (M6) before it runs M3/M4.
         spindle_stops: &[6],
+        pockets: false,
     },
     g_code,
     command,

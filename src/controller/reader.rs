@@ -39,6 +39,10 @@ pub struct Rules {
     /// M codes besides M5 that stop the spindle, before the block's M3/M4
     /// start it again (LinuxCNC's M6 tool change).
     pub spindle_stops: &'static [i64],
+    /// G71/G72 rough a contour with pockets (type II) when its first block
+    /// moves both axes (Fanuc 0i); `false`: a contour must be monotone both
+    /// ways (GSK980TDc, whose manual has type I only).
+    pub pockets: bool,
 }
 
 impl Rules {

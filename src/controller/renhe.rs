@@ -36,6 +36,7 @@ pub static CONTROLLER: Controller = Controller {
         spindle_word: false,
         macros: None,
         spindle_stops: &[],
+        pockets: false,
     },
     g_code,
     command,

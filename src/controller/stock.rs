@@ -44,7 +44,7 @@ pub fn rough(r: &mut Reader, b: &Block, w: &Word, along: Along) {
         return;
     };
     let (du, dw) = allowances(r, b);
-    r.m.rough_call = Some(Rough { along, depth, escape, du, dw });
+    r.m.rough_call = Some(Rough { along, depth, escape, du, dw, pockets: r.rules.pockets });
 }
 
 /// The finishing allowances U(Δu) (a diameter, or a radius under radius

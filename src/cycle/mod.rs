@@ -14,6 +14,7 @@ pub mod infeed;
 pub mod linuxcnc;
 pub mod multi;
 pub mod pattern;
+pub mod pockets;
 pub mod rough;
 pub mod runout;
 pub mod schedule;

@@ -12,8 +12,9 @@
 //!   in rapid to the start's Z (X);
 //! - after the last cut a cut along the shifted shape, and a rapid back to A.
 //!
-//! Pure: points in, motions out. A shape that is not monotone (type II, with
-//! pockets) is roughed to its first crossing at each depth.
+//! Pure: points in, motions out. A shape that is not monotone across (type
+//! II, with pockets) is roughed by `cycle::pockets`; [`check`] says which
+//! shapes a type refuses.
 
 use crate::motion::{Move, MoveKind, Point};
 use crate::span::Span;
@@ -40,13 +41,48 @@ pub struct Rough {
     pub du: f64,
     /// Finishing allowance Δw (signed).
     pub dw: f64,
+    /// The controller roughs pockets (type II, `cycle::pockets`) when the
+    /// contour's first block moves both axes (Fanuc 0i); `false`: it has
+    /// type I only (GSK980TDc).
+    pub pockets: bool,
+}
+
+/// How a contour breaks a roughing cycle's rules.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unfit {
+    /// It goes back along the cut (Z for G71, X for G72): no type allows it.
+    Back,
+    /// It is not monotone across (it has pockets) and is roughed as type I.
+    Pockets,
+}
+
+/// Whether `shape` (A′ first) fits cycle `r`: monotone along the cut
+/// always, and across too unless it is roughed as type II (`type2`).
+pub fn check(r: &Rough, shape: &[Point], type2: bool) -> Result<(), Unfit> {
+    let pts: Vec<(f64, f64)> = shape.iter().map(|p| cl(*p, r.along)).collect();
+    let monotone = |v: &dyn Fn(&(f64, f64)) -> f64| {
+        let (mut up, mut down) = (false, false);
+        for w in pts.windows(2) {
+            let d = v(&w[1]) - v(&w[0]);
+            up |= d > 1e-9;
+            down |= d < -1e-9;
+        }
+        !(up && down)
+    };
+    if !monotone(&|p| p.0) {
+        return Err(Unfit::Back);
+    }
+    if !type2 && !monotone(&|p| p.1) {
+        return Err(Unfit::Pockets);
+    }
+    Ok(())
 }
 
 /// Most cuts drawn of one cycle (a tiny Δd on a large part).
 pub const MAX_CUTS: usize = 10_000;
 
 /// (cut, level) coordinates of a point: G71 cuts along Z at radius levels, G72 the other way.
-fn cl(p: Point, along: Along) -> (f64, f64) {
+pub(super) fn cl(p: Point, along: Along) -> (f64, f64) {
     match along {
         Along::Z => (p.z, p.x / 2.0),
         Along::X => (p.x / 2.0, p.z),
@@ -54,7 +90,7 @@ fn cl(p: Point, along: Along) -> (f64, f64) {
 }
 
 /// The point of (cut, level) coordinates.
-fn pt(c: f64, l: f64, along: Along) -> Point {
+pub(super) fn pt(c: f64, l: f64, along: Along) -> Point {
     match along {
         Along::Z => Point { x: 2.0 * l, z: c },
         Along::X => Point { x: 2.0 * c, z: l },
@@ -133,7 +169,7 @@ mod tests {
     #[test]
     fn g71_cuts_at_each_depth_to_the_shifted_shape() {
         // A X52 Z2; Δd 1.5, e 0.5; Δu 0.4, Δw 0.1; shape X26 Z2 → X30 Z-2 → Z-40 → X44 → Z-60 → X52.
-        let r = Rough { along: Along::Z, depth: 1.5, escape: 0.5, du: 0.4, dw: 0.1 };
+        let r = Rough { along: Along::Z, depth: 1.5, escape: 0.5, du: 0.4, dw: 0.1, pockets: false };
         let shape = [p(26.0, 2.0), p(30.0, -2.0), p(30.0, -40.0), p(44.0, -40.0), p(44.0, -60.0), p(52.0, -60.0)];
         let m = passes(&r, p(52.0, 2.0), &shape, 5, Span::default());
         let cuts: Vec<&Move> = m.iter().filter(|m| m.kind == MoveKind::Rough).collect();
@@ -159,7 +195,7 @@ mod tests {
     #[test]
     fn g72_faces_at_each_depth() {
         // A X82 Z1; Δd (W) 2, e 0.5; Δu 0.2, Δw 0.1.
-        let r = Rough { along: Along::X, depth: 2.0, escape: 0.5, du: 0.2, dw: 0.1 };
+        let r = Rough { along: Along::X, depth: 2.0, escape: 0.5, du: 0.2, dw: 0.1, pockets: false };
         // A′ X82 Z-6 (type I: Z only), face to X40, turn to Z0, face to X20.
         let shape = [p(82.0, -6.0), p(40.0, -6.0), p(40.0, 0.0), p(20.0, 0.0)];
         let m = passes(&r, p(82.0, 1.0), &shape, 3, Span::default());
@@ -174,7 +210,7 @@ mod tests {
 
     #[test]
     fn nothing_to_rough_gives_nothing() {
-        let r = Rough { along: Along::Z, depth: 0.0, escape: 0.5, du: 0.4, dw: 0.1 };
+        let r = Rough { along: Along::Z, depth: 0.0, escape: 0.5, du: 0.4, dw: 0.1, pockets: false };
         assert!(passes(&r, p(52.0, 2.0), &[p(26.0, 2.0), p(30.0, -2.0)], 1, Span::default()).is_empty());
         let r = Rough { depth: 1.0, ..r };
         assert!(passes(&r, p(52.0, 2.0), &[p(26.0, 2.0)], 1, Span::default()).is_empty());

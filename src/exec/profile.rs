@@ -59,6 +59,9 @@ pub struct Capture {
     pub modal: Box<crate::state::Modal>,
     /// The end points of the contour's motions, in order (arcs as chords).
     pub points: Vec<Point>,
+    /// Whether the contour's first block N(ns) has an X (or U) word and a Z (or W) word:
+    /// G71/G72 type II when both (Fanuc 0i); `None` until it is read.
+    pub first: Option<(bool, bool)>,
     /// The contour's moves as rs274 reads them, for LinuxCNC's roughing (instead of `points`).
     pub steps: Vec<Step>,
     /// A profile move rs274 refuses (LinuxCNC's roughing), where it is: the profile ends there.
@@ -77,6 +80,7 @@ impl Capture {
             start: ctx.modal.pos.p,
             modal: Box::new(ctx.modal.clone()),
             points: Vec::new(),
+            first: None,
             steps: Vec::new(),
             refused: None,
             line: ctx.here.line,
@@ -111,6 +115,14 @@ impl Exec {
             Ok(Some(s)) => c.steps.push(s),
             Ok(None) => {}
             Err(f) => c.refused = Some((f, b.span)),
+        }
+    }
+
+    /// Notes the axis words of block `b` when it is the contour's first (see [`Capture::first`]).
+    pub fn capture_first(&mut self, b: &Block) {
+        let Some(c) = self.frames.last_mut().and_then(|f| f.capture.as_mut()) else { return };
+        if c.first.is_none() {
+            c.first = Some((b.has(b'X') || b.has(b'U'), b.has(b'Z') || b.has(b'W')));
         }
     }
 

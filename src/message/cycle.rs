@@ -50,6 +50,15 @@ templates! {
     G73_TOO_MANY_MOVES = PassLimit:
         "G73: {d} passes over a contour of {points} points are {moves} motions, more than the {limit} the preview plans for one cycle",
         "G73：{d} 次走刀、轮廓 {points} 个点，共 {moves} 段运动，超过预览对一个循环规划的 {limit} 段";
+    CONTOUR_GOES_BACK = ContourNotMonotone:
+        "{what}: the finishing shape goes back along {cut}; the cuts run along {cut}, so it must go one way along it: not roughed",
+        "{what}：精车形状沿 {cut} 向折返；粗车沿 {cut} 向切削，形状必须沿 {cut} 单向变化：不粗车";
+    CONTOUR_TYPE_ONE = ContourNotMonotone:
+        "{what}: the finishing shape goes up and down along {across} but its first block moves {across} only (type I, which needs a monotone shape); for pockets (type II) the first block must move both axes ({zero} when the other does not move): not roughed",
+        "{what}：精车形状沿 {across} 向有升有降，但其第一段只移动 {across}（类型 I，要求形状单调）；要加工凹槽（类型 II），第一段须同时指定两轴（另一轴不移动时写 {zero}）：不粗车";
+    CONTOUR_NO_POCKETS = ContourNotMonotone:
+        "{what}: the finishing shape goes up and down along {across}; {controller} roughs a shape monotone along X and Z only (no pockets): not roughed",
+        "{what}：精车形状沿 {across} 向有升有降；{controller} 只能粗车 X、Z 向都单调变化的形状（不能有凹槽）：不粗车";
     MOVE_LIMIT = MoveLimit:
         "more than {limit} motions (setting limits.moves): the rest of the program is not drawn",
         "运动超过 {limit} 段（设置 limits.moves）：程序其余部分不绘制";
