@@ -131,3 +131,39 @@ fn g72_pockets_and_bad_input_end() {
     assert!(passes(&tiny, p(82.0, 1.0), &shape, 1, Span::default()).len() <= 9 * MAX_MOVES);
     assert!(passes(&r, p(82.0, 1.0), &shape[..1], 1, Span::default()).is_empty());
 }
+
+/// 500 contours rising and falling at random along X (monotone along Z,
+/// some vertical walls), roughed by type II from a start point above them:
+/// no panic, every motion finite, the bound on motions kept, every cut
+/// along a depth starts at the start point's Z or on the shape and passes
+/// over no point of the shifted shape that lies above its depth.
+#[test]
+fn random_pocketed_shapes_rough_within_the_shape() {
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..500 {
+        let n = 2 + (next() * 12.0) as usize;
+        let mut z = 0.0;
+        let mut shape = vec![p(10.0 + 20.0 * next(), z)];
+        for _ in 1..n {
+            z -= if next() < 0.2 { 0.0 } else { 1.0 + 10.0 * next() };
+            shape.push(p(10.0 + 40.0 * next(), z));
+        }
+        let depth = 0.3 + 3.0 * next();
+        let r = Rough { along: Along::Z, depth, escape: 0.5, du: 0.0, dw: 0.0, pockets: true };
+        let a = p(60.0, 2.0);
+        let m = passes(&r, a, &shape, 1, Span::default());
+        assert!(m.len() <= MAX_MOVES + 2 * n + 40, "{}", m.len());
+        assert!(m.iter().all(|m| m.to.x.is_finite() && m.to.z.is_finite()));
+        for c in m.iter().filter(|m| m.kind == MoveKind::Rough && m.from.x == m.to.x && m.from.z > m.to.z + 1e-9) {
+            let (z0, z1, x) = (c.from.z, c.to.z, c.from.x);
+            let over = shape.iter().any(|q| q.z < z0 - 1e-6 && q.z > z1 + 1e-6 && q.x > x + 1e-6);
+            assert!(!over, "the cut at X{x} from Z{z0} to Z{z1} passes through the shape {shape:?}");
+        }
+    }
+}
