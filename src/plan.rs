@@ -392,7 +392,23 @@ impl Reading {
         if let Some(c) = self.exec.captured.take() {
             self.rough(*c);
         }
+        if let Some((to, line, span)) = self.exec.returned.take() {
+            self.back_to_start(to, line, span);
+        }
         out
+    }
+
+    /// After a G70's contour: the rapid back to its start point, a motion of
+    /// the G70 block, when the tool's place is known.
+    fn back_to_start(&mut self, to: crate::motion::Point, line: u32, span: Span) {
+        let pos = self.it.m.pos;
+        if !(pos.kx && pos.kz) {
+            return;
+        }
+        let mv = Move { kind: MoveKind::Rapid, from: pos.p, to, line, span, arc: None };
+        self.events.push(Event::Rapid { mv: Some(mv), x: true, z: true, line });
+        self.it.m.pos.p = to;
+        self.asm.take(&mut self.events, &self.it.s, Units::of(self.it.m.inch), &mut self.diags);
     }
 
     /// Runs `f` on the program flow with a context for the line at `here`.

@@ -54,10 +54,19 @@ fn g71_roughs_over_its_contour_and_g70_runs_it() {
         );
         let written = plan_with(&program("", CONTOUR), dialect, &[]);
         no_alarm(&cycle);
-        // Without the roughing (the G71 block's motions), the moves are those of the contour written in line.
+        // Without the roughing (the G71 block's motions) and G70's return, the moves are those of the
+        // contour written in line.
         let mut without = cycle.clone();
-        without.moves.retain(|m| m.line != 5);
+        without.moves.retain(|m| m.line != 5 && m.line != 13);
         same_moves(&without, &written);
+        // After the contour G70 returns to its start point A (X62 Z2) in rapid, a motion of its block,
+        // and says nothing about it (Fanuc 0i-TF, G70: the tool returns to the start point A).
+        let back: Vec<_> = cycle.moves.iter().filter(|m| m.line == 13).collect();
+        assert_eq!(back.len(), 1, "{dialect:?}");
+        assert_eq!(back[0].kind, MoveKind::Rapid);
+        pt(back[0].from, 62.0, -45.0);
+        pt(back[0].to, 62.0, 2.0);
+        assert!(cycle.diagnostics.iter().all(|d| d.line != 13), "{:?}", cycle.diagnostics);
         assert_eq!(cycle.threads.len(), 1);
         eq(cycle.threads[0].crest, 47.8);
         // The contour's moves come from its own lines, run by G70 on line 13.

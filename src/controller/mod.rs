@@ -170,7 +170,8 @@ pub fn lathe_g_code(code10: i64) -> Option<(Group, G)> {
         410 | 420 => (NoseComp, CompOn),
         500 => (OneShot, SetCoord),
         650 => (OneShot, ns(&crate::message::NS_G65, true)),
-        700 => (OneShot, ns(&crate::message::NS_G70, true)),
+        // G70 P Q: the program flow runs the contour and the rapid back (exec::profile).
+        700 => (OneShot, Accepted),
         710 => (OneShot, Rough(crate::cycle::rough::Along::Z)),
         720 => (OneShot, Rough(crate::cycle::rough::Along::X)),
         730 => (OneShot, Pattern),

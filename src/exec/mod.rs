@@ -33,6 +33,7 @@ use crate::args;
 use crate::block::{Block, BlockKind, Number, Word};
 use crate::diagnostic::Via;
 use crate::message as msg;
+use crate::motion::Point;
 use crate::settings::{P, Settings, T};
 use crate::span::{Shift, Span};
 use crate::state::Modal;
@@ -92,6 +93,9 @@ pub struct Frame {
     pub until: Option<u32>,
     /// A G71/G72 reading its contour to rough over it: what it reads.
     pub capture: Option<Box<Capture>>,
+    /// A G70 running a contour: its start point and its block's span, where
+    /// the tool returns in rapid after the contour.
+    pub back_to: Option<(Point, Span)>,
 }
 
 /// A modal macro call (`G66`) in force: the macro runs after each block
@@ -161,6 +165,9 @@ pub struct Exec {
     pub continued: Option<Box<str>>,
     /// A contour read for a stock-removal cycle, complete: the reading roughs over it next.
     pub captured: Option<Box<Capture>>,
+    /// A G70's contour has run: the rapid back to its start point (the
+    /// point, the G70 block's line and span), which the reading makes next.
+    pub returned: Option<(Point, u32, Span)>,
 }
 
 impl Exec {
@@ -185,6 +192,7 @@ impl Exec {
             broke: false,
             continued: None,
             captured: None,
+            returned: None,
         }
     }
 
@@ -389,6 +397,7 @@ impl Exec {
             site,
             until: None,
             capture: None,
+            back_to: None,
         });
         self.set_via();
         if kind == CallKind::Macro {
@@ -404,6 +413,9 @@ impl Exec {
         // A contour or profile read for a cycle is complete: the planner takes it.
         if let Some(c) = f.capture.take() {
             self.captured = Some(c);
+        }
+        if let Some((p, span)) = f.back_to {
+            self.returned = Some((p, f.site, span));
         }
         self.set_via();
         if f.kind == CallKind::Macro && self.vars.levels.len() > 1 {
@@ -429,6 +441,9 @@ impl Exec {
         for f in &mut self.frames {
             at(&mut f.ret);
             at(&mut f.body);
+            if let Some(b) = &mut f.back_to {
+                b.1 = s.span(b.1);
+            }
             f.loops.iter_mut().for_each(|l| at(&mut l.head));
         }
         self.loops.iter_mut().for_each(|l| at(&mut l.head));

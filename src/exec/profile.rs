@@ -8,7 +8,9 @@
 //! finishing shape; GSK980TDc user manual §3.20, the same forms).
 //!
 //! G71 and G72 rough over the contour (`cycle::rough`), G73 cuts it d
-//! times (`cycle::pattern`); G70's return to its start point is not drawn.
+//! times (`cycle::pattern`); after G70's contour the tool returns to the
+//! start point in rapid (Fanuc 0i-TF: "the tool returns to the start point
+//! A"; GSK980TDc the same), drawn as a rapid of the G70 block.
 //! LinuxCNC's G70–G72 read their profile from a subroutine, o(Q), the same
 //! way (`linux_profile`; its roughing is `cycle::g7x`).
 
@@ -188,9 +190,13 @@ pub fn after(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> Op
         ctx.diag(&msg::SEQUENCE_NOT_FOUND, p.span, args![n = ns as i64]);
         return Some(Flow::Run);
     };
+    // After the contour the tool returns to the start point in rapid (when it is known).
+    let known = ctx.modal.pos.kx && ctx.modal.pos.kz;
+    let back_to = known.then_some((ctx.modal.pos.p, block.span));
     if ex.call(ctx, CallKind::Sub, start.at, 0, block.span, macros) {
         if let Some(f) = ex.frames.last_mut() {
             f.until = Some(nf);
+            f.back_to = back_to;
         }
     }
     Some(Flow::Run)

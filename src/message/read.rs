@@ -176,7 +176,6 @@ phrases! {
     NS_G33_TAPPING: "G33 tapping cycle", "G33 攻丝循环";
     NS_G34: "G34 variable-lead thread", "G34 变导程螺纹切削";
     NS_G65: "G65 macro call", "G65 宏程序调用";
-    NS_G70: "G70's return to its start point after the contour", "G70 精车轮廓之后返回起点";
     NS_G71: "the roughing of G71 (stock removal in turning; its contour is drawn where G70 runs it)", "G71 外圆粗车循环的粗车走刀（其轮廓在 G70 执行处画出）";
     NS_G72: "the roughing of G72 (stock removal in facing; its contour is drawn where G70 runs it)", "G72 端面粗车循环的粗车走刀（其轮廓在 G70 执行处画出）";
     NS_G73: "the roughing of G73 (pattern repeating; its contour is drawn where G70 runs it)", "G73 封闭切削循环的粗车走刀（其轮廓在 G70 执行处画出）";
