@@ -8,7 +8,7 @@
 
 use std::path::{Path, PathBuf};
 
-use tiny_http::{Header, Method, Response, Server};
+use tiny_http::{Header, Method, Request, Response, Server};
 
 use crate::Result;
 
@@ -22,71 +22,79 @@ pub fn port(server: &Server) -> Result<u16> {
     server.server_addr().to_ip().map(|a| a.port()).ok_or_else(|| "the server has no IP address".to_string())
 }
 
-/// Serves the files under `dir` until the process ends.
+/// Serves the files under `dir` until the process ends, each request on a
+/// thread of its own (a slow reader of the wasm holds up no other).
 pub fn serve_forever(server: Server, dir: PathBuf) {
+    let dir = std::sync::Arc::new(dir);
     for request in server.incoming_requests() {
-        let head = *request.method() == Method::Head;
-        let file = match request.method() {
-            Method::Get | Method::Head => resolve(&dir, request.url()),
-            _ => {
-                let _ = request.respond(Response::from_string("method not allowed\n").with_status_code(405));
-                continue;
-            }
-        };
-        let header = |name: &'static str| {
-            request.headers().iter().find(|h| h.field.equiv(name)).map(|h| h.value.as_str().to_string())
-        };
-        let accepted = header("Accept-Encoding").unwrap_or_default();
-        let etag = file.as_ref().and_then(|f| etag(f));
-        if etag.is_some() && header("If-None-Match") == etag {
-            let mut response = Response::empty(304);
-            if let Some(h) = etag.as_ref().and_then(|e| Header::from_bytes("ETag", e.as_str()).ok()) {
-                response.add_header(h);
-            }
-            let _ = request.respond(response);
-            continue;
+        let dir = std::sync::Arc::clone(&dir);
+        std::thread::spawn(move || respond(request, &dir));
+    }
+}
+
+/// Answers one request for a file under `dir`.
+fn respond(request: Request, dir: &Path) {
+    let head = *request.method() == Method::Head;
+    let file = match request.method() {
+        Method::Get | Method::Head => resolve(dir, request.url()),
+        _ => {
+            let _ = request.respond(Response::from_string("method not allowed\n").with_status_code(405));
+            return;
         }
-        let packed = file.as_ref().and_then(|f| {
-            [("br", ".br"), ("gzip", ".gz")].into_iter().filter(|(name, _)| accepts(&accepted, name)).find_map(
-                |(name, suffix)| {
-                    let mut p = f.clone().into_os_string();
-                    p.push(suffix);
-                    std::fs::read(p).ok().map(|b| (name, b))
-                },
-            )
-        });
-        let (body, encoded) = match packed {
-            Some((name, b)) => (Some(b), Some(name)),
-            None => (file.as_ref().and_then(|f| std::fs::read(f).ok()), None),
-        };
-        let (status, mime, body) = match (&file, body) {
-            (Some(f), Some(body)) => (200, mime(f), body),
-            _ => (404, "text/plain", b"not found\n".to_vec()),
-        };
-        let len = body.len();
-        let mut response = Response::from_data(if head { Vec::new() } else { body }).with_status_code(status);
-        let mut headers = vec![
-            ("Content-Type", mime.to_string()),
-            ("Cache-Control", "no-cache".into()),
-            ("X-Content-Type-Options", "nosniff".into()),
-            ("Vary", "Accept-Encoding".into()),
-        ];
-        if let Some(name) = encoded {
-            headers.push(("Content-Encoding", name.into()));
-        }
-        if let Some(e) = etag.filter(|_| status == 200) {
-            headers.push(("ETag", e));
-        }
-        for (k, v) in headers {
-            if let Ok(h) = Header::from_bytes(k, v.as_str()) {
-                response.add_header(h);
-            }
-        }
-        if head && let Ok(h) = Header::from_bytes("Content-Length", len.to_string()) {
+    };
+    let header = |name: &'static str| {
+        request.headers().iter().find(|h| h.field.equiv(name)).map(|h| h.value.as_str().to_string())
+    };
+    let accepted = header("Accept-Encoding").unwrap_or_default();
+    let etag = file.as_ref().and_then(|f| etag(f));
+    if etag.is_some() && header("If-None-Match") == etag {
+        let mut response = Response::empty(304);
+        if let Some(h) = etag.as_ref().and_then(|e| Header::from_bytes("ETag", e.as_str()).ok()) {
             response.add_header(h);
         }
         let _ = request.respond(response);
+        return;
     }
+    let packed = file.as_ref().and_then(|f| {
+        [("br", ".br"), ("gzip", ".gz")].into_iter().filter(|(name, _)| accepts(&accepted, name)).find_map(
+            |(name, suffix)| {
+                let mut p = f.clone().into_os_string();
+                p.push(suffix);
+                std::fs::read(p).ok().map(|b| (name, b))
+            },
+        )
+    });
+    let (body, encoded) = match packed {
+        Some((name, b)) => (Some(b), Some(name)),
+        None => (file.as_ref().and_then(|f| std::fs::read(f).ok()), None),
+    };
+    let (status, mime, body) = match (&file, body) {
+        (Some(f), Some(body)) => (200, mime(f), body),
+        _ => (404, "text/plain", b"not found\n".to_vec()),
+    };
+    let len = body.len();
+    let mut response = Response::from_data(if head { Vec::new() } else { body }).with_status_code(status);
+    let mut headers = vec![
+        ("Content-Type", mime.to_string()),
+        ("Cache-Control", "no-cache".into()),
+        ("X-Content-Type-Options", "nosniff".into()),
+        ("Vary", "Accept-Encoding".into()),
+    ];
+    if let Some(name) = encoded {
+        headers.push(("Content-Encoding", name.into()));
+    }
+    if let Some(e) = etag.filter(|_| status == 200) {
+        headers.push(("ETag", e));
+    }
+    for (k, v) in headers {
+        if let Ok(h) = Header::from_bytes(k, v.as_str()) {
+            response.add_header(h);
+        }
+    }
+    if head && let Ok(h) = Header::from_bytes("Content-Length", len.to_string()) {
+        response.add_header(h);
+    }
+    let _ = request.respond(response);
 }
 
 /// Whether an `Accept-Encoding` value takes the coding `name` (listed, and
