@@ -481,6 +481,10 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
     let mut helices: Vec<(f64, usize, f64)> = Vec::new();
     let mut of = Vec::with_capacity(cuts.len());
     for (c, &p) in cuts.iter().zip(&phases) {
+        if helices.len() > MAX_EVEN_STARTS {
+            // Passes drifting along the axis (a flank infeed written block by block): no even starts.
+            break;
+        }
         let turn = (p - phases[0]).rem_euclid(1.0);
         match helices.iter().position(|h| helix::same_phase(h.0, turn)) {
             Some(i) => {
@@ -495,8 +499,10 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
     }
     let n = helices.len();
     let mut by_turn: Vec<usize> = (0..n).collect();
+    let complete = of.len() == cuts.len();
     by_turn.sort_unstable_by(|&a, &b| helices[a].0.total_cmp(&helices[b].0));
-    let even = n > 1
+    let even = complete
+        && n > 1
         && by_turn.iter().enumerate().all(|(k, &i)| helix::same_phase(helices[i].0, k as f64 / n as f64))
         && helices.iter().all(|h| h.1 == helices[0].1);
     if even {
@@ -511,16 +517,18 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
         }
         return (of.into_iter().map(|i| rank[i]).collect(), n);
     }
-    let mut angles: Vec<f64> = Vec::new();
-    for c in cuts {
-        if !angles.iter().any(|a| (a - c.angle).abs() < 1e-6) {
-            angles.push(c.angle);
-        }
-    }
+    // The distinct start angles, sorted (in n log n: a thread may have tens of thousands of passes).
+    let mut angles: Vec<f64> = cuts.iter().map(|c| c.angle).collect();
     angles.sort_unstable_by(f64::total_cmp);
-    let of = cuts.iter().map(|c| angles.iter().position(|a| (a - c.angle).abs() < 1e-6).unwrap_or(0)).collect();
+    angles.dedup_by(|a, kept| (*a - *kept).abs() < 1e-6);
+    let last = angles.len().saturating_sub(1);
+    let of = cuts.iter().map(|c| angles.partition_point(|a| *a < c.angle - 1e-6).min(last)).collect();
     (of, angles.len())
 }
+
+/// The most starts read from the helices the passes cut (evenly spaced);
+/// passes on more helices than this are no multi-start thread.
+const MAX_EVEN_STARTS: usize = 360;
 
 /// Which way the depth grows along the short axis: from the passes'
 /// progression, else from the approach of the first cut, else from its

@@ -20,6 +20,10 @@ use crate::num::{close, round_out, same_lead};
 use crate::span::Span;
 use crate::thread::{Pass, Thread};
 
+/// The most helices one surface is sorted into; past it the passes drift
+/// and none is warned about (the sorting stays linear in the passes).
+const MAX_HELICES: usize = 360;
+
 /// One pass as a helix: its thread, lead and phase (turns, 0 ≤ φ < 1).
 struct Helix<'a> {
     pass: &'a Pass,
@@ -89,9 +93,14 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
     // Each helix with how many passes cut it.
     let mut kinds: Vec<(usize, usize)> = Vec::new(); // (first pass index, count)
     for (k, h) in helices.iter().enumerate() {
-        match kinds.iter_mut().find(|(f, _)| same(&helices[*f], h)) {
-            Some(kind) => kind.1 += 1,
-            None => kinds.push((k, 1)),
+        if let Some(kind) = kinds.iter_mut().find(|(f, _)| same(&helices[*f], h)) {
+            kind.1 += 1;
+        } else if kinds.len() >= MAX_HELICES {
+            // Passes drifting along the axis pass by pass (a flank infeed written block by
+            // block) cut as many helices as passes: no main helix to warn against.
+            return;
+        } else {
+            kinds.push((k, 1));
         }
     }
     let most = kinds.iter().map(|k| k.1).max().unwrap_or(0);

@@ -111,3 +111,22 @@ fn a_two_start_thread_by_axial_offset_and_the_chinese_text() {
     let zh = d.render(screwcut::message::Lang::Zh);
     assert!(zh.contains("导程是 2.5") && zh.contains("导程是 2："), "{zh}");
 }
+
+/// A flank infeed written block by block: each of 2,000 passes starts
+/// 0.013 further along Z (lead 2), so every pass cuts a helix of its own.
+/// No two are starts of one thread and none is a stray against a main
+/// helix: one thread, one start, no warning — sorted in time linear in the
+/// passes (past 360 helices the sorting stops).
+#[test]
+fn passes_drifting_along_the_axis_are_one_start() {
+    let mut src = String::from("G00 X60 Z70\n");
+    for k in 0..2000 {
+        let z = 70.0 + 0.013 * f64::from(k);
+        src += &format!("G00 X47.1 Z{z:.3}\nG32 Z13 F2\nG00 X60\n");
+    }
+    src += "M30\n";
+    let plan = gsk(&src);
+    assert_eq!(plan.threads.len(), 1);
+    assert_eq!((plan.threads[0].starts, plan.threads[0].passes.len()), (1, 2000));
+    assert!(cross(&plan).is_empty(), "{:?}", &cross(&plan)[..3.min(cross(&plan).len())]);
+}
