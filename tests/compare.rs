@@ -22,6 +22,8 @@ const EXAMPLES: &[(&str, &str, Dialect)] = &[
     ("g76-fanuc", include_str!("../examples/g76-fanuc.nc"), Dialect::Fanuc0i),
     ("renhe-tails", include_str!("../examples/renhe-tails.nc"), Dialect::Renhe),
     ("linuxcnc-g76", include_str!("../examples/linuxcnc-g76.ngc"), Dialect::LinuxCnc),
+    ("fanuc-g71-g76", include_str!("../examples/fanuc-g71-g76.nc"), Dialect::Fanuc0i),
+    ("linuxcnc-g71-g76", include_str!("../examples/linuxcnc-g71-g76.ngc"), Dialect::LinuxCnc),
 ];
 
 /// What a target cannot write of an example, and so the passes that differ.
