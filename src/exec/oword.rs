@@ -87,7 +87,7 @@ pub fn read(env: &mut Vals, n: i64, span: Span) -> Result<Val, Fail> {
 }
 
 /// Reads `#<name>`: a value set by the program, or one of the predefined
-/// names that tell the modal state.
+/// names that tell the modal state and the position.
 pub fn named(env: &mut Vals, name: &str, span: Span) -> Result<Val, Fail> {
     if let Some(v) = env.vars.named(name) {
         return Ok(Some(v));
@@ -100,6 +100,11 @@ pub fn named(env: &mut Vals, name: &str, span: Span) -> Result<Val, Fail> {
         "_absolute" => flag(!m.incremental),
         "_incremental" => flag(m.incremental),
         "_value" | "_value_returned" => Some(0.0),
+        // The current position: X as a radius even in diameter mode (rs274 keeps the radius;
+        // tests/linuxcnc/oword-quirk-position), Y 0 on a lathe.
+        "_x" => Some(if m.pos.kx { m.pos.p.r() } else { 0.0 }),
+        "_z" => Some(if m.pos.kz { m.pos.p.z } else { 0.0 }),
+        "_y" => Some(0.0),
         _ => return Err(Fail { template: &msg::NAMED_NOT_DEFINED, span, args: args![name] }),
     })
 }
