@@ -10,7 +10,6 @@
 
 use serde::Serialize;
 
-use crate::geom::Frame;
 use crate::motion::Point;
 use crate::plan::Plan;
 use crate::thread::{Axis, Pass, Thread};
@@ -120,13 +119,10 @@ fn path(plan: &Plan, t: &Thread, p: &Pass) -> Vec<Point> {
     } else {
         cut.first().map(|m| m.from).into_iter().chain(cut.iter().map(|m| m.to)).collect()
     };
-    if p.angle != 0.0 && t.lead > 0.0 && path.len() > 1 {
-        let f = Frame::along(t.long_axis);
-        let along = f.travel(path[0], path[1]);
-        if along.abs() > TOL {
-            let d = (t.lead * p.angle / 360.0).rem_euclid(t.lead);
-            path[0] = Point::from_zr(path[0].zr() + (path[0].zr() - path[1].zr()) * (d / along.abs()));
-        }
+    if path.len() > 1
+        && let Some(back) = crate::helix::start_back(path[0], path[1], p.angle, t.lead, t.long_axis)
+    {
+        path[0] = Point::from_zr(path[0].zr() + back);
     }
     path
 }

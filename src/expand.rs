@@ -259,18 +259,14 @@ impl<'p> Writer<'p> {
     fn shift(&self, t: usize, p: usize, pt: Point) -> Point {
         let th = &self.plan.threads[t];
         let pass = &th.passes[p];
-        if self.w.start_angle || pass.angle == 0.0 || th.lead <= 0.0 {
+        if self.w.start_angle {
             return pt;
         }
         let Some(first) = self.plan.moves.get(pass.moves.cut.start) else { return pt };
-        let f = Frame(th.long_axis);
-        let along = f.travel(first.from, first.to);
-        if along.abs() < EPS {
-            return pt;
+        match crate::helix::start_back(first.from, first.to, pass.angle, th.lead, th.long_axis) {
+            Some(back) => Point::from_zr(pt.zr() + back),
+            None => pt,
         }
-        let d = (th.lead * pass.angle / 360.0).rem_euclid(th.lead);
-        let back = (first.from.zr() - first.to.zr()) * (d / along.abs());
-        Point::from_zr(pt.zr() + back)
     }
 
     fn plain(&mut self, m: &Move, to: Point) {

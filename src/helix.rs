@@ -15,10 +15,11 @@ use crate::args;
 use crate::diagnostic::Diagnostics;
 use crate::geom::Frame;
 use crate::message as msg;
-use crate::motion::Move;
-use crate::num::{close, round_out, same_lead};
+use crate::motion::{Move, Point};
+use crate::num::{EPS, close, round_out, same_lead};
 use crate::span::Span;
-use crate::thread::{Pass, Thread};
+use crate::thread::{Axis, Pass, Thread};
+use glam::DVec2;
 
 /// The most helices one surface is sorted into; past it the passes drift
 /// and none is warned about (the sorting stays linear in the passes).
@@ -145,6 +146,23 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
 pub fn phase(angle: f64, start: f64, end: f64, shift: f64, lead: f64) -> f64 {
     let sense = if end < start { 1.0 } else { -1.0 };
     (angle / 360.0 + sense * (start - shift) / lead).rem_euclid(1.0)
+}
+
+/// How far back a cut at start angle `angle` (degrees) begins at angle 0
+/// on the same helix, as a shift of its points (true (Z, radius)): lead·θ/360°
+/// (within one lead) along the axis, back along its first synchronised move
+/// `from` → `to` (on a taper, along the cone). `None` when the angle is 0,
+/// the lead is not positive or that move does not run along `axis`.
+pub fn start_back(from: Point, to: Point, angle: f64, lead: f64, axis: Axis) -> Option<DVec2> {
+    if angle == 0.0 || lead <= 0.0 {
+        return None;
+    }
+    let along = Frame::along(axis).travel(from, to);
+    if along.abs() < EPS {
+        return None;
+    }
+    let d = (lead * angle / 360.0).rem_euclid(lead);
+    Some((from.zr() - to.zr()) * (d / along.abs()))
 }
 
 /// Whether two phases (turns) are one helix.
