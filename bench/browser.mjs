@@ -167,6 +167,26 @@ async function cursorTo(page, text, line, tag) {
   if (Number(at) !== line + 1) throw new Error(`${tag}: the cursor is on line ${at}, not ${line + 1}`);
 }
 
+/** A new page with `text` opened from a link, once planned (more than 100 threads, as both long programs have). */
+async function openPlanned(text, dialect) {
+  const page = await ctx.newPage();
+  await page.goto(url + fragment({ dialect, settings: {}, program: text }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
+  await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
+  return page;
+}
+
+/** Types and deletes a digit at the cursor `keys` times, 150 ms apart, then waits 1.5 s; returns when it began (page time). */
+async function typeDigits(page, keys) {
+  const t0 = await page.evaluate(() => performance.now());
+  for (let i = 0; i < keys; i++) {
+    await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)));
+    await page.waitForTimeout(150);
+  }
+  await page.waitForTimeout(1500);
+  return t0;
+}
+
 /**
  * The floor: the bare editor and the app, the same `text` at the same line,
  * typed into alternately, `rounds` rounds of `keys` keystrokes each (a digit
@@ -176,10 +196,7 @@ async function cursorTo(page, text, line, tag) {
  * p50/p95 of both and their ratio; long tasks in the app while typing.
  */
 async function versus({ text, dialect, line, rounds, keys, tag, what }) {
-  const app = await ctx.newPage();
-  await app.goto(url + fragment({ dialect, settings: {}, program: text }));
-  await app.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
-  await app.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
+  const app = await openPlanned(text, dialect);
   const pane = await app.evaluate(() => {
     const r = document.getElementById('code').getBoundingClientRect();
     return { w: Math.round(r.width), h: Math.round(r.height) };
@@ -198,12 +215,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
     for (const [page, into] of [[bare, floor], [app, screen]]) {
       await page.bringToFront();
       await page.waitForTimeout(600);
-      const t0 = await page.evaluate(() => performance.now());
-      for (let i = 0; i < keys; i++) {
-        await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)));
-        await page.waitForTimeout(150);
-      }
-      await page.waitForTimeout(1500);
+      const t0 = await typeDigits(page, keys);
       const m = await page.evaluate((t0) => ({ keys: self.__keys.filter((k) => k.t > t0), drawn: self.__drawn, long: self.__long.filter((e) => e.start > t0) }), t0);
       for (const k of m.keys) {
         if (page === bare) into.push(k.paint - k.t);
@@ -269,18 +281,10 @@ async function firstLoad(where, ready, tag, what) {
  * times, 150 ms apart (a quick typist), and prints what the browser measured.
  */
 async function typing({ text, dialect, line, keys, tag, what }) {
-  const page = await ctx.newPage();
-  await page.goto(url + fragment({ dialect, settings: {}, program: text }));
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 120_000 });
-  await page.waitForFunction(() => window.__screwcut.result && window.__screwcut.result.threads.length > 100, null, { timeout: 120_000 });
+  const page = await openPlanned(text, dialect);
   await cursorTo(page, text, line, tag);
   await page.waitForTimeout(1000);
-  const t0 = await page.evaluate(() => performance.now());
-  for (let i = 0; i < keys; i++) {
-    await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)));
-    await page.waitForTimeout(150);
-  }
-  await page.waitForTimeout(1500);
+  const t0 = await typeDigits(page, keys);
   const m = await page.evaluate((t0) => {
     const marks = performance.getEntriesByName('screwcut:frame', 'mark').filter((e) => e.startTime > t0 && e.detail && e.detail.input > t0);
     return {

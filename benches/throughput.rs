@@ -61,9 +61,7 @@ fn main() {
     // Profiling mode: the 50,000-line program's first-pass digit typed and deleted N times (incremental re-plans only).
     if let Some(i) = args.iter().position(|a| a == "--typed-profile") {
         let n: usize = args[i + 1].parse().expect("count");
-        let text = plain(50_000);
-        let at = text.match_indices('\n').nth(8).map_or(0, |(i, _)| i);
-        let edited = format!("{}1{}", &text[..at], &text[at..]);
+        let (text, edited) = typed_texts(50_000);
         let mut p = Planner::new(Settings::new(Dialect::Gsk980tdc));
         p.plan(&text);
         for k in 0..n {
@@ -169,15 +167,22 @@ fn plain(lines: usize) -> String {
     out.join("\n") + "\n"
 }
 
+/// The plain program of `lines` lines, and the same with the browser bench's
+/// digit typed at the end of line 9 (the first pass).
+fn typed_texts(lines: usize) -> (String, String) {
+    let text = plain(lines);
+    let at = text.match_indices('\n').nth(8).map_or(0, |(i, _)| i);
+    let edited = format!("{}1{}", &text[..at], &text[at..]);
+    (text, edited)
+}
+
 /// The keystroke the browser bench types (a digit at the end of line 9, the
 /// first pass) into its 5,000- and 50,000-line programs, re-planned natively
 /// by the incremental planner.
 fn typed() {
     let settings = Settings::new(Dialect::Gsk980tdc);
     for lines in [5_000, 50_000] {
-        let text = plain(lines);
-        let at = text.match_indices('\n').nth(8).map_or(0, |(i, _)| i);
-        let edited = format!("{}1{}", &text[..at], &text[at..]);
+        let (text, edited) = typed_texts(lines);
         let (full, _) = best_ms(5, || {
             let t = Instant::now();
             let plan = screwcut::plan(&edited, &settings);
