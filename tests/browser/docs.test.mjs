@@ -329,8 +329,16 @@ try {
     JSON.stringify({ enc: brotli.headers.get('content-encoding'), brotliBytes, brotliLength, gzipLength }),
   );
   const tag = zipped.headers.get('etag');
-  const again = await fetch(wasmUrl, { headers: { 'if-none-match': tag || '' } });
-  check('… with an ETag: asked again with it, 304 and no body', Boolean(tag) && again.status === 304, JSON.stringify({ tag, status: again.status }));
+  const tagged = await fetch(wasmUrl, { headers: { 'if-none-match': tag || '' } });
+  check('… with an ETag: asked again with it, 304 and no body', Boolean(tag) && tagged.status === 304, JSON.stringify({ tag, status: tagged.status }));
+  const date = zipped.headers.get('last-modified');
+  const again = await fetch(wasmUrl, { headers: { 'if-modified-since': date || '' } });
+  const againBytes = (await again.arrayBuffer()).byteLength;
+  check(
+    '… with its date (Last-Modified): asked again with it, 304 and no body',
+    Boolean(date) && again.status === 304 && againBytes === 0,
+    JSON.stringify({ date, status: again.status, againBytes }),
+  );
 
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shots, 'docs-page.png'), fullPage: true });

@@ -1,212 +1,226 @@
-//! The local static file server of `cargo xtask serve` and the browser
-//! tests: HTTP by `tiny_http`, GET and HEAD of the files under one folder
-//! (a path that would leave it is refused), each with its MIME type, not
+//! The local static file server of `cargo xtask serve`, `cargo xtask book`
+//! and the browser tests: tower-http's `ServeDir` over hyper (HTTP/1.1,
+//! every connection a task of its own, however many the browser opens at
+//! once and keeps alive). GET and HEAD of the files under one folder (a
+//! path that would leave it is a 404), each with its MIME type and not
 //! sniffed; the precompressed `file.br` or `file.gz` to a browser that
-//! accepts Brotli or gzip (Brotli first: smaller);
-//! cacheable by revalidation (an ETag of the file's size and time, 304 when
-//! the browser has it).
+//! accepts Brotli or gzip (Brotli first: smaller); cacheable by
+//! revalidation (`ETag` and `Last-Modified`, 304 when the browser has
+//! the file).
 
+use std::convert::Infallible;
 use std::path::{Path, PathBuf};
 
-use tiny_http::{Header, Method, Request, Response, Server};
+use http::header::HeaderValue;
+use http::{Request, Response};
+use tower::ServiceExt;
+use tower_http::services::ServeDir;
 
 use crate::Result;
 
+/// A listening socket on 127.0.0.1, not yet serving.
+pub struct Server {
+    listener: std::net::TcpListener,
+}
+
 /// A server on 127.0.0.1:`port` (0: any free port).
 pub fn bind(port: u16) -> Result<Server> {
-    Server::http(("127.0.0.1", port)).map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))
+    let listener = std::net::TcpListener::bind(("127.0.0.1", port))
+        .map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
+    Ok(Server { listener })
 }
 
 /// The port `server` listens on.
 pub fn port(server: &Server) -> Result<u16> {
-    server.server_addr().to_ip().map(|a| a.port()).ok_or_else(|| "the server has no IP address".to_string())
+    server.listener.local_addr().map(|a| a.port()).map_err(|e| format!("the server has no address: {e}"))
 }
 
-/// Serves the files under `dir` until the process ends, each request on a
-/// thread of its own (a slow reader of the wasm holds up no other).
+/// Serves the files under `dir` until the process ends (or says why it
+/// cannot).
 pub fn serve_forever(server: Server, dir: PathBuf) {
-    let dir = std::sync::Arc::new(dir);
-    for request in server.incoming_requests() {
-        let dir = std::sync::Arc::clone(&dir);
-        std::thread::spawn(move || respond(request, &dir));
+    if let Err(e) = run(server, dir) {
+        eprintln!("xtask: the file server stopped: {e}");
     }
 }
 
-/// Answers one request for a file under `dir`.
-fn respond(request: Request, dir: &Path) {
-    let head = *request.method() == Method::Head;
-    let file = match request.method() {
-        Method::Get | Method::Head => resolve(dir, request.url()),
-        _ => {
-            let _ = request.respond(Response::from_string("method not allowed\n").with_status_code(405));
-            return;
+/// The server's runtime: two worker threads, each connection a task.
+fn run(server: Server, dir: PathBuf) -> Result {
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_io()
+        .build()
+        .map_err(|e| format!("cannot start the server's runtime: {e}"))?;
+    runtime.block_on(async move {
+        server.listener.set_nonblocking(true).map_err(|e| e.to_string())?;
+        let listener = tokio::net::TcpListener::from_std(server.listener).map_err(|e| e.to_string())?;
+        let files = ServeDir::new(dir).precompressed_br().precompressed_gzip();
+        loop {
+            let stream = match listener.accept().await {
+                Ok((stream, _)) => stream,
+                Err(e) => {
+                    eprintln!("xtask: the file server could not accept a connection: {e}");
+                    continue;
+                }
+            };
+            let files = files.clone();
+            let service = hyper::service::service_fn(move |request| answer(files.clone(), request));
+            tokio::spawn(async move {
+                let io = hyper_util::rt::TokioIo::new(stream);
+                // A connection the browser drops mid-answer is not the server's error.
+                let _ = hyper::server::conn::http1::Builder::new().serve_connection(io, service).await;
+            });
         }
-    };
-    let header = |name: &'static str| {
-        request.headers().iter().find(|h| h.field.equiv(name)).map(|h| h.value.as_str().to_string())
-    };
-    let accepted = header("Accept-Encoding").unwrap_or_default();
-    let etag = file.as_ref().and_then(|f| etag(f));
-    if etag.is_some() && header("If-None-Match") == etag {
-        let mut response = Response::empty(304);
-        if let Some(h) = etag.as_ref().and_then(|e| Header::from_bytes("ETag", e.as_str()).ok()) {
-            response.add_header(h);
-        }
-        let _ = request.respond(response);
-        return;
-    }
-    let packed = file.as_ref().and_then(|f| {
-        [("br", ".br"), ("gzip", ".gz")].into_iter().filter(|(name, _)| accepts(&accepted, name)).find_map(
-            |(name, suffix)| {
-                let mut p = f.clone().into_os_string();
-                p.push(suffix);
-                std::fs::read(p).ok().map(|b| (name, b))
-            },
-        )
-    });
-    let (body, encoded) = match packed {
-        Some((name, b)) => (Some(b), Some(name)),
-        None => (file.as_ref().and_then(|f| std::fs::read(f).ok()), None),
-    };
-    let (status, mime, body) = match (&file, body) {
-        (Some(f), Some(body)) => (200, mime(f), body),
-        _ => (404, "text/plain", b"not found\n".to_vec()),
-    };
-    let len = body.len();
-    let mut response = Response::from_data(if head { Vec::new() } else { body }).with_status_code(status);
-    let mut headers = vec![
-        ("Content-Type", mime.to_string()),
-        ("Cache-Control", "no-cache".into()),
-        ("X-Content-Type-Options", "nosniff".into()),
-        ("Vary", "Accept-Encoding".into()),
-    ];
-    if let Some(name) = encoded {
-        headers.push(("Content-Encoding", name.into()));
-    }
-    if let Some(e) = etag.filter(|_| status == 200) {
-        headers.push(("ETag", e));
-    }
-    for (k, v) in headers {
-        if let Ok(h) = Header::from_bytes(k, v.as_str()) {
-            response.add_header(h);
-        }
-    }
-    if head && let Ok(h) = Header::from_bytes("Content-Length", len.to_string()) {
-        response.add_header(h);
-    }
-    let _ = request.respond(response);
-}
-
-/// Whether an `Accept-Encoding` value takes the coding `name` (listed, and
-/// not with `q=0`; RFC 9110 §12.5.3).
-fn accepts(value: &str, name: &str) -> bool {
-    value.split(',').any(|item| {
-        let mut parts = item.split(';').map(str::trim);
-        let coding = parts.next().unwrap_or("");
-        let refused = parts.any(|p| p.strip_prefix("q=").and_then(|q| q.parse::<f64>().ok()) == Some(0.0));
-        coding.eq_ignore_ascii_case(name) && !refused
     })
 }
 
-/// A file's ETag: its size and modification time.
-fn etag(file: &Path) -> Option<String> {
-    let m = std::fs::metadata(file).ok()?;
-    let t = m.modified().ok()?.duration_since(std::time::UNIX_EPOCH).ok()?.as_millis();
-    Some(format!("\"{}-{t}\"", m.len()))
+/// Answers one request from `files`, with the headers the site is served with.
+async fn answer(
+    files: ServeDir,
+    request: Request<hyper::body::Incoming>,
+) -> std::result::Result<Response<tower_http::services::fs::ServeFileSystemResponseBody>, Infallible> {
+    let mut path = request.uri().path().to_string();
+    if path.ends_with('/') {
+        path.push_str("index.html");
+    }
+    let mut response = files.oneshot(request).await?;
+    let ok = response.status().is_success();
+    let headers = response.headers_mut();
+    if ok && let Some(mime) = mime(Path::new(&path)) {
+        headers.insert(http::header::CONTENT_TYPE, HeaderValue::from_static(mime));
+    }
+    headers.insert(http::header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
+    headers.insert(http::header::X_CONTENT_TYPE_OPTIONS, HeaderValue::from_static("nosniff"));
+    if !headers.contains_key(http::header::VARY) {
+        headers.insert(http::header::VARY, HeaderValue::from_static("accept-encoding"));
+    }
+    Ok(response)
 }
 
-/// The file a request path names under `dir`, if it is inside it.
-pub fn resolve(dir: &Path, target: &str) -> Option<PathBuf> {
-    let path = target.split(['?', '#']).next().unwrap_or("/");
-    let decoded = percent_encoding::percent_decode_str(path).decode_utf8().ok()?;
-    let mut file = dir.to_path_buf();
-    for part in decoded.split('/').filter(|p| !p.is_empty()) {
-        if part == ".." || part == "." || part.contains('\\') {
-            return None;
-        }
-        file.push(part);
-    }
-    if decoded.ends_with('/') || file == dir {
-        file.push("index.html");
-    }
-    Some(file)
-}
-
-/// The MIME type of a file by its extension.
-pub fn mime(path: &Path) -> &'static str {
-    match path.extension().and_then(|e| e.to_str()).unwrap_or("") {
+/// The MIME type of the site's files by extension, with the charset of the
+/// text ones (a G-code file shown as text, not downloaded); `None` leaves
+/// `ServeDir`'s guess.
+pub fn mime(path: &Path) -> Option<&'static str> {
+    Some(match path.extension().and_then(|e| e.to_str()).unwrap_or("") {
         "html" => "text/html; charset=utf-8",
         "js" | "mjs" => "text/javascript; charset=utf-8",
         "css" => "text/css; charset=utf-8",
         "wasm" => "application/wasm",
         "json" | "map" => "application/json; charset=utf-8",
         "svg" => "image/svg+xml",
-        "png" => "image/png",
-        "ico" => "image/x-icon",
         "nc" | "ngc" | "txt" | "md" => "text/plain; charset=utf-8",
-        _ => "application/octet-stream",
-    }
+        _ => return None,
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::io::{Read, Write};
 
-    #[test]
-    fn paths_resolve_inside_the_site_only() {
-        let d = Path::new("/site");
-        assert_eq!(resolve(d, "/"), Some(PathBuf::from("/site/index.html")));
-        assert_eq!(resolve(d, "/?x=1#frag"), Some(PathBuf::from("/site/index.html")));
-        assert_eq!(resolve(d, "/examples/o1006.nc"), Some(PathBuf::from("/site/examples/o1006.nc")));
-        assert_eq!(resolve(d, "/a%20b.js"), Some(PathBuf::from("/site/a b.js")));
-        assert_eq!(resolve(d, "/../etc/passwd"), None);
-        assert_eq!(resolve(d, "/%2e%2e/etc/passwd"), None);
-        assert_eq!(resolve(d, "/%ff"), None, "not UTF-8");
-    }
-
-    #[test]
-    fn accept_encoding_is_read_by_coding_and_weight() {
-        assert!(accepts("gzip, deflate, br, zstd", "br"));
-        assert!(accepts("gzip, deflate, br, zstd", "gzip"));
-        assert!(accepts("GZIP;q=0.5", "gzip"));
-        assert!(!accepts("br;q=0, gzip", "br"), "q=0 refuses it");
-        assert!(!accepts("brotli, xgzip", "br") && !accepts("brotli, xgzip", "gzip"), "whole codings only");
-        assert!(!accepts("", "gzip") && !accepts("identity", "gzip"));
-    }
-
-    #[test]
-    fn mime_types() {
-        assert_eq!(mime(Path::new("a/screwcut_bg.wasm")), "application/wasm");
-        assert_eq!(mime(Path::new("app.js")), "text/javascript; charset=utf-8");
-        assert_eq!(mime(Path::new("index.html")), "text/html; charset=utf-8");
-        assert_eq!(mime(Path::new("examples/index.json")), "application/json; charset=utf-8");
-        assert_eq!(mime(Path::new("LICENSE")), "application/octet-stream");
-        assert_eq!(mime(Path::new("element/README.md")), "text/plain; charset=utf-8");
-    }
-
-    /// A real request: a file, a missing one, and a way out of the folder.
-    #[test]
-    fn it_serves_files_and_nothing_outside() {
-        let dir = std::env::temp_dir().join(format!("screwcut-server-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+    /// A site of three files in a folder of its own, served on a free port.
+    fn site(name: &str) -> (PathBuf, u16) {
+        let dir = std::env::temp_dir().join(format!("screwcut-server-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("examples")).unwrap();
         std::fs::write(dir.join("index.html"), "<!doctype html>hi").unwrap();
+        std::fs::write(dir.join("examples").join("o1.nc"), "G00 X58 Z70\n").unwrap();
+        std::fs::write(dir.join("app.js"), "plain").unwrap();
+        std::fs::write(dir.join("app.js.gz"), "gzip!").unwrap();
+        std::fs::write(dir.join("app.js.br"), "br!").unwrap();
         let server = bind(0).unwrap();
         let port = port(&server).unwrap();
         let d = dir.clone();
         std::thread::spawn(move || serve_forever(server, d));
-        let get = |path: &str| {
-            use std::io::{Read, Write};
-            let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
-            write!(s, "GET {path} HTTP/1.0\r\nHost: x\r\n\r\n").unwrap();
-            let mut out = String::new();
-            s.read_to_string(&mut out).unwrap();
-            out
-        };
-        let ok = get("/");
-        assert!(ok.starts_with("HTTP/1.0 200") || ok.starts_with("HTTP/1.1 200"), "{ok}");
-        assert!(ok.contains("text/html") && ok.ends_with("<!doctype html>hi"), "{ok}");
-        assert!(get("/nothing.js").contains(" 404 "));
-        assert!(get("/../../etc/passwd").contains(" 404 "));
+        (dir, port)
+    }
+
+    /// One request on a connection of its own: the status line, the
+    /// headers (names in lower case) and the body.
+    fn get(port: u16, path: &str, headers: &str) -> (String, String, String) {
+        let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+        write!(s, "GET {path} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n{headers}\r\n").unwrap();
+        let mut out = String::new();
+        s.read_to_string(&mut out).unwrap();
+        let (head, body) = out.split_once("\r\n\r\n").unwrap();
+        let (status, fields) = head.split_once("\r\n").unwrap_or((head, ""));
+        let fields = fields.lines().map(|l| match l.split_once(": ") {
+            Some((name, value)) => format!("{}: {value}\n", name.to_lowercase()),
+            None => format!("{l}\n"),
+        });
+        (status.to_string(), fields.collect(), body.to_string())
+    }
+
+    #[test]
+    fn it_serves_files_and_nothing_outside() {
+        let (dir, port) = site("files");
+        let (status, headers, body) = get(port, "/", "");
+        assert!(status.contains(" 200 "), "{status}");
+        assert!(headers.contains("content-type: text/html; charset=utf-8") && body == "<!doctype html>hi", "{headers}");
+        assert!(headers.contains("cache-control: no-cache") && headers.contains("x-content-type-options: nosniff"));
+        let (_, headers, body) = get(port, "/examples/o1.nc", "");
+        assert!(headers.contains("content-type: text/plain; charset=utf-8") && body == "G00 X58 Z70\n", "{headers}");
+        assert!(get(port, "/nothing.js", "").0.contains(" 404 "));
+        assert!(get(port, "/../../etc/passwd", "").0.contains(" 404 "));
+        assert!(get(port, "/%2e%2e/%2e%2e/etc/passwd", "").0.contains(" 404 "));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn brotli_first_then_gzip_then_the_file() {
+        let (dir, port) = site("codings");
+        let (_, headers, body) = get(port, "/app.js", "Accept-Encoding: gzip, deflate, br, zstd\r\n");
+        assert!(headers.contains("content-encoding: br") && body == "br!", "{headers}");
+        assert!(headers.contains("vary: accept-encoding"), "{headers}");
+        let (_, headers, body) = get(port, "/app.js", "Accept-Encoding: br;q=0, gzip\r\n");
+        assert!(headers.contains("content-encoding: gzip") && body == "gzip!", "{headers}");
+        let (_, headers, body) = get(port, "/app.js", "");
+        assert!(!headers.contains("content-encoding") && body == "plain", "{headers}");
+        assert!(headers.contains("content-type: text/javascript; charset=utf-8"), "{headers}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn asked_again_with_its_tag_or_date_a_file_is_not_sent() {
+        let (dir, port) = site("revalidate");
+        let (_, headers, _) = get(port, "/app.js", "");
+        let date = headers.lines().find_map(|l| l.strip_prefix("last-modified: ")).unwrap().to_string();
+        let (status, _, body) = get(port, "/app.js", &format!("If-Modified-Since: {date}\r\n"));
+        assert!(status.contains(" 304 ") && body.is_empty(), "{status}");
+        let tag = headers.lines().find_map(|l| l.strip_prefix("etag: ")).unwrap().to_string();
+        let (status, _, body) = get(port, "/app.js", &format!("If-None-Match: {tag}\r\n"));
+        assert!(status.contains(" 304 ") && body.is_empty(), "{status}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// A browser opens several connections at once and keeps them open:
+    /// every one is answered (a pool of four threads, one per kept
+    /// connection, left the fifth and later unanswered until one closed).
+    #[test]
+    fn many_connections_opened_at_once_are_all_answered() {
+        let (dir, port) = site("many");
+        let mut kept = Vec::new();
+        for _ in 0..20 {
+            let barrier = std::sync::Arc::new(std::sync::Barrier::new(8));
+            let opened: Vec<_> = (0..8)
+                .map(|_| {
+                    let barrier = barrier.clone();
+                    std::thread::spawn(move || {
+                        barrier.wait();
+                        let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+                        s.set_read_timeout(Some(std::time::Duration::from_secs(5))).unwrap();
+                        write!(s, "GET / HTTP/1.1\r\nHost: x\r\n\r\n").unwrap();
+                        let mut buf = [0u8; 12];
+                        let answered = s.read_exact(&mut buf).is_ok() && buf.starts_with(b"HTTP/1.1 200");
+                        (answered, s)
+                    })
+                })
+                .collect();
+            for o in opened {
+                let (answered, s) = o.join().unwrap();
+                assert!(answered, "a kept-alive connection got no answer within 5 s");
+                kept.push(s);
+            }
+        }
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
