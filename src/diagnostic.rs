@@ -231,7 +231,7 @@ impl Diagnostics {
                 }
             })
             .collect();
-        out.sort_by_key(|d| (d.span.start, std::cmp::Reverse(d.severity)));
+        crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
         out
     }
 }

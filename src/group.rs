@@ -392,7 +392,7 @@ fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
         }
     }
     let mut lines = c.lines.clone();
-    lines.sort_unstable();
+    crate::order::sort(&mut lines);
     lines.dedup();
     Pass {
         start,
@@ -500,7 +500,7 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
     let n = helices.len();
     let mut by_turn: Vec<usize> = (0..n).collect();
     let complete = of.len() == cuts.len();
-    by_turn.sort_unstable_by(|&a, &b| helices[a].0.total_cmp(&helices[b].0));
+    crate::order::sort_by(&mut by_turn, |&a, &b| helices[a].0.total_cmp(&helices[b].0));
     let even = complete
         && n > 1
         && by_turn.iter().enumerate().all(|(k, &i)| helix::same_phase(helices[i].0, k as f64 / n as f64))
@@ -508,7 +508,7 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
     if even {
         // Numbered by start angle, then by axial place round the turn.
         let mut order: Vec<usize> = (0..n).collect();
-        order.sort_unstable_by(|&a, &b| {
+        crate::order::sort_by(&mut order, |&a, &b| {
             helices[a].2.total_cmp(&helices[b].2).then(helices[a].0.total_cmp(&helices[b].0))
         });
         let mut rank = vec![0; n];
@@ -519,7 +519,7 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
     }
     // The distinct start angles, sorted (in n log n: a thread may have tens of thousands of passes).
     let mut angles: Vec<f64> = cuts.iter().map(|c| c.angle).collect();
-    angles.sort_unstable_by(f64::total_cmp);
+    crate::order::sort_by(&mut angles, f64::total_cmp);
     angles.dedup_by(|a, kept| (*a - *kept).abs() < 1e-6);
     let last = angles.len().saturating_sub(1);
     let of = cuts.iter().map(|c| angles.partition_point(|a| *a < c.angle - 1e-6).min(last)).collect();

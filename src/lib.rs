@@ -48,6 +48,7 @@ pub mod lexer;
 pub mod message;
 pub mod motion;
 pub mod num;
+pub mod order;
 pub mod plan;
 pub mod planner;
 pub mod settings;

@@ -151,7 +151,7 @@ fn depths(ya: f64, y0: f64, ymin: f64, step: f64) -> Vec<f64> {
     }
     out.push(y0);
     out.push(ymin);
-    out.sort_by(|a, b| b.total_cmp(a));
+    crate::order::sort_by(&mut out, |a, b| b.total_cmp(a));
     out.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
     out.retain(|y| *y < ya - 1e-9);
     out

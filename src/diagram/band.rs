@@ -121,7 +121,7 @@ impl FeedIndex {
             .filter(|(_, m)| m.kind == MoveKind::Feed && m.from.r().is_finite())
             .map(|(k, m)| (m.from.r(), k))
             .collect();
-        by_radius.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        crate::order::sort_by(&mut by_radius, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         FeedIndex { by_radius, found: RefCell::default() }
     }
 }

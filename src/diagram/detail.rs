@@ -58,7 +58,7 @@ pub fn thin(passes: &[Pass], idx: &[usize]) -> (Vec<usize>, usize) {
     keep.extend(rough.last());
     keep.extend(finish.first());
     keep.extend(finish.last());
-    keep.sort_unstable();
+    crate::order::sort(&mut keep);
     keep.dedup();
     (keep, every)
 }

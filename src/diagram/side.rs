@@ -77,7 +77,7 @@ pub fn pass_paths(plan: &Plan) -> Vec<PassPath> {
             }
         }
     }
-    found.sort_unstable_by_key(|p| p.cut.start); // each pass its own motions
+    crate::order::sort_by_key(&mut found, |p| p.cut.start); // each pass its own motions
     found
 }
 

@@ -58,7 +58,7 @@ pub fn starts_of(plan: &Plan, ti: usize) -> Vec<Start> {
         let offset = if t.lead > 0.0 { (t.lead * angle / 360.0).rem_euclid(t.lead) } else { 0.0 };
         out.push(Start { number: p.start, angle, offset, pass: i });
     }
-    out.sort_unstable_by_key(|s| s.number); // numbers are unique
+    crate::order::sort_by_key(&mut out, |s| s.number); // numbers are unique
     out
 }
 

@@ -91,7 +91,7 @@ fn near_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
     let g = 0.25 * f.width().max(f.height());
     let near = |p: Pt| p[0] >= f.x0 - g && p[0] <= f.x1 + g && p[1] >= f.y0 - g && p[1] <= f.y1 + g;
     let mut set: Vec<Label> = scene_labels(scene, o, width).into_iter().filter(|l| near(l.anchor())).collect();
-    set.sort_by_key(|l| l.prio);
+    crate::order::sort_by_key(&mut set, |l| l.prio);
     set
 }
 

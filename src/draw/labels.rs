@@ -150,7 +150,7 @@ pub(super) fn scene_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
         .filter(|i| matches!(i.shape, Shape::Dim { .. } | Shape::Text { .. }))
         .filter_map(|i| i.thread)
         .collect();
-    threads.sort_unstable();
+    crate::order::sort(&mut threads);
     threads.dedup();
     let annotated = threads.len();
     let chosen = u32::try_from(o.thread).unwrap_or(u32::MAX);

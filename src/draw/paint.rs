@@ -61,7 +61,7 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Pl
         // What the pointer is over comes to the front: its lines in their own
         // pens, a filled area outlined (a second fill would change its colour).
         let mut front: Vec<usize> = set.iter().copied().collect();
-        front.sort_unstable();
+        crate::order::sort(&mut front);
         for i in front {
             let item = &scene.items[i];
             match &item.shape {
@@ -110,7 +110,7 @@ impl Painter<'_> {
         };
         let mut dots = Vec::new();
         let mut ordered: Vec<usize> = set.iter().copied().collect();
-        ordered.sort_unstable();
+        crate::order::sort(&mut ordered);
         for i in ordered {
             let item = &scene.items[i];
             let width = pen_of(item).pen.width + grow;

@@ -164,7 +164,7 @@ pub(super) fn place(labels: &mut [Label], xf: &Transform, view: &Room, drawing: 
         stack_texts(labels, xf, view);
     }
     let mut order: Vec<usize> = (0..labels.len()).collect();
-    order.sort_by_key(|&k| labels[k].prio);
+    crate::order::sort_by_key(&mut order, |&k| labels[k].prio);
     let mut taken = Taken::default();
     for k in order {
         let lab = &labels[k];
@@ -251,7 +251,7 @@ fn stack_texts(labels: &mut [Label], xf: &Transform, view: &Room) {
         }
         // Those beside the view are left out; the rest in order down the view.
         let mut g: Vec<(usize, f64)> = group.into_iter().filter(|&(_, y)| y >= 0.0 && y <= view.h).collect();
-        g.sort_by(|p, q| p.1.total_cmp(&q.1).then(labels[p.0].item.cmp(&labels[q.0].item)));
+        crate::order::sort_by(&mut g, |p, q| p.1.total_cmp(&q.1).then(labels[p.0].item.cmp(&labels[q.0].item)));
         let s = LINE + 1.0;
         let (top, bottom) = (EDGE + LINE / 2.0, view.h - EDGE - LINE / 2.0);
         let room = ((bottom - top) / s).floor().max(-1.0) as i64 + 1;

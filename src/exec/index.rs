@@ -49,7 +49,7 @@ impl Index {
     pub fn labels(&self) -> Labels {
         let mut owords: Vec<(Box<str>, Vec<OKw>)> =
             self.owords.iter().map(|(k, v)| (k.clone(), v.iter().map(|(kw, _)| *kw).collect())).collect();
-        owords.sort_by(|a, b| a.0.cmp(&b.0));
+        crate::order::sort_by(&mut owords, |a, b| a.0.cmp(&b.0));
         (
             self.programs.iter().map(|p| p.0).collect(),
             self.sequences.iter().map(|p| p.0).collect(),

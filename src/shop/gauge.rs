@@ -115,7 +115,7 @@ fn envelope(t: &Thread, idx: &[usize], tool: Tool, pitch: f64, z: f64, dx: f64) 
     // edge to the highest right edge of the tips below h: prefix extremes of
     // u + y·tan (left) and u − y·tan (right), each edge moving by h·tan.
     tips.retain(|t| t.0 <= top);
-    tips.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    crate::order::sort_by(&mut tips, |a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
     let (mut left, mut right) = (Vec::with_capacity(tips.len()), Vec::with_capacity(tips.len()));
     let (mut l, mut r) = (f64::INFINITY, f64::NEG_INFINITY);
     for &(y, u) in &tips {

@@ -11,7 +11,7 @@ pub fn utf16_offsets(text: &str, bytes: &[u32]) -> Vec<u32> {
         return bytes.iter().map(|&b| b.min(text.len() as u32)).collect();
     }
     let mut order: Vec<usize> = (0..bytes.len()).collect();
-    order.sort_unstable_by_key(|&i| (bytes[i], i));
+    crate::order::sort_by_key(&mut order, |&i| (bytes[i], i));
     let mut out = vec![0u32; bytes.len()];
     let mut chars = text.char_indices().peekable();
     let mut units = 0u32;

@@ -220,7 +220,7 @@ fn mark_of(scene: &Scene, thread: i32, pass: i32, lines: &[u32], light: bool) ->
         draw::pick::items_of_pass(scene, thread as u32, pass as u32)
     } else {
         let mut v: Vec<usize> = lines.iter().take(64).flat_map(|&l| draw::pick::items_of_line(scene, l)).collect();
-        v.sort_unstable();
+        crate::order::sort(&mut v);
         v.dedup();
         v
     };
