@@ -201,6 +201,21 @@ fn typed() {
              (resumed at line {resumed}, {stop}); a full plan {full:.2} ms"
         );
         println!("FIG typed{}k_ms {ms:.3}", lines / 1000);
+        // The side section after that keystroke, from the app's kept pieces.
+        let plans = [screwcut::plan(&text, &settings), screwcut::plan(&edited, &settings)];
+        let keys = plans.each_ref().map(screwcut::wasm::keys::PlanKeys::of);
+        let mut memo = screwcut::wasm::memo::SideMemo::new();
+        memo.side(&plans[0], &keys[0].threads);
+        let mut typed = 0;
+        let (side, items) = best_ms(10, || {
+            typed += 1;
+            let k = typed % 2;
+            let t = Instant::now();
+            let scene = memo.side(&plans[k], &keys[k].threads);
+            (t.elapsed().as_secs_f64() * 1e3, scene.items.len())
+        });
+        println!("  … its side section from the kept pieces: best of 10 {side:.2} ms ({items} items)");
+        println!("FIG typed{}k_side_ms {side:.3}", lines / 1000);
     }
 }
 

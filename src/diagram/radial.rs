@@ -76,10 +76,21 @@ impl Break {
     }
 }
 
+/// The lowest and highest radius of `items`, the axis and the diameter
+/// dimensions left out (what [`breaks`] weighs).
+pub fn extent(items: &[Item]) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for item in items.iter().filter(|i| !matches!(i.style, Style::Axis | Style::Diameter)) {
+        item.each_point(|p| (lo, hi) = (lo.min(p[1]), hi.max(p[1])));
+    }
+    (lo, hi)
+}
+
 /// The breaks the side section of `plan` takes: one outward for its
 /// external threads along Z, one inward for its internal ones, each only
-/// where something lies far enough beyond it.
-pub fn breaks(plan: &Plan, scene: &Scene) -> Vec<Break> {
+/// where something lies far enough beyond it — its items' radii reach from
+/// `lo` to `hi` ([`extent`]).
+pub fn breaks(plan: &Plan, (lo, hi): (f64, f64)) -> Vec<Break> {
     let mut out = Vec::new();
     for internal in [false, true] {
         let bands: Vec<(Band, f64)> = plan
@@ -101,10 +112,7 @@ pub fn breaks(plan: &Plan, scene: &Scene) -> Vec<Break> {
             bands.iter().map(|(b, _)| crest(b)).fold(f64::NEG_INFINITY, f64::max) + KEEP * h
         };
         let unit = UNIT * h;
-        let mut far: f64 = 0.0;
-        for item in scene.items.iter().filter(|i| !matches!(i.style, Style::Axis | Style::Diameter)) {
-            item.each_point(|p| far = far.max(if internal { at - p[1] } else { p[1] - at }));
-        }
+        let far = if internal { at - lo } else { hi - at }.max(0.0);
         if far > WORTH * unit && at.is_finite() && (!internal || at > 0.0) {
             out.push(Break { at, unit, out: !internal });
         }
@@ -116,14 +124,27 @@ pub fn breaks(plan: &Plan, scene: &Scene) -> Vec<Break> {
 /// radii through each break, the bounds and focus too, and a break line
 /// with its note across the focus.
 pub fn apply(scene: &mut Scene, plan: &Plan) {
-    let list = breaks(plan, scene);
+    let list = breaks(plan, extent(&scene.items));
     if list.is_empty() {
         return;
     }
-    for b in &list {
-        for item in &mut scene.items {
-            map_shape(&mut item.shape, b);
-        }
+    for item in &mut scene.items {
+        map_item(&list, item);
+    }
+    finish(&list, scene);
+}
+
+/// `item` drawn through each break of `list` in turn.
+pub fn map_item(list: &[Break], item: &mut Item) {
+    for b in list {
+        map_shape(&mut item.shape, b);
+    }
+}
+
+/// The rest of [`apply`] once the items are mapped: the bounds and focus
+/// through each break of `list`, then each break's line and note.
+pub fn finish(list: &[Break], scene: &mut Scene) {
+    for b in list {
         let map_rect = |r: &mut Rect| {
             if !r.is_empty() {
                 let (y0, y1) = (b.map(r.y0), b.map(r.y1));
@@ -133,7 +154,7 @@ pub fn apply(scene: &mut Scene, plan: &Plan) {
         map_rect(&mut scene.bounds);
         map_rect(&mut scene.focus);
     }
-    for b in &list {
+    for b in list {
         mark(scene, b);
     }
 }

@@ -12,6 +12,7 @@ use crate::plan::Plan;
 
 use super::keys::{KeyHasher, combine, hash_move, packed_key};
 use super::pack::pack;
+use crate::diagram::radial::{self, Break};
 use crate::diagram::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
 use crate::diagram::side::{
     Band, Layout, axis, capped_note, detail_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item,
@@ -33,6 +34,10 @@ struct Chunk {
     focus: Rect,
     /// Points of the passes' rapids (they may join the focus).
     rapids: Vec<Pt>,
+    /// The lowest and highest radius of the items ([`radial::extent`]).
+    extent: (f64, f64),
+    /// The items drawn through the radial breaks they were last drawn through.
+    mapped: Option<(Vec<Break>, Vec<Item>)>,
 }
 
 impl Chunk {
@@ -49,7 +54,21 @@ impl Chunk {
         for item in s.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
             item.each_point(|p| rapids.push(p));
         }
-        Chunk { items: s.items, bounds: s.bounds, focus: s.focus, rapids }
+        let extent = radial::extent(&s.items);
+        Chunk { items: s.items, bounds: s.bounds, focus: s.focus, rapids, extent, mapped: None }
+    }
+
+    /// The items drawn through the breaks `list`: mapped once per list, then kept.
+    fn drawn(&mut self, list: &[Break]) -> &[Item] {
+        if list.is_empty() {
+            return &self.items;
+        }
+        if self.mapped.as_ref().is_none_or(|(l, _)| l.as_slice() != list) {
+            let mut items = self.items.clone();
+            items.iter_mut().for_each(|i| radial::map_item(list, i));
+            self.mapped = Some((list.to_vec(), items));
+        }
+        self.mapped.as_ref().map_or(&[], |(_, items)| items.as_slice())
     }
 }
 
@@ -144,10 +163,30 @@ impl SideMemo {
     /// from the last call where their keys match.
     pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Scene {
         let b = self.build(plan, thread_keys);
-        let pieces: Vec<&Chunk> = b.order.iter().map(|k| &self.chunks[k]).collect();
-        let mut scene = join(b.head, &pieces);
-        crate::diagram::section::apply(&mut scene, plan);
-        crate::diagram::radial::apply(&mut scene, plan);
+        // As `side(plan)`: the pieces joined after the axis, the part's section
+        // between them, then every item through the radial breaks.
+        let section = crate::diagram::section::pieces(plan);
+        let mut scene = b.head;
+        section.iter().for_each(|it| it.each_point(|p| scene.bounds.add(p)));
+        let mut extent = radial::extent(&scene.items);
+        for e in b.order.iter().map(|k| self.chunks[k].extent).chain([radial::extent(&section)]) {
+            extent = (extent.0.min(e.0), extent.1.max(e.1));
+        }
+        let list = radial::breaks(plan, extent);
+        let mut items = std::mem::take(&mut scene.items);
+        items.extend(section);
+        items.iter_mut().for_each(|i| radial::map_item(&list, i));
+        let total = items.len() + b.order.iter().map(|k| self.chunks[k].items.len()).sum::<usize>();
+        items.reserve(total - items.len());
+        for k in &b.order {
+            if let Some(c) = self.chunks.get_mut(k) {
+                items.extend(c.drawn(&list).iter().cloned());
+            }
+        }
+        scene.items = items;
+        if !list.is_empty() {
+            radial::finish(&list, &mut scene);
+        }
         scene.finish();
         scene
     }
@@ -273,16 +312,6 @@ fn head(pieces: &[&Chunk]) -> Scene {
     head
 }
 
-/// The whole scene: the head (the axis), then the pieces.
-fn join(head: Scene, pieces: &[&Chunk]) -> Scene {
-    let mut out = head;
-    out.items.reserve(pieces.iter().map(|c| c.items.len()).sum());
-    for c in pieces {
-        out.items.extend(c.items.iter().cloned());
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -339,6 +368,10 @@ mod tests {
             base[..base.len() / 3].to_string(),
             format!("G00 X90 Z90\n{base}"),
             base.replace("G32 Z13 F2", "G32 Z13 F2.5"),
+            // A thread of a larger crest after the others: the radial break moves
+            // while their pieces are reused (drawn again through the new break).
+            base.replacen("M30\n", "G00 X48 Z70\nG01 X38 F0.2\nZ20\nX43\nG00 Z70\nX37.1\nG32 Z13 F2\nG00 X48\nZ70\nX36.5\nG32 Z13 F2\nG00 X48\nZ70\nM30\n", 1),
+            base.clone(),
             String::new(),
             base.clone(),
             include_str!("../../examples/g78-flank-alternating.nc").to_string(),
