@@ -189,7 +189,7 @@ fn every_view_has_every_label_inside_and_none_overlapping() {
 /// A scene of one cut, a long note at its end and the lead at its start.
 fn small_scene(note: &str) -> Scene {
     let mut scene = Scene::new(ViewKind::Side);
-    let line = Shape::Polyline { points: vec![[0.0, 0.0], [10.0, 5.0]] };
+    let line = Shape::Polyline { points: vec![[0.0, 0.0], [10.0, 5.0]].into() };
     scene.push(Item::new(line, Style::Cut), true);
     let text = Shape::Text { at: [10.0, 5.0], label: Label::new("", note), anchor: Anchor::Start, dx: 6.0, dy: 0.0 };
     scene.push(Item::new(text, Style::Note), true);

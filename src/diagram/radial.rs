@@ -161,8 +161,8 @@ pub fn finish(list: &[Break], scene: &mut Scene) {
 
 fn map_shape(shape: &mut Shape, b: &Break) {
     match shape {
-        Shape::Polyline { points } => *points = b.path(points, false),
-        Shape::Polygon { points } => *points = b.path(points, true),
+        Shape::Polyline { points } => *points = b.path(points, false).into(),
+        Shape::Polygon { points } => *points = b.path(points, true).into(),
         Shape::Circle { center, .. } => *center = b.point(*center),
         Shape::Arrow { from, to } => (*from, *to) = (b.point(*from), b.point(*to)),
         Shape::Dim { a, b: q, .. } => (*a, *q) = (b.point(*a), b.point(*q)),
@@ -183,7 +183,7 @@ fn mark(scene: &mut Scene, b: &Break) {
     let (w, y) = ((x1 - x0).max(1e-6), b.at + if b.out { 0.8 } else { -0.8 } * reach);
     let (m, s, a) = ((x0 + x1) / 2.0, 0.008 * w, 0.15 * b.unit);
     let zig = vec![[x0, y], [m - s, y], [m - s / 2.0, y + a], [m + s / 2.0, y - a], [m + s, y], [x1, y]];
-    scene.push(Item::new(Shape::Polyline { points: zig }, Style::Break), false);
+    scene.push(Item::new(Shape::Polyline { points: zig.into() }, Style::Break), false);
     // Clear of the line: the note's box (15 px high) sits 4 px above it (below, inward).
     let dy = if b.out { 12.0 } else { -12.0 };
     let note = Shape::Text { at: [x0, y], label: Label::new("radial_break", ""), anchor: Anchor::Start, dx: 4.0, dy };

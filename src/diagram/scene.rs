@@ -4,6 +4,8 @@
 //! screen and styles to pens; sizes given in pixels (dimension offsets, text
 //! offsets, arrow heads, markers) stay constant while the view zooms.
 
+use std::sync::Arc;
+
 use serde::{Deserialize, Serialize};
 
 use crate::thread::Role;
@@ -144,13 +146,13 @@ pub enum Glyph {
 pub enum Shape {
     /// An open path.
     Polyline {
-        /// Vertices.
-        points: Vec<Pt>,
+        /// Vertices (shared: a scene built again from kept pieces copies no points).
+        points: Arc<[Pt]>,
     },
     /// A closed, filled path.
     Polygon {
-        /// Vertices (the last joins the first).
-        points: Vec<Pt>,
+        /// Vertices (the last joins the first; shared).
+        points: Arc<[Pt]>,
     },
     /// A circle of world radius.
     Circle {
@@ -347,8 +349,8 @@ pub struct Item {
     /// Pen.
     pub style: Style,
     /// 1-based source lines this item draws (for editor highlighting).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub lines: Vec<u32>,
+    #[serde(skip_serializing_if = "<[u32]>::is_empty")]
+    pub lines: Arc<[u32]>,
     /// Index of the thread in the plan.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub thread: Option<u32>,
@@ -363,7 +365,7 @@ pub struct Item {
 impl Item {
     /// An item with no source attached.
     pub fn new(shape: Shape, style: Style) -> Item {
-        Item { shape, style, lines: Vec::new(), thread: None, pass: None, role: None }
+        Item { shape, style, lines: Arc::from([]), thread: None, pass: None, role: None }
     }
 
     /// Attaches source lines.

@@ -25,7 +25,7 @@ pub fn pieces(plan: &Plan) -> Vec<Item> {
         if let Some(poly) = polygon(chain) {
             total += poly.len();
             if total <= MAX_POINTS {
-                out.push(Item::new(Shape::Polygon { points: poly }, Style::Material));
+                out.push(Item::new(Shape::Polygon { points: poly.into() }, Style::Material));
             }
         }
         chain.clear();

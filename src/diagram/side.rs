@@ -25,7 +25,7 @@ pub fn world(p: Point) -> Pt {
 }
 
 fn line(a: Pt, b: Pt) -> Shape {
-    Shape::Polyline { points: vec![a, b] }
+    Shape::Polyline { points: vec![a, b].into() }
 }
 
 pub use crate::motion::arc_points;
@@ -186,10 +186,10 @@ pub fn motion_item(m: &Move, has_threads: bool, roughing: bool) -> (Item, bool) 
         MoveKind::Rapid => (line(world(m.from), world(m.to)), Style::OtherRapid, false),
         MoveKind::Feed => (line(world(m.from), world(m.to)), Style::Outline, !has_threads),
         MoveKind::Rough if m.arc.is_some() => {
-            (Shape::Polyline { points: arc_points(m) }, Style::Roughing, !has_threads)
+            (Shape::Polyline { points: arc_points(m).into() }, Style::Roughing, !has_threads)
         }
         MoveKind::Rough => (line(world(m.from), world(m.to)), Style::Roughing, !has_threads),
-        MoveKind::Arc => (Shape::Polyline { points: arc_points(m) }, Style::Outline, !has_threads),
+        MoveKind::Arc => (Shape::Polyline { points: arc_points(m).into() }, Style::Outline, !has_threads),
         MoveKind::Thread | MoveKind::ScrewIn => (line(world(m.from), world(m.to)), Style::Cut, true),
         MoveKind::Runout => (line(world(m.from), world(m.to)), Style::Runout, true),
     };
@@ -217,7 +217,7 @@ pub fn capped_note(plan: &Plan, drawn: usize) -> Option<Item> {
 /// The item of a pass drawn from its own points.
 pub fn unmatched_item(plan: &Plan, ti: usize, pi: usize) -> Item {
     let p = &plan.threads[ti].passes[pi];
-    Item::new(Shape::Polyline { points: pass_points(p) }, Style::Cut)
+    Item::new(Shape::Polyline { points: pass_points(p).into() }, Style::Cut)
         .lines(p.drawn_lines())
         .of(ti, Some(pi))
         .role(p.role)
@@ -329,7 +329,7 @@ pub fn pass_items(plan: &Plan, p: &PassPath, out: &mut Scene) {
             _ => Style::Cut,
         };
         let shape = if m.kind == MoveKind::Arc {
-            Shape::Polyline { points: arc_points(m) }
+            Shape::Polyline { points: arc_points(m).into() }
         } else {
             line(world(m.from), world(m.to))
         };
@@ -397,7 +397,7 @@ pub fn thread_items(
         band.pt(hi, band.root(hi)),
         band.pt(lo, band.root(lo)),
     ];
-    back.push((own(Shape::Polygon { points: zone }, Style::ThreadZone), true));
+    back.push((own(Shape::Polygon { points: zone.into() }, Style::ThreadZone), true));
     if t.crest_source != CrestSource::Outline {
         back.push((own(line(band.pt(lo, band.crest(lo)), band.pt(hi, band.crest(hi))), Style::Crest), true));
     }
@@ -417,7 +417,7 @@ pub fn thread_items(
             let top = |l: f64| band.crest(l) - band.dir * 0.25 * band.height.max(1e-3);
             let bottom = |l: f64| band.root(l);
             let poly = vec![band.pt(a, bottom(a)), band.pt(b, bottom(b)), band.pt(b, top(b)), band.pt(a, top(a))];
-            back.push((own(Shape::Polygon { points: poly }, style), true));
+            back.push((own(Shape::Polygon { points: poly.into() }, style), true));
             let mid = (a + b) / 2.0;
             let up = if band.dir < 0.0 { 1.0 } else { -1.0 };
             let label = Label::new(key, num(d));
@@ -501,7 +501,7 @@ fn shoulder_items(ti: usize, t: &Thread, sh: &crate::figures::Shoulder) -> Vec<I
     let lines: Vec<u32> = t.passes.get(sh.pass).map(|p| p.drawn_lines().collect()).unwrap_or_default();
     let own = |shape: Shape, style: Style| Item::new(shape, style).lines(lines.clone()).of(ti, Some(sh.pass));
     let tool = vec![[tz + sense * reach, edge], [tz, tr], [tz - sense * reach, edge]];
-    let mut out_items = vec![own(Shape::Polyline { points: tool }, Style::Tool)];
+    let mut out_items = vec![own(Shape::Polyline { points: tool.into() }, Style::Tool)];
     let label = if sh.clearance < 0.0 {
         let ahead = ((sh.z - tz) * sense).max(0.0);
         let cross = tr + out * ahead / tan;

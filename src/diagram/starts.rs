@@ -73,7 +73,7 @@ pub fn starts(plan: &Plan, ti: usize) -> Option<Scene> {
     let own = |shape: Shape, style: Style| Item::new(shape, style).lines([t.line]).of(ti, None);
     scene.push(own(Shape::Circle { center: [0.0, 0.0], radius: 1.0 }, Style::Circle), true);
     for (a, b) in [([-1.2, 0.0], [1.2, 0.0]), ([0.0, -1.2], [0.0, 1.2])] {
-        scene.push(Item::new(Shape::Polyline { points: vec![a, b] }, Style::Axis), true);
+        scene.push(Item::new(Shape::Polyline { points: vec![a, b].into() }, Style::Axis), true);
     }
     scene.push(own(Shape::Marker { at: [0.0, 1.0], glyph: Glyph::Bar }, Style::Note), true);
     let one_rev = Label::new("one_rev", "0°");
@@ -84,9 +84,9 @@ pub fn starts(plan: &Plan, ti: usize) -> Option<Scene> {
     let lead = if t.lead > 0.0 { t.lead } else { 1.0 };
     let x_of = |offset: f64| RULER_X + RULER_LEN * offset / lead;
     let ruler = vec![[RULER_X, 0.0], [RULER_X + RULER_LEN, 0.0]];
-    scene.push(own(Shape::Polyline { points: ruler }, Style::Ruler), true);
+    scene.push(own(Shape::Polyline { points: ruler.into() }, Style::Ruler), true);
     for x in [RULER_X, RULER_X + RULER_LEN] {
-        scene.push(own(Shape::Polyline { points: vec![[x, -0.1], [x, 0.1]] }, Style::Ruler), true);
+        scene.push(own(Shape::Polyline { points: vec![[x, -0.1], [x, 0.1]].into() }, Style::Ruler), true);
     }
     let caption = Label::new("axial_offsets", "");
     scene.push(
@@ -106,10 +106,10 @@ pub fn starts(plan: &Plan, ti: usize) -> Option<Scene> {
         let of = |item: Item| item.lines(pass.drawn_lines()).of(ti, Some(s.pass));
         let th = s.angle.to_radians();
         let dir: Pt = [th.sin(), th.cos()];
-        scene.push(of(Item::new(Shape::Polyline { points: vec![[0.0, 0.0], dir] }, Style::Start)), true);
+        scene.push(of(Item::new(Shape::Polyline { points: vec![[0.0, 0.0], dir].into() }, Style::Start)), true);
         scene.push(of(Item::new(Shape::Marker { at: dir, glyph: Glyph::Dot }, Style::Start)), true);
         let x = x_of(s.offset);
-        scene.push(of(Item::new(Shape::Polyline { points: vec![[x, -0.12], [x, 0.12]] }, Style::Start)), true);
+        scene.push(of(Item::new(Shape::Polyline { points: vec![[x, -0.12], [x, 0.12]].into() }, Style::Start)), true);
         scene.push(of(Item::new(Shape::Marker { at: [x, 0.0], glyph: Glyph::Dot }, Style::Start)), true);
         if !many || s.number == 1 || s.number as usize == list.len() {
             let at = [1.12 * dir[0], 1.12 * dir[1]];

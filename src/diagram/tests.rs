@@ -58,7 +58,7 @@ fn o1006_side_has_five_pass_paths_from_z70_to_z13() {
     for (k, c) in cuts.iter().enumerate() {
         assert_eq!(c.thread, Some(0));
         assert_eq!(c.pass, Some(k as u32));
-        assert_eq!(c.lines, vec![lines[k]]);
+        assert_eq!(c.lines.to_vec(), vec![lines[k]]);
         let r = xs[k] / 2.0;
         assert_eq!(polyline(c), &[[70.0, r], [13.0, r]], "pass {k}");
     }
@@ -81,7 +81,7 @@ fn o1006_side_has_five_pass_paths_from_z70_to_z13() {
     let approach = polyline(other[0]);
     assert_eq!((approach[0], approach.len()), ([0.0, 0.0], 3));
     assert!((approach[1][0] - 70.0 * 24.65 / 29.0).abs() < 1e-9 && approach[1][1] == 24.65, "{approach:?}");
-    assert_eq!(other[0].lines, vec![4]);
+    assert_eq!(other[0].lines.to_vec(), vec![4]);
     // Dimensions: major 48 (assumed crest), minor 45.4, lead 2, length 57.
     let d = dims(&scene);
     assert!(d.contains(&("dia_major", "48".into())), "{d:?}");
@@ -328,7 +328,7 @@ fn o1006_tooth_shows_radial_chevrons() {
         let pts: Vec<(f64, f64)> = polyline(a).iter().map(|q| (q[0], q[1])).collect();
         let got = crate::chip::area(&pts);
         assert!((got - p.area.unwrap()).abs() < 1e-5, "pass {}: {got} vs {:?}", p.index, p.area);
-        assert_eq!(a.lines, p.lines);
+        assert_eq!(a.lines.to_vec(), p.lines);
     }
     let tx = texts(&scene);
     assert!(
@@ -357,7 +357,7 @@ fn starts_view_places_angles_and_offsets() {
     assert_eq!(spokes.len(), 2);
     let end = polyline(spokes[1])[1];
     assert!(end[0].abs() < 1e-12 && close(end[1], -1.0), "180° points down: {end:?}");
-    assert_eq!(spokes[1].lines, vec![6, 7, 8, 9]);
+    assert_eq!(spokes[1].lines.to_vec(), vec![6, 7, 8, 9]);
     // Start 2's tick sits half way along the one-lead ruler.
     let tick = scene.items.iter().filter(|i| i.style == Style::Start && i.pass == Some(1)).nth(2).unwrap();
     assert!(close(polyline(tick)[0][0], RULER_X + RULER_LEN / 2.0));

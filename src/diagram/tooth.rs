@@ -105,8 +105,8 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
     let mut material = vec![pt(-l, bottom)];
     material.extend(prof.iter().copied());
     material.push(pt(l, bottom));
-    scene.push(own(Shape::Polygon { points: material }, Style::Material), true);
-    scene.push(own(Shape::Polyline { points: vec![pt(0.0, bottom), pt(0.0, top)] }, Style::Axis), true);
+    scene.push(own(Shape::Polygon { points: material.into() }, Style::Material), true);
+    scene.push(own(Shape::Polyline { points: vec![pt(0.0, bottom), pt(0.0, top)].into() }, Style::Axis), true);
     // Areas, then tools, so every outline stays visible.
     for c in &cut_list {
         let p = &t.passes[c.index];
@@ -121,7 +121,7 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
             );
         }
     }
-    scene.push(own(Shape::Polyline { points: prof }, Style::Profile), true);
+    scene.push(own(Shape::Polyline { points: prof.into() }, Style::Profile), true);
     let drawn: Vec<(usize, &Pass)> = passes.iter().zip(&shown).filter(|(_, s)| **s).map(|(p, _)| *p).collect();
     let label_every = drawn.len().div_ceil(MAX_DEPTH_LABELS).max(1);
     let tick = 0.08 * l;
@@ -135,11 +135,13 @@ pub fn tooth(plan: &Plan, ti: usize, start: u32) -> Option<Scene> {
             pt(s + tool.flat, -d),
             pt(s + tool.flat + rise * tool.t, top),
         ];
-        scene.push(of(Item::new(Shape::Polyline { points: edge }, Style::Tool)), true);
+        scene.push(of(Item::new(Shape::Polyline { points: edge.into() }, Style::Tool)), true);
         let glyph = if p.role == Role::Rough { Glyph::Dot } else { Glyph::Cross };
         scene.push(of(Item::new(Shape::Marker { at: pt(s, -d), glyph }, Style::Tool)), true);
-        scene
-            .push(of(Item::new(Shape::Polyline { points: vec![pt(l, -d), pt(l + tick, -d)] }, Style::DepthTick)), true);
+        scene.push(
+            of(Item::new(Shape::Polyline { points: vec![pt(l, -d), pt(l + tick, -d)].into() }, Style::DepthTick)),
+            true,
+        );
         if k % label_every == 0 || k + 1 == drawn.len() {
             let key = match p.role {
                 Role::Rough => "pass_depth",
@@ -298,13 +300,13 @@ fn insert_items(
         outline.push(pt(s, -d));
     }
     outline.push(pt(s + tool.flat + (top + d) * tool.t, top));
-    let mut items = vec![Item::new(Shape::Polyline { points: outline }, Style::Tool)];
+    let mut items = vec![Item::new(Shape::Polyline { points: outline.into() }, Style::Tool)];
     if form.full {
         let w = d * tool.t; // the flanks cross the crest line this far either side
         for side in [-1.0, 1.0] {
             let from = s + side * (tool.flat + w);
             let ear = vec![pt(from, 0.0), pt(from + side * pitch / 8.0, 0.0)];
-            items.push(Item::new(Shape::Polyline { points: ear }, Style::Tool));
+            items.push(Item::new(Shape::Polyline { points: ear.into() }, Style::Tool));
         }
     }
     let key = if form.full { "insert_full" } else { "insert_partial" };

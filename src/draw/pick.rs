@@ -92,7 +92,7 @@ mod tests {
     #[test]
     fn the_nearest_pass_item_is_picked_before_a_nearer_other() {
         let mut s = Scene::new(ViewKind::Side);
-        let line = |y: f64| Shape::Polyline { points: vec![[0.0, y], [10.0, y]] };
+        let line = |y: f64| Shape::Polyline { points: vec![[0.0, y], [10.0, y]].into() };
         s.push(Item::new(line(1.0), Style::OtherRapid).lines([3]), false);
         let mut pass = Item::new(line(1.4), Style::Cut).lines([7]);
         pass.thread = Some(0);

@@ -120,7 +120,7 @@ fn push_item(p: &mut Packed, item: &Item, label_count: &mut u32) {
     };
     let shape = match &item.shape {
         Shape::Polyline { points } | Shape::Polygon { points } => {
-            for q in points {
+            for q in points.iter() {
                 p.coords.extend_from_slice(q);
             }
             if matches!(item.shape, Shape::Polyline { .. }) { 0 } else { 1 }
