@@ -62,7 +62,7 @@ fn the_tooth_section_draws_the_insert() {
         .items
         .iter()
         .filter_map(|i| match &i.shape {
-            Shape::Text { label, .. } if label.key == "insert_full" => Some(label.value.clone()),
+            Shape::Text { label, .. } if label.key == "insert_full" => Some(label.value.to_string()),
             _ => None,
         })
         .collect();

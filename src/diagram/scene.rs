@@ -105,14 +105,15 @@ impl Rect {
 pub struct Label {
     /// Translation key, or empty.
     pub key: &'static str,
-    /// Value, already formatted (numbers in program units).
-    pub value: String,
+    /// Value, already formatted (numbers in program units; shared, like
+    /// the points: a scene put together again copies no text).
+    pub value: Arc<str>,
 }
 
 impl Label {
     /// A label with a key and a value.
     pub fn new(key: &'static str, value: impl Into<String>) -> Label {
-        Label { key, value: value.into() }
+        Label { key, value: Arc::from(value.into()) }
     }
 }
 

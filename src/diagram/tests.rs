@@ -30,7 +30,7 @@ fn dims(scene: &Scene) -> Vec<(&'static str, String)> {
         .items
         .iter()
         .filter_map(|i| match &i.shape {
-            Shape::Dim { label, .. } => Some((label.key, label.value.clone())),
+            Shape::Dim { label, .. } => Some((label.key, label.value.to_string())),
             _ => None,
         })
         .collect()
@@ -41,7 +41,7 @@ fn texts(scene: &Scene) -> Vec<(&'static str, String)> {
         .items
         .iter()
         .filter_map(|i| match &i.shape {
-            Shape::Text { label, .. } => Some((label.key, label.value.clone())),
+            Shape::Text { label, .. } => Some((label.key, label.value.to_string())),
             _ => None,
         })
         .collect()

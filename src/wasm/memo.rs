@@ -193,8 +193,9 @@ impl SideMemo {
 
     /// Builds or reuses every piece of `plan`'s side section.
     fn build(&mut self, plan: &Plan, thread_keys: &[u64]) -> Built {
-        let mut pieces =
-            Pieces { old: std::mem::take(&mut self.chunks), kept: ByKey::default(), built: Vec::new(), reused: 0 };
+        let old = std::mem::take(&mut self.chunks);
+        let kept = ByKey::with_capacity_and_hasher(old.len(), Default::default());
+        let mut pieces = Pieces { old, kept, built: Vec::new(), reused: 0 };
         let layout = Layout::of(plan);
         let thread_key = |ti: usize| thread_keys.get(ti).copied().unwrap_or(0);
         let mut order: Vec<u64> = Vec::new();
