@@ -20,6 +20,7 @@ use crate::diagram::scene::{Anchor, Scene};
 use crate::message::Lang;
 
 mod fit;
+mod kept;
 mod labels;
 mod lines;
 pub mod list;
@@ -29,6 +30,8 @@ pub mod pick;
 mod place;
 mod text;
 pub mod words;
+
+pub use kept::FitMemo;
 
 pub use list::{DisplayList, Op, Pen};
 pub use text::{measure, wrap};
@@ -187,8 +190,21 @@ pub fn fit_of(scene: &Scene, view: &View) -> Transform {
 /// The display list of `scene` in `view`: fitted when the view gives no
 /// (valid) transform, labels placed, painted.
 pub fn display(scene: &Scene, view: &View) -> DisplayList {
+    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, view.page()));
+    display_at(scene, view, xf)
+}
+
+/// [`display`] with the fit kept in `memo` between drawings of one view
+/// ([`FitMemo`]: a scene whose focus and labels did not change keeps its
+/// transform).
+pub fn display_kept(scene: &Scene, view: &View, memo: &mut FitMemo) -> DisplayList {
+    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| memo.fit(scene, view));
+    display_at(scene, view, xf)
+}
+
+/// The display list of `scene` in `view` at transform `xf`.
+fn display_at(scene: &Scene, view: &View, xf: Transform) -> DisplayList {
     let page = view.page();
-    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, page));
     let (placed, dropped) = place::placed(scene, view, &xf, page);
     let mut b = list::Builder::new(scene.view, page, xf, view.stale);
     paint::paint(&mut b, scene, &xf, &placed, view);

@@ -39,6 +39,8 @@ pub(super) struct State {
     plans: u64,
     /// Another program compared with this one (`Session::compare`): its plan and number.
     pub(super) compare: Option<(Plan, u64)>,
+    /// Each view's last fit (by [`super::shown::Which`]): kept while typing leaves the focus and labels as they were.
+    pub(super) fits: [crate::draw::FitMemo; 3],
 }
 
 /// A planning session of one view (see the module documentation).
@@ -114,6 +116,7 @@ impl Session {
                 thread: 0,
                 plans: 0,
                 compare: None,
+                fits: Default::default(),
             },
         };
         session.planner.plan(text);
@@ -122,7 +125,7 @@ impl Session {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
         session.plans += 1;
-        let State { planner, side, threads, shown, thread: chosen, plans, compare } = &mut session;
+        let State { planner, side, threads, shown, thread: chosen, plans, compare, .. } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {

@@ -43,7 +43,7 @@ impl Session {
     ) -> Result<JsValue, JsValue> {
         let which = which(view)?;
         let (lang, roughing) = (self.lang(), self.roughing());
-        self.with_state(|st| {
+        self.with_state_mut(|st| {
             let Some(scene) = st.shown.scene(which) else { return Ok(JsValue::NULL) };
             let mark = mark_of(scene, mark_thread, mark_pass, &mark_lines, light);
             let v = View {
@@ -58,7 +58,7 @@ impl Session {
                 roughing,
             };
             v.validate().map_err(err)?;
-            list_to_js(&draw::display(scene, &v))
+            list_to_js(&draw::display_kept(scene, &v, &mut st.fits[which as usize]))
         })
     }
 
