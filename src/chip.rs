@@ -54,7 +54,7 @@ impl Pl {
 
     fn sample(mut us: Vec<f64>, u0: f64, u1: f64, f: impl Fn(f64) -> f64) -> Pl {
         us.retain(|u| u.is_finite() && *u >= u0 && *u <= u1);
-        crate::order::sort_by(&mut us, f64::total_cmp);
+        crate::order::sort_floats(&mut us);
         us.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * (1.0 + a.abs()));
         Pl { pts: us.into_iter().map(|u| (u, f(u))).collect() }.simplified()
     }
@@ -85,7 +85,7 @@ impl Pl {
     /// The lower envelope `min(self, o)`, with the crossings as vertices.
     pub fn min(&self, o: &Pl) -> Pl {
         let mut us: Vec<f64> = self.pts.iter().chain(&o.pts).map(|p| p.0).collect();
-        crate::order::sort_by(&mut us, f64::total_cmp);
+        crate::order::sort_floats(&mut us);
         us.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * (1.0 + a.abs()));
         let mut out: Vec<(f64, f64)> = Vec::with_capacity(us.len() * 2);
         for (k, &u) in us.iter().enumerate() {
@@ -130,7 +130,7 @@ impl Pl {
     /// each as a polygon: the lower edge left to right, then the upper edge back.
     pub fn regions_above(&self, lower: &Pl) -> Vec<Vec<(f64, f64)>> {
         let mut us: Vec<f64> = self.pts.iter().chain(&lower.pts).map(|p| p.0).collect();
-        crate::order::sort_by(&mut us, f64::total_cmp);
+        crate::order::sort_floats(&mut us);
         us.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * (1.0 + a.abs()));
         let eps = 1e-12;
         let gap = |u: f64| self.at(u) - lower.at(u);

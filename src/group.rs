@@ -519,7 +519,7 @@ fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
     }
     // The distinct start angles, sorted (in n log n: a thread may have tens of thousands of passes).
     let mut angles: Vec<f64> = cuts.iter().map(|c| c.angle).collect();
-    crate::order::sort_by(&mut angles, f64::total_cmp);
+    crate::order::sort_floats(&mut angles);
     angles.dedup_by(|a, kept| (*a - *kept).abs() < 1e-6);
     let last = angles.len().saturating_sub(1);
     let of = cuts.iter().map(|c| angles.partition_point(|a| *a < c.angle - 1e-6).min(last)).collect();

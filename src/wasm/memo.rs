@@ -163,30 +163,23 @@ impl SideMemo {
     /// from the last call where their keys match.
     pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Scene {
         let b = self.build(plan, thread_keys);
-        // As `side(plan)`: the pieces joined after the axis, the part's section
-        // between them, then every item through the radial breaks.
-        let section = crate::diagram::section::pieces(plan);
+        // As `side(plan)`: the axis, the part's section after it, the pieces,
+        // then every item through the radial breaks.
         let mut scene = b.head;
-        section.iter().for_each(|it| it.each_point(|p| scene.bounds.add(p)));
+        crate::diagram::section::apply(&mut scene, plan);
         let mut extent = radial::extent(&scene.items);
-        for e in b.order.iter().map(|k| self.chunks[k].extent).chain([radial::extent(&section)]) {
+        for e in b.order.iter().map(|k| self.chunks[k].extent) {
             extent = (extent.0.min(e.0), extent.1.max(e.1));
         }
         let list = radial::breaks(plan, extent);
-        let mut items = std::mem::take(&mut scene.items);
-        items.extend(section);
-        items.iter_mut().for_each(|i| radial::map_item(&list, i));
-        let total = items.len() + b.order.iter().map(|k| self.chunks[k].items.len()).sum::<usize>();
-        items.reserve(total - items.len());
+        scene.items.iter_mut().for_each(|i| radial::map_item(&list, i));
+        scene.items.reserve(b.order.iter().map(|k| self.chunks[k].items.len()).sum());
         for k in &b.order {
             if let Some(c) = self.chunks.get_mut(k) {
-                items.extend(c.drawn(&list).iter().cloned());
+                scene.items.extend(c.drawn(&list).iter().cloned());
             }
         }
-        scene.items = items;
-        if !list.is_empty() {
-            radial::finish(&list, &mut scene);
-        }
+        radial::finish(&list, &mut scene);
         scene.finish();
         scene
     }
