@@ -52,6 +52,12 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// A key of the message (template and arguments): equal messages have
+    /// equal keys, in every language.
+    pub fn message_key(&self) -> u64 {
+        message_key(self.template, &self.args)
+    }
+
     /// The message in `lang`.
     pub fn render(&self, lang: Lang) -> std::borrow::Cow<'_, str> {
         match lang {
@@ -206,6 +212,15 @@ impl Diagnostics {
     /// some were dropped, a last `more-diagnostics` note says how many, at
     /// the first one dropped.
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
+        self.finish_after(text, index, &[])
+    }
+
+    /// [`Diagnostics::finish`], taking the English text of a message equal
+    /// to one in `before` (the last plan's diagnostics) from there instead
+    /// of writing it again: after an edit most messages are the last
+    /// plan's, moved or not.
+    pub fn finish_after(self, text: &str, index: &LineIndex, before: &[Diagnostic]) -> Vec<Diagnostic> {
+        let written = Written::of(before);
         let mut items = self.items;
         if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
             items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span, None));
@@ -219,7 +234,7 @@ impl Diagnostics {
                 Diagnostic {
                     severity: code.severity(),
                     code,
-                    message: m.render(Lang::En),
+                    message: written.get(&m).unwrap_or_else(|| m.render(Lang::En)),
                     template: m.template,
                     args: m.args,
                     line,
@@ -233,5 +248,68 @@ impl Diagnostics {
             .collect();
         crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
         out
+    }
+}
+
+/// The English texts of earlier diagnostics, found by their message
+/// (template and arguments), wherever they were.
+struct Written<'a> {
+    before: &'a [Diagnostic],
+    by_key: std::collections::HashMap<u64, usize, std::hash::BuildHasherDefault<crate::hash::KeyHasher>>,
+}
+
+impl<'a> Written<'a> {
+    /// The texts of `before`.
+    fn of(before: &'a [Diagnostic]) -> Written<'a> {
+        let mut by_key = std::collections::HashMap::default();
+        by_key.reserve(before.len());
+        for (i, d) in before.iter().enumerate() {
+            by_key.insert(message_key(d.template, &d.args), i);
+        }
+        Written { before, by_key }
+    }
+
+    /// The text of a diagnostic of `before` with the same message as `m`.
+    fn get(&self, m: &Message) -> Option<String> {
+        if self.before.is_empty() {
+            return None;
+        }
+        let d = &self.before[*self.by_key.get(&message_key(m.template, &m.args))?];
+        (std::ptr::eq(d.template, m.template) && d.args == m.args).then(|| d.message.clone())
+    }
+}
+
+/// A key of a message's template and arguments (equal messages, equal keys).
+fn message_key(template: &'static Template, args: &crate::message::Args) -> u64 {
+    use std::hash::Hasher;
+    let mut h = crate::hash::KeyHasher::default();
+    crate::message::hash_message(template, args, &mut h);
+    h.finish()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::message::MORE_DIAGNOSTICS;
+
+    fn one(n: i64, at: usize) -> Diagnostics {
+        let mut d = Diagnostics::with_limit(10);
+        d.push(&MORE_DIAGNOSTICS, Span::new(at, at + 2), crate::args![n = n]);
+        d
+    }
+
+    #[test]
+    fn an_equal_message_keeps_the_last_plans_text_wherever_it_moved() {
+        let text = "G00 X1\nG00 X2\n";
+        let index = LineIndex::new(text);
+        let mut before = one(3, 0).finish(text, &index);
+        assert_eq!(before[0].message, "3 more diagnostics from here on are not shown (setting limits.diagnostics)");
+        // A marked text shows that it was taken, not written again.
+        before[0].message = "kept".into();
+        let moved = one(3, 7).finish_after(text, &index, &before);
+        assert_eq!((moved[0].message.as_str(), moved[0].line), ("kept", 2));
+        // Other arguments: written anew.
+        let other = one(4, 7).finish_after(text, &index, &before);
+        assert_eq!(other[0].message, "4 more diagnostics from here on are not shown (setting limits.diagnostics)");
     }
 }

@@ -481,7 +481,7 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    finish_with(text, settings, out, starts, |threads, moves, spans, limit| {
+    finish_with(text, settings, out, starts, &[], |threads, moves, spans, limit| {
         let mut advice = Diagnostics::with_limit(limit);
         for i in 0..threads.len() {
             finish_thread(threads, i, moves, settings, text, &mut advice, spans);
@@ -512,12 +512,15 @@ pub(crate) fn finish_thread(
 }
 
 /// [`finish`] with the advice step given by the caller: `advice(threads,
-/// moves, spans, limit)` finishes the threads and returns their diagnostics.
+/// moves, spans, limit)` finishes the threads and returns their
+/// diagnostics; a message that is one of `before`'s (the last plan's) keeps
+/// its text.
 pub(crate) fn finish_with(
     text: &str,
     settings: &Settings,
     out: Outputs,
     starts: Vec<u32>,
+    before: &[Diagnostic],
     advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Diagnostics,
 ) -> Plan {
     let Outputs { mut diags, moves, mut threads, inch } = out;
@@ -533,7 +536,7 @@ pub(crate) fn finish_with(
     // found after the reading: in no call.
     diags.set_via(None);
     crate::helix::check(&threads, &moves, settings.get(P::GroupMaxInfeed), &spans, &mut diags);
-    let diagnostics = diags.finish(text, &index);
+    let diagnostics = diags.finish_after(text, &index, before);
     let time_s = crate::shop::total_time(&threads);
     Plan {
         dialect: settings.dialect(),

@@ -192,9 +192,12 @@ impl Planner {
         let old_advice = std::mem::take(&mut self.advice);
         let mut tail = None;
         self.stopped_at = None;
+        // The last plan's diagnostics, whose messages' texts the new plan's may reuse.
+        let mut before = Vec::new();
         match resume {
             Some(ci) => {
                 let old = self.plan.take().expect("a plan to resume");
+                before = old.diagnostics;
                 r.asm.moves = old.moves;
                 r.asm.threads = old.threads;
                 r.diags = std::mem::take(&mut self.raw_diags);
@@ -236,6 +239,7 @@ impl Planner {
                 // From the top; the last reading's tail may still be kept.
                 let top = Checkpoint { offset: 0, line: 1, snap: r.snapshot(), reads: Reads::default() };
                 if let Some(old) = self.plan.take() {
+                    before = old.diagnostics;
                     r.asm.moves = old.moves;
                     r.asm.threads = old.threads;
                     r.diags = std::mem::take(&mut self.raw_diags);
@@ -300,7 +304,7 @@ impl Planner {
         *advice = old_advice.drain(..kept_threads.min(old_advice.len())).collect();
         let join = self.join.as_ref();
         let settings = &self.settings;
-        let plan = finish_with(text, settings, out, self.line_starts.clone(), |threads, moves, spans, _| {
+        let plan = finish_with(text, settings, out, self.line_starts.clone(), &before, |threads, moves, spans, _| {
             for i in advice.len()..threads.len() {
                 // A thread of the last reading's rest, finished then, stays finished when
                 // the edit is not in the text it was finished from.

@@ -4,11 +4,13 @@
 //! (`svg`) execute it and decide nothing.
 
 use std::collections::HashMap;
+use std::hash::Hasher;
 
 use serde::Serialize;
 
 use super::{Placed, Transform};
 use crate::diagram::scene::{Anchor, Pt, ViewKind};
+use crate::hash::KeyHasher;
 
 /// A resolved pen: a stroke (colour, width, dashes), a fill of closed shapes and an opacity.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -87,7 +89,28 @@ pub struct DisplayList {
 /// Builds a display list: pens kept once each; a stale list's pens greyed and faded.
 pub(super) struct Builder {
     pub list: DisplayList,
-    index: HashMap<String, usize>,
+    /// The first pen of each [`pen_key`].
+    index: HashMap<u64, usize, std::hash::BuildHasherDefault<KeyHasher>>,
+}
+
+/// A hash of every field of `pen` (numbers by their bits).
+fn pen_key(pen: &Pen) -> u64 {
+    let Pen { stroke, width, dash, fill, alpha } = pen;
+    let mut h = KeyHasher::default();
+    let mut text = |t: &Option<String>| match t {
+        Some(t) => {
+            h.write_u8(1);
+            h.write(t.as_bytes());
+        }
+        None => h.write_u8(0),
+    };
+    text(stroke);
+    text(fill);
+    for v in [*width, *alpha].iter().chain(dash) {
+        h.write_u64(v.to_bits());
+    }
+    h.write_usize(dash.len());
+    h.finish()
 }
 
 /// How much a stale drawing's pens are faded.
@@ -107,7 +130,7 @@ impl Builder {
             dropped: Vec::new(),
             anchor: [width / 2.0, height / 2.0],
         };
-        Builder { list, index: HashMap::new() }
+        Builder { list, index: HashMap::default() }
     }
 
     /// The index of `pen` (greyed and faded in a stale list).
@@ -122,13 +145,16 @@ impl Builder {
         } else {
             pen
         };
-        let key = format!("{pen:?}");
+        let key = pen_key(&pen);
         if let Some(&k) = self.index.get(&key) {
-            return k;
+            if self.list.pens[k] == pen {
+                return k;
+            }
         }
         self.list.pens.push(pen);
-        self.index.insert(key, self.list.pens.len() - 1);
-        self.list.pens.len() - 1
+        let k = self.list.pens.len() - 1;
+        self.index.entry(key).or_insert(k);
+        k
     }
 
     /// Adds one path of page points.

@@ -6,6 +6,9 @@
 //! dimension line, arrowheads and halo, and what the pointer is over again on top.
 
 use std::collections::{HashMap, HashSet};
+use std::hash::{BuildHasherDefault, Hash, Hasher};
+
+use crate::hash::KeyHasher;
 
 use super::labels::LINE;
 use super::list::{Builder, Op, Pen};
@@ -15,6 +18,9 @@ use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style};
 
 /// Paths wholly this far off the page are left out.
 const CULL: f64 = 12.0;
+
+/// Maps and sets keyed by small integers and tuples (a fast hash, no random seed).
+type Fast = BuildHasherDefault<KeyHasher>;
 
 /// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
 type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
@@ -30,20 +36,52 @@ fn batch_key(item: &Item, closed: bool) -> BatchKey {
     (item.style.code(), role, closed, area)
 }
 
-/// One pen's paths: its first item, the points, where each subpath starts, the subpaths seen.
+/// One pen's paths: its first item, the points, where each subpath starts,
+/// and the subpaths seen (by the hash of their points to 1/8 px: the
+/// first subpath of each hash).
 struct Batch {
     key: BatchKey,
     first: usize,
     points: Vec<Pt>,
     starts: Vec<usize>,
-    seen: HashSet<Vec<i64>>,
+    seen: HashMap<u64, usize, Fast>,
+}
+
+/// A point to 1/8 px (halves to even: one instruction in the wasm build, where `round` is a call).
+fn eighths(p: &Pt) -> [i64; 2] {
+    [(p[0] * 8.0).round_ties_even() as i64, (p[1] * 8.0).round_ties_even() as i64]
+}
+
+impl Batch {
+    /// Adds subpath `pts` unless it repeats one of the batch's to 1/8 px.
+    fn add(&mut self, pts: &[Pt]) {
+        let mut h = KeyHasher::default();
+        pts.iter().for_each(|p| eighths(p).hash(&mut h));
+        h.write_usize(pts.len());
+        let key = h.finish();
+        match self.seen.get(&key) {
+            Some(&k) => {
+                let end = self.starts.get(k + 1).copied().unwrap_or(self.points.len());
+                let old = &self.points[self.starts[k]..end];
+                // The same hash of other points (all but never): drawn as well.
+                if old.len() == pts.len() && old.iter().zip(pts).all(|(a, b)| eighths(a) == eighths(b)) {
+                    return;
+                }
+            }
+            None => {
+                self.seen.insert(key, self.starts.len());
+            }
+        }
+        self.starts.push(self.points.len());
+        self.points.extend_from_slice(pts);
+    }
 }
 
 /// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
 pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Placed], view: &View) {
     let mark = &view.mark;
-    let by_item: HashMap<usize, &Placed> = placed.iter().map(|l| (l.item, l)).collect();
-    let marked: HashSet<usize> = mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
+    let by_item: HashMap<usize, &Placed, Fast> = placed.iter().map(|l| (l.item, l)).collect();
+    let marked: HashSet<usize, Fast> = mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
     let mark = if b.list.stale || marked.is_empty() { None } else { Some((&marked, mark.light)) };
     let mut p = Painter { b, xf };
     if let Some((set, light)) = mark {
@@ -92,7 +130,13 @@ impl Painter<'_> {
     /// Highlights beneath the items, which keep their own colours on top. The
     /// halos of one width are one path (their union at one alpha): halos of
     /// close lines do not pile up into a solid colour between them.
-    fn halos(&mut self, scene: &Scene, set: &HashSet<usize>, light: bool, by_item: &HashMap<usize, &Placed>) {
+    fn halos(
+        &mut self,
+        scene: &Scene,
+        set: &HashSet<usize, Fast>,
+        light: bool,
+        by_item: &HashMap<usize, &Placed, Fast>,
+    ) {
         let alpha = if light { 0.3 } else { 0.5 };
         let grow = if light { 4.0 } else { 6.0 };
         let mut groups: Vec<HaloGroup> = Vec::new();
@@ -151,7 +195,8 @@ impl Painter<'_> {
     fn paths(&mut self, scene: &Scene, roughing: bool) {
         let (w, h) = (self.b.list.width, self.b.list.height);
         let mut batches: Vec<Batch> = Vec::new();
-        let mut index: HashMap<BatchKey, usize> = HashMap::new();
+        let mut index: HashMap<BatchKey, usize, Fast> = HashMap::default();
+        let mut pts: Vec<Pt> = Vec::new();
         for (i, item) in scene.items.iter().enumerate() {
             let (points, closed) = match &item.shape {
                 Shape::Polyline { points } => (points, false),
@@ -161,23 +206,19 @@ impl Painter<'_> {
             if item.style == Style::Roughing && !roughing {
                 continue;
             }
-            let pts: Vec<Pt> = points.iter().map(|p| self.xf.at(*p)).collect();
+            pts.clear();
+            pts.extend(points.iter().map(|p| self.xf.at(*p)));
             let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
             if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {
                 continue;
             }
             let key = batch_key(item, closed);
             let k = *index.entry(key).or_insert_with(|| {
-                batches.push(Batch { key, first: i, points: Vec::new(), starts: Vec::new(), seen: HashSet::new() });
+                let seen = HashMap::default();
+                batches.push(Batch { key, first: i, points: Vec::new(), starts: Vec::new(), seen });
                 batches.len() - 1
             });
-            let b = &mut batches[k];
-            let eighths: Vec<i64> =
-                pts.iter().flat_map(|p| [(p[0] * 8.0).round() as i64, (p[1] * 8.0).round() as i64]).collect();
-            if b.seen.insert(eighths) {
-                b.starts.push(b.points.len());
-                b.points.extend(pts);
-            }
+            batches[k].add(&pts);
         }
         for bt in batches {
             let pen = self.b.pen(pen_of(&scene.items[bt.first]).pen);
@@ -186,6 +227,10 @@ impl Painter<'_> {
     }
 
     fn item(&mut self, item: &Item, placed: Option<&Placed>, halo: &str) {
+        // Paths went with their pens already.
+        if matches!(item.shape, Shape::Polyline { .. } | Shape::Polygon { .. }) {
+            return;
+        }
         let pen = pen_of(item);
         let xf = self.xf;
         match &item.shape {
@@ -314,4 +359,40 @@ fn dim_lines(a: Pt, b: Pt, half: bool, l: &Placed) -> Vec<(Pt, Pt)> {
         out.extend(ends.iter().map(|&p| (at(p, 2.0 * sgn), at(p, o + 4.0 * sgn))));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::diagram::scene::{Item, Scene, Shape, Style, ViewKind};
+    use crate::draw::{Op, Transform, View, display};
+
+    fn line(points: &[[f64; 2]], style: Style) -> Item {
+        Item::new(Shape::Polyline { points: points.into() }, style)
+    }
+
+    #[test]
+    fn a_path_that_repeats_one_of_its_pen_to_an_eighth_of_a_pixel_is_left_out() {
+        let mut s = Scene::new(ViewKind::Side);
+        s.push(line(&[[0.0, 0.0], [10.0, 0.0]], Style::Cut), true);
+        // 0.01 px off the first (at 1 px per unit): the same to 1/8 px.
+        s.push(line(&[[0.01, 0.0], [10.0, 0.01]], Style::Cut), true);
+        // 0.2 px off: another path.
+        s.push(line(&[[0.2, 0.0], [10.0, 0.0]], Style::Cut), true);
+        // The first again in another pen: drawn with that pen.
+        s.push(line(&[[0.0, 0.0], [10.0, 0.0]], Style::Rapid), true);
+        // Wholly off the page: left out.
+        s.push(line(&[[-500.0, 0.0], [-400.0, 0.0]], Style::Cut), true);
+        s.finish();
+        let view = View { transform: Some(Transform { sx: 1.0, sy: 1.0, tx: 100.0, ty: 100.0 }), ..View::default() };
+        let list = display(&s, &view);
+        let paths: Vec<(usize, usize)> = list
+            .ops
+            .iter()
+            .filter_map(|op| match op {
+                Op::Paths { points, starts, .. } => Some((starts.len(), points.len())),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(paths, [(2, 4), (1, 2)]);
+    }
 }

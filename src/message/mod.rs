@@ -228,6 +228,25 @@ impl From<Message> for Arg {
     }
 }
 
+/// Feeds `template` and the argument names (by address) and the values
+/// to `h`: equal messages from the same places hash equally (a float by its
+/// bits, so `0.0` and `-0.0` may differ); a caller compares the messages
+/// whose keys match.
+pub fn hash_message(template: &'static Template, args: &Args, h: &mut impl std::hash::Hasher) {
+    h.write_usize(std::ptr::from_ref(template) as usize);
+    for (name, arg) in &args.0 {
+        h.write_usize(name.as_ptr() as usize);
+        match arg {
+            Arg::Num(v) => h.write_u64(v.to_bits()),
+            Arg::Int(v) => h.write_u64(*v as u64 ^ 1),
+            Arg::Text(t) => h.write(t.as_bytes()),
+            Arg::Phrase(p) => h.write_usize(std::ptr::from_ref(*p) as usize),
+            Arg::Message(m) => hash_message(m.template, &m.args, h),
+            Arg::Notes(ns) => ns.iter().for_each(|m| hash_message(m.template, &m.args, h)),
+        }
+    }
+}
+
 /// The named arguments of a message, in the order given.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Args(pub Vec<(&'static str, Arg)>);

@@ -79,13 +79,26 @@ pub struct EditorDiagnostic<'a> {
     switch_title: Option<&'static str>,
 }
 
-/// The plan's diagnostics with their ranges in `text`'s UTF-16 offsets, their messages in `lang`.
-pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan, lang: Lang) -> Vec<EditorDiagnostic<'a>> {
+/// The UTF-16 offsets in `text` of the plan's diagnostics, `[from, to]`
+/// each (`to` never before `from`).
+pub fn editor_offsets(text: &str, plan: &Plan) -> Vec<u32> {
     let bytes: Vec<u32> = plan.diagnostics.iter().flat_map(|d| [d.span.start, d.span.end]).collect();
-    let units = super::text::utf16_offsets(text, &bytes);
-    plan.diagnostics
+    let mut units = super::text::utf16_offsets(text, &bytes);
+    units.chunks_exact_mut(2).for_each(|u| u[1] = u[1].max(u[0]));
+    units
+}
+
+/// The plan's diagnostics `range` with their offsets from `units` (all the
+/// plan's, [`editor_offsets`]), their messages in `lang`.
+pub fn editor_diagnostics_of<'a>(
+    plan: &'a Plan,
+    units: &[u32],
+    lang: Lang,
+    range: std::ops::Range<usize>,
+) -> Vec<EditorDiagnostic<'a>> {
+    plan.diagnostics[range.clone()]
         .iter()
-        .zip(units.chunks_exact(2))
+        .zip(units[2 * range.start..2 * range.end].chunks_exact(2))
         .map(|(d, u)| EditorDiagnostic {
             severity: d.severity,
             code: d.code,
@@ -95,7 +108,7 @@ pub fn editor_diagnostics<'a>(text: &str, plan: &'a Plan, lang: Lang) -> Vec<Edi
             end_line: d.end_line,
             end_column: d.end_column,
             from: u[0],
-            to: u[1].max(u[0]),
+            to: u[1],
             via: &d.via,
             switch_to: hinted(d).map(crate::Dialect::name),
             switch_title: hinted(d).map(crate::Dialect::title),

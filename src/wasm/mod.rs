@@ -8,7 +8,8 @@
 //! - [`memo`]: the side section put together from the pieces an edit did
 //!   not change;
 //! - [`shown`]: which scenes the views show (the last good drawing's policy);
-//! - the bindings (`bind`, `session`, `js`, `parts`, `tools`; wasm32 only): per-view
+//! - [`splice`]: the diagnostics list sent as the change from the last one;
+//! - the bindings (`bind`, `session`, `js`, `listed`, `parts`, `tools`; wasm32 only): per-view
 //!   sessions — the app and every embedded element keep their own planner
 //!   and scene pieces — and the functions JavaScript calls; `views`: each view's display list,
 //!   hit test and SVG.
@@ -20,6 +21,7 @@ pub mod keys;
 pub mod memo;
 pub mod pack;
 pub mod shown;
+pub mod splice;
 pub mod text;
 
 #[cfg(target_arch = "wasm32")]
@@ -28,6 +30,8 @@ mod bind;
 mod compared;
 #[cfg(target_arch = "wasm32")]
 mod js;
+#[cfg(target_arch = "wasm32")]
+mod listed;
 #[cfg(target_arch = "wasm32")]
 mod parts;
 #[cfg(target_arch = "wasm32")]

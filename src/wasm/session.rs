@@ -13,10 +13,9 @@ use wasm_bindgen::prelude::*;
 
 use std::rc::Rc;
 
-use super::js::{
-    SettingProblem, ThreadSummary, dialect, editor_diagnostics, err, passes_to_js, set, settings_from, to_js,
-};
-use super::keys::{PlanKeys, combine, js_key, key_of, packed_key};
+use super::js::{SettingProblem, ThreadSummary, dialect, err, passes_to_js, set, settings_from, to_js};
+use super::keys::{PlanKeys, combine, js_key, packed_key};
+use super::listed::DiagnosticsSent;
 use super::memo::SideMemo;
 use super::pack::pack;
 use super::parts::{Known, Part, ThreadsSent, keyed};
@@ -39,6 +38,8 @@ pub(super) struct State {
     plans: u64,
     /// Another program compared with this one (`Session::compare`): its plan and number.
     pub(super) compare: Option<(Plan, u64)>,
+    /// The diagnostics list answered last (an answer may send only its change).
+    diagnostics: DiagnosticsSent,
     /// Each view's last fit (by [`super::shown::Which`]): kept while typing leaves the focus and labels as they were.
     pub(super) fits: [crate::draw::FitMemo; 3],
 }
@@ -117,6 +118,7 @@ impl Session {
                 plans: 0,
                 compare: None,
                 fits: Default::default(),
+                diagnostics: DiagnosticsSent::default(),
             },
         };
         session.planner.plan(text);
@@ -125,7 +127,7 @@ impl Session {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
         session.plans += 1;
-        let State { planner, side, threads, shown, thread: chosen, plans, compare, .. } = &mut session;
+        let State { planner, side, threads, shown, thread: chosen, plans, compare, diagnostics, .. } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {
@@ -145,19 +147,18 @@ impl Session {
                     shown.set_overlay(Some((*id, super::compared::overlay_items(b, *chosen))));
                     crate::compare::compare(plan, b)
                 });
-                answer(text, plan, &keys, threads, &problems, (picked, start, lang), known_diagnostics, &known).map(
-                    |o| {
-                        if let Some(c) = &compared {
-                            set(&o, "comparison", &super::compared::comparison_js(c));
-                        }
-                        set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
-                        set(&o, "stale", &shown.stale().into());
-                        set(&o, "plan", &(*plans as f64).into());
-                        set(&o, "goodPlan", &shown.good_plan().map_or(JsValue::NULL, |g| (g as f64).into()));
-                        set(&o, "resumedAt", &planner.resumed_at().into());
-                        o.into()
-                    },
-                )
+                let sent = (threads, diagnostics);
+                answer(text, plan, &keys, sent, &problems, (picked, start, lang), known_diagnostics, &known).map(|o| {
+                    if let Some(c) = &compared {
+                        set(&o, "comparison", &super::compared::comparison_js(c));
+                    }
+                    set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
+                    set(&o, "stale", &shown.stale().into());
+                    set(&o, "plan", &(*plans as f64).into());
+                    set(&o, "goodPlan", &shown.good_plan().map_or(JsValue::NULL, |g| (g as f64).into()));
+                    set(&o, "resumedAt", &planner.resumed_at().into());
+                    o.into()
+                })
             }
             None => Err(err("the planner kept no plan")),
         };
@@ -184,15 +185,17 @@ impl Session {
     /// they carry their notes in every language.
     pub fn relabel(&self) -> Result<JsValue, JsValue> {
         let lang = self.lang.get();
-        let state = self.state.take();
-        let answer = |s: &State, plan: &Plan| -> Result<JsValue, JsValue> {
-            let o = Object::new();
-            set(&o, "diagnosticsKey", &diagnostics_key(plan, lang).into());
-            set(&o, "diagnostics", &to_js(&editor_diagnostics(s.planner.text(), plan, lang))?);
-            Ok(o.into())
-        };
-        let out = match state.as_ref().and_then(|s| s.planner.last().map(|plan| (s, plan))) {
-            Some((s, plan)) => answer(s, plan),
+        let mut state = self.state.take();
+        let out = match state.as_mut() {
+            Some(State { planner, diagnostics, .. }) => match planner.last() {
+                Some(plan) => {
+                    let o = Object::new();
+                    // The whole list: the caller is known to hold none in this language.
+                    diagnostics.answer(&o, planner.text(), plan, lang, -1.0)?;
+                    Ok(o.into())
+                }
+                None => Err(err("nothing planned yet")),
+            },
             None => Err(err("nothing planned yet")),
         };
         self.state.set(state);
@@ -340,18 +343,6 @@ fn pick(plan: &Plan, thread: i32) -> Option<usize> {
     (thread >= 0 && n > 0).then(|| (thread as usize).min(n - 1))
 }
 
-/// The key of the diagnostics by position (line and column, not offset) and
-/// language: when it is unchanged the editor's own diagnostics, mapped
-/// through the edit, are current.
-fn diagnostics_key(plan: &Plan, lang: Lang) -> f64 {
-    let fields: Vec<(u8, &str, &str, u32, u32, u32, u32)> = plan
-        .diagnostics
-        .iter()
-        .map(|d| (d.severity as u8, d.code.as_str(), d.message.as_str(), d.line, d.column, d.end_line, d.end_column))
-        .collect();
-    js_key(key_of(&(lang.name(), fields)))
-}
-
 /// The tooth and starts scenes of thread `chosen` (start `start`) with their keys.
 type Keyed = (Option<Rc<Scene>>, f64);
 fn thread_scenes_of(plan: &Plan, chosen: Option<usize>, start: u32) -> (Keyed, Keyed) {
@@ -384,7 +375,7 @@ fn answer(
     text: &str,
     plan: &Plan,
     keys: &PlanKeys,
-    sent: &mut ThreadsSent,
+    (sent, diagnostics): (&mut ThreadsSent, &mut DiagnosticsSent),
     problems: &[SettingProblem],
     (chosen, _start, lang): (Option<usize>, u32, Lang),
     known_diagnostics: f64,
@@ -402,11 +393,7 @@ fn answer(
     let good = !plan.has_alarm() && (!plan.threads.is_empty() || !plan.moves.is_empty());
     set(&o, "good", &good.into());
     set(&o, "settingErrors", &to_js(problems)?);
-    let key = diagnostics_key(plan, lang);
-    set(&o, "diagnosticsKey", &key.into());
-    let diagnostics =
-        if key == known_diagnostics { JsValue::NULL } else { to_js(&editor_diagnostics(text, plan, lang))? };
-    set(&o, "diagnostics", &diagnostics);
+    diagnostics.answer(&o, text, plan, lang, known_diagnostics)?;
     let all = keys.all_listed;
     keyed(&o, known, Part::Threads, all, || {
         sent.answer(known, all, &keys.listed, |i| to_js(&ThreadSummary::of(&plan.threads[i])))

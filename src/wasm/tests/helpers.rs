@@ -55,7 +55,7 @@ pub fn assert_close(got: &[f64], want: &[f64]) {
 }
 
 /// A diagnostic as the editor gets it.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 pub struct Diag {
     /// error, warning or info.
     pub severity: String,

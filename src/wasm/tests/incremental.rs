@@ -263,3 +263,46 @@ fn each_view_keeps_its_own_session() {
     let full = fresh.update(&a2, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     assert_eq!(snapshot_in(&ra, Some(&a)), snapshot_in(&full, Some(&fresh)));
 }
+
+/// `held` changed by the answer's `diagnosticsSplice` (as `spliceList` in
+/// www/src/engine/parts.js does it).
+fn spliced(held: &[Diag], r: &JsValue) -> Vec<Diag> {
+    let s = get(r, "diagnosticsSplice");
+    let (at, remove) = (num(&s, "at") as usize, num(&s, "remove") as usize);
+    let items: Vec<Diag> = field(&s, "items");
+    let offsets = js_sys::Uint32Array::from(get(&s, "offsets")).to_vec();
+    let mut list: Vec<Diag> = held.to_vec();
+    list.splice(at..at + remove, items);
+    assert_eq!(offsets.len(), 2 * list.len());
+    for (d, o) in list.iter_mut().zip(offsets.chunks_exact(2)) {
+        (d.from, d.to) = (o[0], o[1]);
+    }
+    list
+}
+
+#[wasm_bindgen_test]
+fn a_caller_holding_the_last_list_is_sent_its_change() {
+    let text = program(30);
+    let r = plan(&text, "gsk980tdc", "");
+    let held: Vec<Diag> = field(&r, "diagnostics");
+    // Line 9 is the first thread's first pass: its infeed changes that thread's notes only.
+    let edited = edit_line(&text, 9, |_| "X29.05".into());
+    let r2 = again(&edited, &r, 0, 1);
+    assert!(get(&r2, "diagnostics").is_null());
+    let items: Vec<Diag> = field(&get(&r2, "diagnosticsSplice"), "items");
+    assert!(!items.is_empty() && items.len() < held.len() / 10, "{} of {}", items.len(), held.len());
+    let full: Vec<Diag> = field(&from_scratch(&edited, "gsk980tdc", ""), "diagnostics");
+    let got = spliced(&held, &r2);
+    assert_eq!(format!("{got:?}"), format!("{full:?}"));
+    // A comment typed above moves every offset and changes no entry: nothing is sent.
+    let commented = edit_line(&edited, 2, |l| format!("{l} (spindle)"));
+    let r3 = again(&commented, &r2, 0, 1);
+    assert!(get(&r3, "diagnostics").is_null() && get(&r3, "diagnosticsSplice").is_undefined());
+    // A caller holding another list (not the last answered) is sent the whole list.
+    let other = edit_line(&text, 9, |_| "X29.0".into());
+    let r4 = again(&other, &r, 0, 1);
+    assert!(get(&r4, "diagnosticsSplice").is_undefined());
+    let whole: Vec<Diag> = field(&r4, "diagnostics");
+    let full: Vec<Diag> = field(&from_scratch(&other, "gsk980tdc", ""), "diagnostics");
+    assert_eq!(format!("{whole:?}"), format!("{full:?}"));
+}

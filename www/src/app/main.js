@@ -6,7 +6,7 @@
 
 import { createEditor } from '../editor/editor.js';
 import { startEngine } from '../engine/client.js';
-import { patchList } from '../engine/parts.js';
+import { patchList, spliceList } from '../engine/parts.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
 import { diagnosticRows, passHead, passLines, passRow, passVia, patchRows, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
 import { esc } from '../shared/table.js';
@@ -151,7 +151,11 @@ function onResult(m) {
   if (r.threads === undefined) r.threads = ui.result ? ui.result.threads : [];
   else if (r.threads.changes) r.threads = patchList(ui.result ? ui.result.threads : [], r.threads);
   if (r.passes === undefined) r.passes = ui.result ? ui.result.passes : null;
-  if (r.diagnostics === null) r.diagnostics = ui.result ? ui.result.diagnostics : [];
+  if (r.diagnosticsSplice) {
+    r.diagnostics = spliceList(ui.result ? ui.result.diagnostics : [], r.diagnosticsSplice);
+    delete r.diagnosticsSplice;
+    editor.setDiagnosticsSoon(r.diagnostics);
+  } else if (r.diagnostics === null) r.diagnostics = ui.result ? ui.result.diagnostics : [];
   else editor.setDiagnosticsSoon(r.diagnostics);
   const t0 = performance.now();
   update({ result: r, thread: r.thread ?? 0 });

@@ -10,7 +10,7 @@
 // includes an edit is on screen), hover, pick, reply, error.
 
 import { SceneView } from '../view/sceneview.js';
-import { HeldParts } from './parts.js';
+import { HeldParts, spliceList } from './parts.js';
 
 /** The views, in the order of the session's `shown` keys. */
 const VIEWS = ['side', 'tooth', 'starts'];
@@ -34,7 +34,10 @@ export class Engine {
     this.held = new HeldParts();
     this.lang = 'en';
     this.result = null;
-    this.diagnosticsKey = -1;
+    this.diagnosticsKey = -1; // the key of the diagnostics list held (`diagnostics`)
+    this.diagnostics = [];
+    this.pageDiagnosticsKey = -1; // the key of the list the page holds
+    this.lastSplice = null; // {base, key, splice}: the change the session answered last
     this.thread = 0;
     this.start = 1;
     this.hover = null;
@@ -104,7 +107,7 @@ export class Engine {
     for (const v of Object.values(this.views)) v.relabel();
     if (!this.result) return;
     const r = this.held.fill(this.session.relabel());
-    this.diagnosticsKey = r.diagnosticsKey;
+    this.holdDiagnostics(r);
     Object.assign(this.result, { diagnostics: r.diagnostics, diagnosticsKey: r.diagnosticsKey });
     this.postResult(this.result, null, null);
   }
@@ -125,6 +128,7 @@ export class Engine {
     } catch (e) {
       // A planner failure (which must not happen) leaves the drawings on screen as they are (the views cannot draw).
       this.diagnosticsKey = -1;
+      this.lastSplice = null;
       this.held.clear();
       this.post({ type: 'error', message: String(e && e.message ? e.message : e), crashed: true });
       return;
@@ -144,10 +148,33 @@ export class Engine {
     const before = this.thread;
     this.result = r;
     this.thread = r.thread ?? 0;
-    if (r.diagnostics !== null) this.diagnosticsKey = r.diagnosticsKey;
+    this.holdDiagnostics(r);
     this.show(r.shown, r.stale);
     if (this.thread !== before) this.views.side?.relabel();
     this.refreshHighlight();
+  }
+
+  /** Holds answer `r`'s diagnostics (sent whole, unchanged or as a change) and sets the whole list on `r`. */
+  holdDiagnostics(r) {
+    if (r.diagnosticsSplice) {
+      this.lastSplice = { base: this.diagnosticsKey, key: r.diagnosticsKey, splice: r.diagnosticsSplice };
+      this.diagnostics = spliceList(this.diagnostics, r.diagnosticsSplice);
+    } else if (r.diagnostics !== null) {
+      this.lastSplice = null;
+      this.diagnostics = r.diagnostics;
+    }
+    this.diagnosticsKey = r.diagnosticsKey;
+    r.diagnostics = this.diagnostics;
+  }
+
+  /** The diagnostics for the page: null when it holds them, the change when it holds the list before it, else the list. */
+  diagnosticsForPage(r) {
+    const page = this.pageDiagnosticsKey;
+    this.pageDiagnosticsKey = r.diagnosticsKey;
+    if (r.diagnosticsKey === page) return { diagnostics: null };
+    const s = this.lastSplice;
+    if (s && s.base === page && s.key === r.diagnosticsKey) return { diagnostics: null, diagnosticsSplice: s.splice };
+    return { diagnostics: r.diagnostics };
   }
 
   /** Each view shows the scene of its key (`shown`: side, tooth, starts). */
@@ -183,7 +210,7 @@ export class Engine {
         goodPlan: r.goodPlan,
         comparison: r.comparison,
         settingErrors: r.settingErrors,
-        diagnostics: r.diagnostics,
+        ...this.diagnosticsForPage(r),
         diagnosticsKey: r.diagnosticsKey,
         threads,
         thread: r.thread,

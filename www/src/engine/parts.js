@@ -57,3 +57,25 @@ export function patchList(held, d) {
   if (list.length !== d.length || list.some((e) => e === undefined)) throw new Error('a list changed entry by entry has gaps');
   return list;
 }
+
+/**
+ * The diagnostics list `held` changed by `s` (`update`'s
+ * `diagnosticsSplice`, src/wasm/listed.rs): `s.remove` entries from `s.at`
+ * replaced by `s.items`, every entry at its offsets from `s.offsets`
+ * (`[from, to]` each). A new list; an entry whose offsets did not move is
+ * the same object.
+ */
+export function spliceList(held, s) {
+  if (!Array.isArray(held)) throw new Error('a list changed in place that is not held');
+  const n = held.length - s.remove + s.items.length;
+  if (s.at + s.remove > held.length || s.offsets.length !== 2 * n) throw new Error('a list change that does not fit the list held');
+  const list = new Array(n);
+  const after = s.at + s.items.length;
+  for (let i = 0; i < n; i++) {
+    const d = i < s.at ? held[i] : i < after ? s.items[i - s.at] : held[i - s.items.length + s.remove];
+    const from = s.offsets[2 * i];
+    const to = s.offsets[2 * i + 1];
+    list[i] = d.from === from && d.to === to ? d : { ...d, from, to };
+  }
+  return list;
+}
