@@ -79,6 +79,32 @@ try {
   check('an edit gives the same sixth pass both ways', a2.rows.at(-1) === '45.3' && JSON.stringify(a2.rows) === JSON.stringify(b2.rows), JSON.stringify([a2.rows, b2.rows]));
   // Hovering pass 6 marks it: the halos are in the display list, the same both ways.
   check('hovering pass 6 marks it, the same display lists both ways', a2.side.marked && a2.side.digest === b2.side.digest && a2.tooth.digest === b2.tooth.digest, `${a2.side.marked} / ${b2.side.marked}`);
+  // Keystrokes go to the engine as changes to the text it holds; edits of every kind leave it the editor's text.
+  for (const page of [worker, onPage]) {
+    const mode = await page.evaluate(() => window.__screwcut.mode);
+    const engineText = () => page.evaluate(() => window.__screwcut.inspect('text'));
+    const same = async (what) => {
+      await page.waitForFunction(() => window.__screwcut.result && document.body.dataset.behind !== 'true', null, { timeout: 10_000 }).catch(() => {});
+      await page.waitForTimeout(300);
+      const [held, text] = [await engineText(), await page.evaluate(() => window.__screwcut.text())];
+      check(`${mode}: ${what}: the engine plans the editor's text, sent as changes`, held.text === text && held.sentAs === 'edits', `${held.sentAs}, ${held.text?.length} / ${text.length} characters`);
+    };
+    await same('after typing a pass');
+    // One change in three places (several cursors, a paste of lines), undone, redone and undone again.
+    await page.evaluate(() => {
+      const v = window.__screwcut.editor().view;
+      const l2 = v.state.doc.line(2);
+      const l4 = v.state.doc.line(4);
+      v.dispatch({ changes: [{ from: l2.to, insert: ' (a)' }, { from: l4.from, to: l4.from + 1, insert: 'N' }, { from: v.state.doc.length, insert: 'G00 X60\nZ80\n' }] });
+    });
+    await same('after one change in three places');
+    await page.keyboard.press('Control+z');
+    await same('after undo');
+    await page.keyboard.press('Control+Shift+z');
+    await same('after redo');
+    await page.keyboard.press('Control+z');
+    await same('after undo again');
+  }
   await worker.close();
   await onPage.close();
 

@@ -20,6 +20,7 @@ import { Planning } from './planning.js';
 import { inherited, Library } from './programs.js';
 import { SettingsPanel } from './settingspanel.js';
 import { DEFAULT_DIALECT, encodeFragment, knownDialect } from './share.js';
+import { TextSync } from './textsync.js';
 import { bindViewBar } from './viewbar.js';
 import { openExpand, openWizard } from './wizard.js';
 
@@ -36,9 +37,19 @@ window.__screwcut = probe;
 const state = {
   dialect: 'gsk980tdc',
   settings: {}, // dialect → {name: value}
-  program: '',
   lang: 'en',
 };
+/** The program as last set (null: the editor's text, read when asked for: typing builds no text). */
+let programSet = '';
+Object.defineProperty(state, 'program', {
+  enumerable: true,
+  get: () => programSet ?? editor.text(),
+  set: (text) => {
+    programSet = text;
+  },
+});
+/** What the engine holds of the editor's text (a keystroke sends the changes). */
+const sync = new TextSync();
 
 let client;
 let settingsPanel;
@@ -109,7 +120,13 @@ function editorWords() {
  */
 function makeEditor(doc) {
   if (editor) editor.view.destroy();
-  editor = createEditor($('editor'), { doc, onChange: replan, onCursor, words: editorWords() });
+  const onChange = (changes, before, after) => {
+    // The program is the editor's from now on.
+    programSet = null;
+    sync.changed(changes, before, after);
+    replan();
+  };
+  editor = createEditor($('editor'), { doc, onChange, onCursor, words: editorWords() });
   editor.view.dom.addEventListener('keydown', (e) => planning.input(e.timeStamp), true);
   editor.view.dom.addEventListener('beforeinput', (e) => planning.input(e.timeStamp, true), true);
 }
@@ -118,9 +135,9 @@ function makeEditor(doc) {
 
 /** Sends the text to the engine; while a plan is in flight, only the latest text follows it. */
 function replan() {
-  const text = editor.text();
-  if (!planning.plan({ text, dialect: state.dialect, settings: settingsText(), thread: ui.thread, start: ui.start }, editor.view.state.doc)) return;
-  state.program = text;
+  const doc = editor.view.state.doc;
+  const request = () => ({ ...sync.take(doc), dialect: state.dialect, settings: settingsText(), thread: ui.thread, start: ui.start });
+  if (!planning.plan(request, doc)) return;
   persist();
 }
 
@@ -132,7 +149,15 @@ const HANDLERS = {
   pick: (m) => onPick(m.info),
   error: (m) => {
     probe.errors.push(m.message);
+    if (m.resync) {
+      // The engine could not follow the changes sent: the whole text goes next.
+      sync.reset();
+      planning.failed();
+      replan();
+      return;
+    }
     if (m.crashed) {
+      sync.reset();
       planning.failed();
       banner(t('crashed'));
     }

@@ -52,8 +52,9 @@ export class Planning {
   }
 
   /**
-   * Sends a plan of `request` (`{text, dialect, settings, thread, start}`) of
-   * document `doc`, unless one is in flight (then it follows that one). Returns whether it was sent.
+   * Sends a plan of `request()` (`{text or edits, dialect, settings, thread,
+   * start}`, asked for only when it is sent) of document `doc`, unless one
+   * is in flight (then it follows that one). Returns whether it was sent.
    */
   plan(request, doc) {
     const s = this.s;
@@ -71,7 +72,7 @@ export class Planning {
       s.inputs.set(s.seq, s.pendingInput);
       s.pendingInput = null;
     }
-    this.send({ type: 'plan', seq: s.seq, ...request, input: s.inputs.get(s.seq) ?? null, fresh: s.fresh, keep });
+    this.send({ type: 'plan', seq: s.seq, ...request(), input: s.inputs.get(s.seq) ?? null, fresh: s.fresh, keep });
     s.fresh = false;
     if (s.behindSince === null) s.behindSince = s.inFlight.t0;
     this.armBehind();

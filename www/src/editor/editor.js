@@ -33,8 +33,9 @@ function whenIdle(f) {
 
 /**
  * Creates the editor in `parent`.
- * onChange() runs on every document change (read the text with `text()`:
- * building it costs a walk of the whole document); onCursor(line) when the
+ * onChange(changes, before, after) runs on every document change (a
+ * CodeMirror ChangeSet and the documents before and after it; read the
+ * text with `text()`: building it costs a walk of the whole document); onCursor(line) when the
  * cursor moves to another line.
  */
 export function createEditor(parent, { doc, onChange, onCursor, words }) {
@@ -65,7 +66,7 @@ export function createEditor(parent, { doc, onChange, onCursor, words }) {
         EditorView.updateListener.of((u) => {
           if (u.docChanged) {
             if (pending) pending.changes = pending.changes ? pending.changes.compose(u.changes) : u.changes;
-            onChange();
+            onChange(u.changes, u.startState.doc, u.state.doc);
           }
           if (u.selectionSet || u.docChanged) {
             const line = u.state.doc.lineAt(u.state.selection.main.head).number;

@@ -46,6 +46,8 @@ export class Engine {
     this.sentThreads = null;
     this.sentPasses = null;
     this.roughing = false; // the roughing cuts of G71/G72 are drawn on demand
+    this.text = null; // the text last planned (a plan may come as changes to it)
+    this.sentAs = null; // how it came: 'text' or 'edits'
   }
 
   handle(m) {
@@ -118,7 +120,18 @@ export class Engine {
    * no greyed drawing of the program before; `keep`: the page says the
    * drawing on screen was left (the session keeps it as the good one).
    */
-  on_plan({ seq, text, dialect, settings, thread, start, input, fresh, keep }) {
+  on_plan({ seq, text, edits, length, dialect, settings, thread, start, input, fresh, keep }) {
+    if (edits) {
+      text = this.text === null ? null : applyEdits(this.text, edits);
+      if (text === null || text.length !== length) {
+        // Changes to a text not held (or not the page's): the page sends the whole text.
+        this.text = null;
+        this.post({ type: 'error', message: 'the text changes do not fit the text held', resync: true });
+        return;
+      }
+    }
+    this.text = text;
+    this.sentAs = edits ? 'edits' : 'text';
     if (thread !== undefined) this.thread = thread;
     if (start !== undefined) this.start = start;
     const t0 = performance.now();
@@ -347,6 +360,8 @@ export class Engine {
           Object.entries(this.views).map(([k, view]) => [k, { draw: view.lastDraw, paint: view.lastPaint, ops: view.list ? view.list.ops.length / 7 : 0, numbers: view.list ? view.list.nums.length : 0 }]),
         ),
       labels: () => v && v.labels(),
+      // The text the engine planned last and how it came (whole or as changes).
+      text: () => ({ text: this.text, sentAs: this.sentAs }),
       svg: () => v && v.svg(),
       items: () => this.session.items_of_style(name, format),
       point: () => {
@@ -379,4 +394,16 @@ function listChanges(before, now) {
     }
   }
   return { changes, length: now.length };
+}
+
+/** `text` with `edits` (`[from, to, inserted]`, in order, offsets in `text`) made. */
+export function applyEdits(text, edits) {
+  let out = '';
+  let at = 0;
+  for (const [from, to, inserted] of edits) {
+    if (from < at || to < from || to > text.length) return null;
+    out += text.slice(at, from) + inserted;
+    at = to;
+  }
+  return out + text.slice(at);
 }
