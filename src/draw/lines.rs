@@ -3,8 +3,12 @@
 //! scene; a label's box on the page is taken back to world coordinates to
 //! find the lines near it.
 
+use std::collections::HashSet;
+use std::hash::BuildHasherDefault;
+
 use super::Transform;
 use crate::diagram::scene::{Pt, Rect, Scene, Shape, Style};
+use crate::hash::KeyHasher;
 
 /// Most of the drawing's segments labels keep off (those of threads first).
 const MAX_SEGMENTS: usize = 20_000;
@@ -179,13 +183,27 @@ fn segments(shape: &Shape, out: &mut Vec<[f64; 4]>) {
 }
 
 /// The drawing's lines that labels keep off: every segment of the items
-/// whose lines may not be crossed, the threads' items first, at most
-/// [`MAX_SEGMENTS`], in a grid over the scene's focus.
+/// whose lines may not be crossed, the threads' items first, each once
+/// (passes and rapids over the same path repeat them: a repeat would only
+/// cost the grid), at most [`MAX_SEGMENTS`], in a grid over the scene's focus.
 pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
     let mut out = Vec::new();
+    let mut seen: HashSet<[u64; 4], BuildHasherDefault<KeyHasher>> = HashSet::default();
     'all: for of_threads in [true, false] {
         for item in scene.items.iter().filter(|i| i.thread.is_some() == of_threads && !crossable(i.style)) {
+            let from = out.len();
             segments(&item.shape, &mut out);
+            let mut kept = from;
+            for k in from..out.len() {
+                let [x0, y0, x1, y1] = out[k];
+                // Either direction is the same line.
+                let key = if (x0, y0) <= (x1, y1) { [x0, y0, x1, y1] } else { [x1, y1, x0, y0] };
+                if seen.insert(key.map(f64::to_bits)) {
+                    out[kept] = out[k];
+                    kept += 1;
+                }
+            }
+            out.truncate(kept);
             if out.len() > MAX_SEGMENTS {
                 out.truncate(MAX_SEGMENTS);
                 break 'all;

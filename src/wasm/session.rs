@@ -166,6 +166,15 @@ impl Session {
         out
     }
 
+    /// Frees the scenes no longer shown (call it after the drawing is on
+    /// screen; else they are freed when the next plan arrives).
+    pub fn tidy(&self) {
+        let _ = self.with_state_mut(|st| {
+            st.shown.tidy();
+            Ok(())
+        });
+    }
+
     /// Shows (or hides) the roughing cuts of G71/G72 in the drawings from now on (hidden at first).
     pub fn set_roughing(&self, on: bool) {
         self.roughing.set(on);

@@ -56,6 +56,10 @@ pub struct Shown {
     overlay: Option<(u64, Rc<[Vec<Item>; 2]>)>,
     /// The side and tooth scenes shown with the overlay.
     merged: [Option<Rc<Scene>>; 2],
+    /// Scenes no longer shown, freed by [`Shown::tidy`] after the drawing
+    /// is on screen (freeing a long program's scene is milliseconds of
+    /// work the keystroke need not wait for), else when the next plan arrives.
+    retired: Vec<Scenes>,
 }
 
 impl Shown {
@@ -63,21 +67,28 @@ impl Shown {
     /// alarm; `alarm`: it has one; `fresh`: the text is another program's;
     /// `keep`: the page says the drawing on screen before this edit was left.
     pub fn planned(&mut self, scenes: Scenes, drawable: bool, alarm: bool, fresh: bool, keep: bool) {
+        // The scenes retired by the plan before, unless tidied since: at most one plan's wait.
+        self.retired.clear();
         if fresh {
-            self.good = None;
+            self.retired.extend(self.good.take());
         }
         if keep {
             if let Some(c) = self.candidate.take() {
-                self.good = Some(c);
+                self.retired.extend(self.good.replace(c));
             }
         }
-        self.candidate = None;
-        self.current = scenes;
+        self.retired.extend(self.candidate.take());
+        self.retired.push(std::mem::replace(&mut self.current, scenes));
         self.stale = alarm && self.good.is_some();
         if !self.stale && drawable {
             self.candidate = Some(self.current.clone());
         }
         self.merge();
+    }
+
+    /// Frees the scenes no longer shown.
+    pub fn tidy(&mut self) {
+        self.retired.clear();
     }
 
     /// Lays another program's passes (`items` of its side and tooth sections, numbered `id`) over the drawings; none: takes them off.
@@ -180,5 +191,30 @@ mod tests {
         s.planned(scenes(6.0), false, true, true, false);
         assert_eq!((s.keys()[0], s.stale(), s.good_plan()), (6.0, false, None));
         assert!(s.scene(Which::Tooth).is_none());
+    }
+
+    #[test]
+    fn scenes_no_longer_shown_are_freed_by_tidy_or_the_next_plan() {
+        let mut s = Shown::default();
+        let first = scenes(1.0);
+        let weak = Rc::downgrade(first.scenes[0].as_ref().expect("a side scene"));
+        s.planned(first, true, false, true, false);
+        s.planned(scenes(2.0), true, false, false, false);
+        // Kept past the plan that replaced it, freed by tidy.
+        assert!(weak.upgrade().is_some());
+        s.tidy();
+        assert!(weak.upgrade().is_none());
+        // Without tidy, the next plan frees it.
+        let third = scenes(3.0);
+        let weak = Rc::downgrade(third.scenes[0].as_ref().expect("a side scene"));
+        s.planned(third, true, false, false, false);
+        s.planned(scenes(4.0), true, false, false, false);
+        assert!(weak.upgrade().is_some());
+        s.planned(scenes(5.0), true, false, false, false);
+        assert!(weak.upgrade().is_none());
+        // The good drawing is kept while it is shown.
+        s.planned(scenes(6.0), false, true, false, true);
+        s.tidy();
+        assert_eq!((s.keys()[0], s.stale()), (5.0, true));
     }
 }

@@ -48,6 +48,7 @@ export class Engine {
     this.roughing = false; // the roughing cuts of G71/G72 are drawn on demand
     this.text = null; // the text last planned (a plan may come as changes to it)
     this.sentAs = null; // how it came: 'text' or 'edits'
+    this.tidying = false; // a tidy of the session is queued
   }
 
   handle(m) {
@@ -154,6 +155,14 @@ export class Engine {
     if (this.immediate) for (const v of Object.values(this.views)) v.flush();
     this.maybeFrameNow();
     this.postResult(r, seq, { plan: t1 - t0, views: t2 - t1, draw: performance.now() - t2 });
+    // The scenes no longer shown are freed after this task, once the drawing is on screen.
+    if (!this.tidying) {
+      this.tidying = true;
+      setTimeout(() => {
+        this.tidying = false;
+        this.session.tidy();
+      }, 0);
+    }
   }
 
   /** Shows answer `r` in the views: what the session shows (the last good drawing, greyed, while the text has an alarm). */
