@@ -49,6 +49,7 @@ pub mod message;
 pub mod motion;
 pub mod num;
 pub mod order;
+pub mod parts;
 pub mod plan;
 pub mod planner;
 pub mod settings;

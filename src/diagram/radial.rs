@@ -78,9 +78,9 @@ impl Break {
 
 /// The lowest and highest radius of `items`, the axis and the diameter
 /// dimensions left out (what [`breaks`] weighs).
-pub fn extent(items: &[Item]) -> (f64, f64) {
+pub fn extent<'a>(items: impl IntoIterator<Item = &'a Item>) -> (f64, f64) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for item in items.iter().filter(|i| !matches!(i.style, Style::Axis | Style::Diameter)) {
+    for item in items.into_iter().filter(|i| !matches!(i.style, Style::Axis | Style::Diameter)) {
         item.each_point(|p| (lo, hi) = (lo.min(p[1]), hi.max(p[1])));
     }
     (lo, hi)
@@ -124,11 +124,11 @@ pub fn breaks(plan: &Plan, (lo, hi): (f64, f64)) -> Vec<Break> {
 /// radii through each break, the bounds and focus too, and a break line
 /// with its note across the focus.
 pub fn apply(scene: &mut Scene, plan: &Plan) {
-    let list = breaks(plan, extent(&scene.items));
+    let list = breaks(plan, extent(scene.items.iter()));
     if list.is_empty() {
         return;
     }
-    for item in &mut scene.items {
+    for item in scene.items.iter_mut() {
         map_item(&list, item);
     }
     finish(&list, scene);

@@ -412,13 +412,16 @@ impl Item {
     }
 }
 
+/// A scene's items, back to front, in parts a scene may share with others ([`crate::parts`]).
+pub type Items = crate::parts::Parts<Item>;
+
 /// A view's drawing.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Scene {
     /// Which view.
     pub view: ViewKind,
     /// The items, back to front.
-    pub items: Vec<Item>,
+    pub items: Items,
     /// Extent of every item.
     pub bounds: Rect,
     /// Extent the view fits to first (the threads, without far-away rapids).
@@ -428,7 +431,7 @@ pub struct Scene {
 impl Scene {
     /// An empty scene.
     pub fn new(view: ViewKind) -> Scene {
-        Scene { view, items: Vec::new(), bounds: Rect::EMPTY, focus: Rect::EMPTY }
+        Scene { view, items: Items::new(), bounds: Rect::EMPTY, focus: Rect::EMPTY }
     }
 
     /// Adds an item, growing the bounds; `focus` also grows the focus.

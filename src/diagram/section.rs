@@ -90,7 +90,7 @@ pub fn apply(scene: &mut Scene, plan: &Plan) {
         it.each_point(|p| scene.bounds.add(p));
     }
     let at = usize::from(scene.items.first().is_some_and(|i| i.style == Style::Axis));
-    scene.items.splice(at..at, items);
+    scene.items.with_vec(|v| drop(v.splice(at..at, items)));
 }
 
 #[cfg(test)]

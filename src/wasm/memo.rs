@@ -6,6 +6,7 @@
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
+use std::sync::Arc;
 
 use crate::motion::Move;
 use crate::plan::Plan;
@@ -29,7 +30,7 @@ type ByKey = HashMap<u64, Chunk, BuildHasherDefault<KeyHasher>>;
 
 /// A run of items with what the whole scene needs of it.
 struct Chunk {
-    items: Vec<Item>,
+    items: Arc<Vec<Item>>,
     bounds: Rect,
     focus: Rect,
     /// Points of the passes' rapids (they may join the focus).
@@ -37,7 +38,7 @@ struct Chunk {
     /// The lowest and highest radius of the items ([`radial::extent`]).
     extent: (f64, f64),
     /// The items drawn through the radial breaks they were last drawn through.
-    mapped: Option<(Vec<Break>, Vec<Item>)>,
+    mapped: Option<(Vec<Break>, Arc<Vec<Item>>)>,
 }
 
 impl Chunk {
@@ -54,21 +55,27 @@ impl Chunk {
         for item in s.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
             item.each_point(|p| rapids.push(p));
         }
-        let extent = radial::extent(&s.items);
-        Chunk { items: s.items, bounds: s.bounds, focus: s.focus, rapids, extent, mapped: None }
+        let extent = radial::extent(s.items.iter());
+        let items = Arc::new(s.items.into_vec());
+        Chunk { items, bounds: s.bounds, focus: s.focus, rapids, extent, mapped: None }
     }
 
-    /// The items drawn through the breaks `list`: mapped once per list, then kept.
-    fn drawn(&mut self, list: &[Break]) -> &[Item] {
+    /// The items drawn through the breaks `list`: mapped once per list, then
+    /// kept; shared with the scenes they are put in.
+    fn drawn(&mut self, list: &[Break]) -> Arc<Vec<Item>> {
         if list.is_empty() {
-            return &self.items;
+            return self.items.clone();
         }
-        if self.mapped.as_ref().is_none_or(|(l, _)| l.as_slice() != list) {
-            let mut items = self.items.clone();
-            items.iter_mut().for_each(|i| radial::map_item(list, i));
-            self.mapped = Some((list.to_vec(), items));
+        match &self.mapped {
+            Some((l, items)) if l.as_slice() == list => items.clone(),
+            _ => {
+                let mut items = (*self.items).clone();
+                items.iter_mut().for_each(|i| radial::map_item(list, i));
+                let items = Arc::new(items);
+                self.mapped = Some((list.to_vec(), items.clone()));
+                items
+            }
         }
-        self.mapped.as_ref().map_or(&[], |(_, items)| items.as_slice())
     }
 }
 
@@ -118,7 +125,7 @@ impl Pieces {
     /// Keeps a piece built anyway (it is cheap and rare), under the key of its content.
     fn put(&mut self, chunk: Chunk) -> u64 {
         let mut s = Scene::new(ViewKind::Side);
-        s.items = chunk.items.clone();
+        s.items.push_shared(chunk.items.clone());
         let key = packed_key(&pack(&s));
         self.take(key, || chunk)
     }
@@ -167,16 +174,16 @@ impl SideMemo {
         // then every item through the radial breaks.
         let mut scene = b.head;
         crate::diagram::section::apply(&mut scene, plan);
-        let mut extent = radial::extent(&scene.items);
+        let mut extent = radial::extent(scene.items.iter());
         for e in b.order.iter().map(|k| self.chunks[k].extent) {
             extent = (extent.0.min(e.0), extent.1.max(e.1));
         }
         let list = radial::breaks(plan, extent);
         scene.items.iter_mut().for_each(|i| radial::map_item(&list, i));
-        scene.items.reserve(b.order.iter().map(|k| self.chunks[k].items.len()).sum());
+        // The pieces go in whole, shared: no item is copied.
         for k in &b.order {
             if let Some(c) = self.chunks.get_mut(k) {
-                scene.items.extend(c.drawn(&list).iter().cloned());
+                scene.items.push_shared(c.drawn(&list));
             }
         }
         radial::finish(&list, &mut scene);
