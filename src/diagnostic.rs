@@ -189,6 +189,16 @@ impl Diagnostics {
         }
     }
 
+    /// Records a copy of `item` (kept from an earlier reading): copied only
+    /// when it will be kept, else counted as dropped.
+    pub fn push_copy(&mut self, item: &Item) {
+        if self.items.len() < self.limit {
+            self.items.push(item.clone());
+        } else {
+            self.drop_one(item.1);
+        }
+    }
+
     /// Records a diagnostic with its own call chain.
     pub fn push_item(&mut self, item: Item) {
         if self.items.len() < self.limit {

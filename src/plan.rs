@@ -481,8 +481,8 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    finish_with(text, settings, out, starts, &[], |threads, moves, spans, limit| {
-        let mut advice = Diagnostics::with_limit(limit);
+    finish_with(text, settings, out, starts, &[], |threads, moves, spans, room| {
+        let mut advice = Diagnostics::with_limit(room);
         for i in 0..threads.len() {
             finish_thread(threads, i, moves, settings, text, &mut advice, spans);
         }
@@ -512,7 +512,7 @@ pub(crate) fn finish_thread(
 }
 
 /// [`finish`] with the advice step given by the caller: `advice(threads,
-/// moves, spans, limit)` finishes the threads and returns their
+/// moves, spans, room)` finishes the threads and returns their
 /// diagnostics; a message that is one of `before`'s (the last plan's) keeps
 /// its text.
 pub(crate) fn finish_with(
@@ -530,7 +530,8 @@ pub(crate) fn finish_with(
         let end = text[start..].find(['\n', '\r']).map_or(text.len(), |e| start + e);
         Span::new(start, end)
     };
-    let found = advice(&mut threads, &moves, &spans, diags.limit());
+    // The advice's collector keeps only what this one has room for (the rest is counted).
+    let found = advice(&mut threads, &moves, &spans, diags.limit().saturating_sub(diags.len()));
     diags.absorb(found);
     // Across threads: a pass on another helix (recomputed every time, it is cheap),
     // found after the reading: in no call.

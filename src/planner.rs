@@ -304,24 +304,26 @@ impl Planner {
         *advice = old_advice.drain(..kept_threads.min(old_advice.len())).collect();
         let join = self.join.as_ref();
         let settings = &self.settings;
-        let plan = finish_with(text, settings, out, self.line_starts.clone(), &before, |threads, moves, spans, _| {
-            for i in advice.len()..threads.len() {
-                // A thread of the last reading's rest, finished then, stays finished when
-                // the edit is not in the text it was finished from.
-                if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &old_advice, kept_threads)) {
-                    advice.push(kept);
-                    continue;
+        let plan =
+            finish_with(text, settings, out, self.line_starts.clone(), &before, |threads, moves, spans, room| {
+                for i in advice.len()..threads.len() {
+                    // A thread of the last reading's rest, finished then, stays finished when
+                    // the edit is not in the text it was finished from.
+                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &old_advice, kept_threads)) {
+                        advice.push(kept);
+                        continue;
+                    }
+                    let mut d = Diagnostics::with_limit(usize::MAX);
+                    finish_thread(threads, i, moves, settings, text, &mut d, spans);
+                    advice.push(d.into_items());
                 }
-                let mut d = Diagnostics::with_limit(usize::MAX);
-                finish_thread(threads, i, moves, settings, text, &mut d, spans);
-                advice.push(d.into_items());
-            }
-            let mut all = Diagnostics::with_limit(usize::MAX);
-            for item in advice.iter().flatten() {
-                all.push_item(item.clone());
-            }
-            all
-        });
+                // Copies of the kept advice, only as many as the plan keeps (the rest is counted).
+                let mut all = Diagnostics::with_limit(room);
+                for item in advice.iter().flatten() {
+                    all.push_copy(item);
+                }
+                all
+            });
         self.plan.insert(plan)
     }
 

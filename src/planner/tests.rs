@@ -110,3 +110,37 @@ fn an_edit_inside_a_multi_byte_character() {
         assert_eq!(p.plan(&text).clone(), crate::plan(&text, &s));
     }
 }
+
+/// With more findings than the plan keeps (`limits.diagnostics`), an edit
+/// gives the kept ones, the count of the rest and where it starts exactly
+/// as a full plan: the kept advice is copied only as far as the plan keeps it.
+#[test]
+fn an_edit_past_the_diagnostics_limit_keeps_and_counts_as_a_full_plan() {
+    let mut s = Settings::new(Dialect::Gsk980tdc);
+    s.set(crate::settings::P::LimitDiagnostics, 7.0);
+    // Threads on their own turned diameters at S300, lead-in δ1 = 0: several findings each.
+    let mut text = String::from("G50 X100 Z100\nS300 M03 T0101\n");
+    for k in 0..40 {
+        let d = 30 + k % 20;
+        text += &format!("G00 X{} Z70\nG01 X{d} F0.2\nZ20\nX{}\nG00 Z70\n", d + 10, d + 5);
+        for x in [0.9, 1.5, 2.1] {
+            text += &format!("X{:.1}\nG32 Z13 F2\nG00 X{}\nZ70\n", f64::from(d) - x, d + 10);
+        }
+    }
+    let mut p = Planner::new(s.clone());
+    let first = p.plan(&text).clone();
+    assert_eq!(first.diagnostics.len(), 8, "seven kept and the note of the rest");
+    let more = |plan: &Plan| {
+        plan.diagnostics.iter().find(|d| d.code == crate::Code::MoreDiagnostics).map(|d| (d.message.clone(), d.line))
+    };
+    assert!(more(&first).is_some());
+    // A pass of the first thread (line 8), then one near the end.
+    for (at, x) in [(7, "29.05"), (640, "40.95")] {
+        let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+        lines[at] = format!("X{x}");
+        text = lines.join("\n") + "\n";
+        let inc = p.plan(&text).clone();
+        let full = crate::plan(&text, &s);
+        assert_eq!((more(&inc), &inc.diagnostics), (more(&full), &full.diagnostics), "edit at line {}", at + 1);
+    }
+}
