@@ -309,7 +309,7 @@ impl Planner {
                 for i in advice.len()..threads.len() {
                     // A thread of the last reading's rest, finished then, stays finished when
                     // the edit is not in the text it was finished from.
-                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &old_advice, kept_threads)) {
+                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &mut old_advice, kept_threads)) {
                         advice.push(kept);
                         continue;
                     }
@@ -545,9 +545,9 @@ impl Join {
     /// reading (the one before it kept too) whose text — from after the
     /// thread before it to its first line, where its comments are looked
     /// for — the edit did not touch: the last
-    /// reading's, moved with the edit. `old` holds the last plan's advice
-    /// after its first `dropped` threads.
-    fn advice_of(&self, threads: &[Thread], i: usize, old: &[Vec<Item>], dropped: usize) -> Option<Vec<Item>> {
+    /// reading's, moved with the edit (taken out of `old`, which holds the
+    /// last plan's advice after its first `dropped` threads: each is taken once).
+    fn advice_of(&self, threads: &[Thread], i: usize, old: &mut [Vec<Item>], dropped: usize) -> Option<Vec<Item>> {
         if i <= self.new {
             return None;
         }
@@ -557,8 +557,9 @@ impl Join {
         if from <= self.lines.1 && t.line >= self.lines.0 {
             return None;
         }
-        let items = old.get(j)?;
-        Some(items.iter().map(|(m, span, via)| (m.clone(), self.shift.span(*span), via.clone())).collect())
+        let mut items = std::mem::take(old.get_mut(j)?);
+        items.iter_mut().for_each(|item| item.1 = self.shift.span(item.1));
+        Some(items)
     }
 }
 
