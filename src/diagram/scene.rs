@@ -50,6 +50,11 @@ impl Rect {
         !(self.x0 <= self.x1 && self.y0 <= self.y1)
     }
 
+    /// Whether `p` is inside (edges included).
+    pub fn contains(&self, p: Pt) -> bool {
+        p[0] >= self.x0 && p[0] <= self.x1 && p[1] >= self.y0 && p[1] <= self.y1
+    }
+
     /// Grows to include `p` (non-finite points are ignored).
     pub fn add(&mut self, p: Pt) {
         if p[0].is_finite() && p[1].is_finite() {

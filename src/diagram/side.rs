@@ -226,18 +226,38 @@ pub fn unmatched_item(plan: &Plan, ti: usize, pi: usize) -> Item {
 /// Grows `focus` by the points of the passes' rapids that stay near it (within
 /// a quarter of its larger side), so the first fit shows the approach too.
 pub fn grow_focus(focus: &mut Rect, rapid_points: impl IntoIterator<Item = Pt>) {
-    let core = *focus;
-    if core.is_empty() {
-        return;
-    }
-    let grow = 0.25 * core.width().max(core.height());
-    let near =
-        |p: &Pt| p[0] >= core.x0 - grow && p[0] <= core.x1 + grow && p[1] >= core.y0 - grow && p[1] <= core.y1 + grow;
+    let Some(near) = near_focus(focus) else { return };
     for p in rapid_points {
-        if near(&p) {
+        if near.contains(p) {
             focus.add(p);
         }
     }
+}
+
+/// [`grow_focus`] by groups of points given with their bounds: a group
+/// wholly near the focus adds its bounds, one wholly away adds nothing, and
+/// only the others are read point by point (the same focus, fewer points read).
+pub fn grow_focus_grouped<'a>(focus: &mut Rect, groups: impl IntoIterator<Item = (Rect, &'a [Pt])>) {
+    let Some(near) = near_focus(focus) else { return };
+    for (b, points) in groups {
+        if b.is_empty() || b.x1 < near.x0 || b.x0 > near.x1 || b.y1 < near.y0 || b.y0 > near.y1 {
+            continue;
+        }
+        if near.contains([b.x0, b.y0]) && near.contains([b.x1, b.y1]) {
+            focus.union(&b);
+        } else {
+            points.iter().filter(|p| near.contains(**p)).for_each(|p| focus.add(*p));
+        }
+    }
+}
+
+/// Where a rapid's points join the focus: within a quarter of its larger side (none for an empty focus).
+fn near_focus(focus: &Rect) -> Option<Rect> {
+    if focus.is_empty() {
+        return None;
+    }
+    let grow = 0.25 * focus.width().max(focus.height());
+    Some(Rect { x0: focus.x0 - grow, y0: focus.y0 - grow, x1: focus.x1 + grow, y1: focus.y1 + grow })
 }
 
 /// The spindle axis across `bounds` (with a margin), and `bounds` grown by it.

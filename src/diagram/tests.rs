@@ -543,3 +543,38 @@ fn diameters_are_half_dimensions_from_the_axis() {
     let others: Vec<&'static str> = dims(&scene).iter().map(|(k, _)| *k).filter(|k| !k.starts_with("dia_")).collect();
     assert_eq!(others, ["lead", "length"]);
 }
+
+#[test]
+fn the_focus_grown_by_groups_of_rapids_is_the_focus_grown_point_by_point() {
+    use super::scene::Rect;
+    use super::side::{grow_focus, grow_focus_grouped};
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for round in 0..200 {
+        let core = Rect { x0: 10.0, y0: 20.0, x1: 60.0, y1: 40.0 };
+        // Groups near the focus, far from it and across its edge of reach (12.5 around it).
+        let groups: Vec<Vec<[f64; 2]>> = (0..6)
+            .map(|g| {
+                let (cx, cy, r) = (next() * 120.0 - 30.0, next() * 80.0 - 20.0, 2.0 + 20.0 * f64::from(g % 3));
+                (0..1 + round % 5).map(|_| [cx + (next() - 0.5) * r, cy + (next() - 0.5) * r]).collect()
+            })
+            .collect();
+        let (mut a, mut b) = (core, core);
+        grow_focus(&mut a, groups.iter().flatten().copied());
+        let boxes: Vec<Rect> = groups
+            .iter()
+            .map(|g| {
+                let mut r = Rect::EMPTY;
+                g.iter().for_each(|p| r.add(*p));
+                r
+            })
+            .collect();
+        grow_focus_grouped(&mut b, boxes.iter().copied().zip(groups.iter().map(Vec::as_slice)));
+        assert_eq!(a, b, "round {round}");
+    }
+}

@@ -16,8 +16,8 @@ use super::pack::pack;
 use crate::diagram::radial::{self, Break};
 use crate::diagram::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
 use crate::diagram::side::{
-    Band, Layout, axis, capped_note, detail_note, grow_focus, motion_item, pass_items, thread_items, unmatched_item,
-    work_extent_in,
+    Band, Layout, axis, capped_note, detail_note, grow_focus_grouped, motion_item, pass_items, thread_items,
+    unmatched_item, work_extent_in,
 };
 
 /// Motions per block of other motions.
@@ -33,8 +33,9 @@ struct Chunk {
     items: Arc<Vec<Item>>,
     bounds: Rect,
     focus: Rect,
-    /// Points of the passes' rapids (they may join the focus).
+    /// Points of the passes' rapids (they may join the focus), and their bounds.
     rapids: Vec<Pt>,
+    rapids_box: Rect,
     /// The lowest and highest radius of the items ([`radial::extent`]).
     extent: (f64, f64),
     /// The items drawn through the radial breaks they were last drawn through.
@@ -55,9 +56,11 @@ impl Chunk {
         for item in s.items.iter().filter(|i| i.style == Style::Rapid && i.pass.is_some()) {
             item.each_point(|p| rapids.push(p));
         }
+        let mut rapids_box = Rect::EMPTY;
+        rapids.iter().for_each(|p| rapids_box.add(*p));
         let extent = radial::extent(s.items.iter());
         let items = Arc::new(s.items.into_vec());
-        Chunk { items, bounds: s.bounds, focus: s.focus, rapids, extent, mapped: None }
+        Chunk { items, bounds: s.bounds, focus: s.focus, rapids, rapids_box, extent, mapped: None }
     }
 
     /// The items drawn through the breaks `list`: mapped once per list, then
@@ -303,7 +306,7 @@ fn head(pieces: &[&Chunk]) -> Scene {
         bounds.union(&c.bounds);
         focus.union(&c.focus);
     }
-    grow_focus(&mut focus, pieces.iter().flat_map(|c| c.rapids.iter().copied()));
+    grow_focus_grouped(&mut focus, pieces.iter().map(|c| (c.rapids_box, c.rapids.as_slice())));
     let axis_item = Item::new(axis(&mut bounds), Style::Axis);
     let mut head = Scene::new(ViewKind::Side);
     head.items.push(axis_item);
