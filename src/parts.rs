@@ -41,19 +41,19 @@ impl<T: Clone> Parts<T> {
         self.parts.iter().flat_map(|p| p.iter())
     }
 
-    /// The items in order, to change (a part shared with another scene is copied first).
+    /// The items in order, to change (a part shared with another list is copied first).
     pub fn iter_mut(&mut self) -> impl Iterator<Item = &mut T> {
         self.parts.iter_mut().flat_map(|p| Arc::make_mut(p).iter_mut())
     }
 
-    /// T `i`.
+    /// Item `i`.
     pub fn get(&self, i: usize) -> Option<&T> {
         let k = self.ends.partition_point(|&e| e <= i);
         let start = if k == 0 { 0 } else { self.ends[k - 1] };
         self.parts.get(k).and_then(|p| p.get(i - start))
     }
 
-    /// T `i`, to change (its part is copied first when shared).
+    /// Item `i`, to change (its part is copied first when shared).
     pub fn get_mut(&mut self, i: usize) -> Option<&mut T> {
         let k = self.ends.partition_point(|&e| e <= i);
         let start = if k == 0 { 0 } else { self.ends[k - 1] };
@@ -98,7 +98,7 @@ impl<T: Clone> Parts<T> {
         }
     }
 
-    /// Changes the items as one vector of this scene's own with `f`, in
+    /// Changes the items as one vector of this list's own with `f`, in
     /// any way (shared parts are copied into it first).
     pub fn with_vec<R>(&mut self, f: impl FnOnce(&mut Vec<T>) -> R) -> R {
         if self.parts.len() != 1 {
@@ -112,9 +112,19 @@ impl<T: Clone> Parts<T> {
 
     /// Takes the items out as one vector (copying only shared parts).
     pub fn into_vec(self) -> Vec<T> {
+        let len = self.len();
         match <[Arc<Vec<T>>; 1]>::try_from(self.parts) {
             Ok([one]) => Arc::unwrap_or_clone(one),
-            Err(parts) => parts.iter().flat_map(|p| p.iter().cloned()).collect(),
+            Err(parts) => {
+                let mut out = Vec::with_capacity(len);
+                for p in parts {
+                    match Arc::try_unwrap(p) {
+                        Ok(own) => out.extend(own),
+                        Err(shared) => out.extend(shared.iter().cloned()),
+                    }
+                }
+                out
+            }
         }
     }
 }
@@ -138,7 +148,7 @@ impl<T: Clone> From<Vec<T>> for Parts<T> {
     fn from(items: Vec<T>) -> Parts<T> {
         let mut out = Parts::new();
         out.push_shared(Arc::new(items));
-        // Owned by this scene alone: later pushes go into it.
+        // Owned by this list alone: later pushes go into it.
         out
     }
 }
@@ -217,5 +227,12 @@ mod tests {
         assert_eq!(a, Parts::from(a.clone().into_vec()));
         assert_eq!(format!("{a:?}"), "[9, 5, 11, 12, 13, 7]");
         assert_eq!(Parts::<i32>::new().first(), None);
+        // Out as one vector from parts owned and shared: the shared one is copied, not taken.
+        let mut b = Parts::new();
+        b.push(7);
+        b.push_shared(kept.clone());
+        b.push(8);
+        assert_eq!(b.into_vec(), [7, 1, 2, 8]);
+        assert_eq!((kept.as_slice(), Arc::strong_count(&kept)), (&[1, 2][..], 1));
     }
 }
