@@ -49,13 +49,17 @@ pub struct Diagnostic {
     /// led here, innermost first (the call chain).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub via: Vec<u32>,
+    /// The key of the message, worked out once when the diagnostic is made
+    /// (see [`Diagnostic::message_key`]).
+    #[serde(skip)]
+    key: u64,
 }
 
 impl Diagnostic {
     /// A key of the message (template and arguments): equal messages have
     /// equal keys, in every language.
     pub fn message_key(&self) -> u64 {
-        message_key(self.template, &self.args)
+        self.key
     }
 
     /// The message in `lang`.
@@ -241,10 +245,11 @@ impl Diagnostics {
                 let LineCol { line, column } = index.locate(text, span.start as usize);
                 let end = index.locate(text, span.end as usize);
                 let code = m.code();
+                let key = message_key(m.template, &m.args);
                 Diagnostic {
                     severity: code.severity(),
                     code,
-                    message: written.get(&m).unwrap_or_else(|| m.render(Lang::En)),
+                    message: written.get(key, &m).unwrap_or_else(|| m.render(Lang::En)),
                     template: m.template,
                     args: m.args,
                     line,
@@ -253,6 +258,7 @@ impl Diagnostics {
                     end_column: end.column,
                     span,
                     via: via.map_or_else(Vec::new, |v| v.to_vec()),
+                    key,
                 }
             })
             .collect();
@@ -265,7 +271,7 @@ impl Diagnostics {
 /// (template and arguments), wherever they were.
 struct Written<'a> {
     before: &'a [Diagnostic],
-    by_key: std::collections::HashMap<u64, usize, std::hash::BuildHasherDefault<crate::hash::KeyHasher>>,
+    by_key: std::collections::HashMap<u64, usize, crate::hash::BuildKeyHasher>,
 }
 
 impl<'a> Written<'a> {
@@ -274,17 +280,14 @@ impl<'a> Written<'a> {
         let mut by_key = std::collections::HashMap::default();
         by_key.reserve(before.len());
         for (i, d) in before.iter().enumerate() {
-            by_key.insert(message_key(d.template, &d.args), i);
+            by_key.insert(d.key, i);
         }
         Written { before, by_key }
     }
 
-    /// The text of a diagnostic of `before` with the same message as `m`.
-    fn get(&self, m: &Message) -> Option<String> {
-        if self.before.is_empty() {
-            return None;
-        }
-        let d = &self.before[*self.by_key.get(&message_key(m.template, &m.args))?];
+    /// The text of a diagnostic of `before` with the same message as `m`, whose key is `key`.
+    fn get(&self, key: u64, m: &Message) -> Option<String> {
+        let d = &self.before[*self.by_key.get(&key)?];
         (std::ptr::eq(d.template, m.template) && d.args == m.args).then(|| d.message.clone())
     }
 }

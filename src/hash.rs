@@ -4,6 +4,10 @@
 
 use std::hash::Hasher;
 
+/// Builds [`KeyHasher`]s: the hasher of the project's maps and sets whose
+/// keys are hashes, indices or numbers of its own (no random seed).
+pub type BuildKeyHasher = std::hash::BuildHasherDefault<KeyHasher>;
+
 /// A fast multiplicative hasher with a final avalanche: each step is a
 /// bijection, so changing one word always changes the state.
 #[derive(Clone, Copy, Debug)]
@@ -56,5 +60,16 @@ impl Hasher for KeyHasher {
         h ^= h >> 33;
         h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
         h ^ (h >> 33)
+    }
+}
+
+/// Numbers in [0, 1), the same for the same `seed` (xorshift): for tests that draw many cases.
+#[cfg(test)]
+pub(crate) fn unit_floats(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
     }
 }

@@ -4,12 +4,11 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
-use std::hash::BuildHasherDefault;
 
 use glam::DVec2;
 
 use crate::geom::Frame;
-use crate::hash::KeyHasher;
+use crate::hash::BuildKeyHasher;
 use crate::motion::{Move, MoveKind, Point};
 use crate::thread::{Axis, CrestSource, Thread};
 
@@ -110,7 +109,7 @@ pub struct FeedIndex {
 }
 
 /// Work extents by the bits of `(crest0, lo, hi)`.
-type WorkByBand = HashMap<[u64; 3], Option<(f64, f64)>, BuildHasherDefault<KeyHasher>>;
+type WorkByBand = HashMap<[u64; 3], Option<(f64, f64)>, BuildKeyHasher>;
 
 impl FeedIndex {
     /// Indexes the feed motions of `moves`.

@@ -251,8 +251,9 @@ pub fn grow_focus_grouped<'a>(focus: &mut Rect, groups: impl IntoIterator<Item =
     }
 }
 
-/// Where a rapid's points join the focus: within a quarter of its larger side (none for an empty focus).
-fn near_focus(focus: &Rect) -> Option<Rect> {
+/// What counts as near the focus (a rapid's points join it, a label
+/// widens the fit): within a quarter of its larger side (none for an empty focus).
+pub fn near_focus(focus: &Rect) -> Option<Rect> {
     if focus.is_empty() {
         return None;
     }

@@ -548,13 +548,7 @@ fn diameters_are_half_dimensions_from_the_axis() {
 fn the_focus_grown_by_groups_of_rapids_is_the_focus_grown_point_by_point() {
     use super::scene::Rect;
     use super::side::{grow_focus, grow_focus_grouped};
-    let mut seed = 0x2545_f491_4f6c_dd1du64;
-    let mut next = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = crate::hash::unit_floats(0x2545_f491_4f6c_dd1d);
     for round in 0..200 {
         let core = Rect { x0: 10.0, y0: 20.0, x1: 60.0, y1: 40.0 };
         // Groups near the focus, far from it and across its edge of reach (12.5 around it).

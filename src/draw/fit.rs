@@ -87,9 +87,8 @@ fn max_scale(
 
 /// The labels near the focus (a note at the end of far motions does not widen the fit), by priority.
 fn near_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
-    let f = scene.focus;
-    let g = 0.25 * f.width().max(f.height());
-    let near = |p: Pt| p[0] >= f.x0 - g && p[0] <= f.x1 + g && p[1] >= f.y0 - g && p[1] <= f.y1 + g;
+    let zone = crate::diagram::side::near_focus(&scene.focus);
+    let near = |p: Pt| zone.is_some_and(|z| z.contains(p));
     let mut set: Vec<Label> = scene_labels(scene, o, width).into_iter().filter(|l| near(l.anchor())).collect();
     crate::order::sort_by_key(&mut set, |l| l.prio);
     set

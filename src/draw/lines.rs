@@ -4,11 +4,10 @@
 //! find the lines near it.
 
 use std::collections::HashSet;
-use std::hash::BuildHasherDefault;
 
 use super::Transform;
 use crate::diagram::scene::{Pt, Rect, Scene, Shape, Style};
-use crate::hash::KeyHasher;
+use crate::hash::BuildKeyHasher;
 
 /// Most of the drawing's segments labels keep off (those of threads first).
 const MAX_SEGMENTS: usize = 20_000;
@@ -188,7 +187,7 @@ fn segments(shape: &Shape, out: &mut Vec<[f64; 4]>) {
 /// cost the grid), at most [`MAX_SEGMENTS`], in a grid over the scene's focus.
 pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
     let mut out = Vec::new();
-    let mut seen: HashSet<[u64; 4], BuildHasherDefault<KeyHasher>> = HashSet::default();
+    let mut seen: HashSet<[u64; 4], BuildKeyHasher> = HashSet::default();
     'all: for of_threads in [true, false] {
         for item in scene.items.iter().filter(|i| i.thread.is_some() == of_threads && !crossable(i.style)) {
             let from = out.len();
@@ -217,32 +216,24 @@ pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
 mod tests {
     use super::*;
 
-    /// A small deterministic generator (xorshift) for the test's segments and boxes.
-    fn next(s: &mut u64) -> f64 {
-        *s ^= *s << 13;
-        *s ^= *s >> 7;
-        *s ^= *s << 17;
-        (*s >> 11) as f64 / (1u64 << 53) as f64
-    }
-
     #[test]
     fn the_grid_finds_exactly_the_segments_a_box_crosses() {
         let rect = Rect { x0: 0.0, y0: 0.0, x1: 100.0, y1: 40.0 };
-        let mut s = 0x9e37_79b9_7f4a_7c15;
+        let mut next = crate::hash::unit_floats(0x9e37_79b9_7f4a_7c15);
         // Short segments, long ones (wide in the grid) and some beyond the rectangle.
         let world: Vec<[f64; 4]> = (0..3000)
             .map(|k| {
-                let (x, y) = (next(&mut s) * 140.0 - 20.0, next(&mut s) * 60.0 - 10.0);
+                let (x, y) = (next() * 140.0 - 20.0, next() * 60.0 - 10.0);
                 let reach = if k % 10 == 0 { 120.0 } else { 6.0 };
-                [x, y, x + (next(&mut s) - 0.5) * reach, y + (next(&mut s) - 0.5) * reach / 3.0]
+                [x, y, x + (next() - 0.5) * reach, y + (next() - 0.5) * reach / 3.0]
             })
             .collect();
         let ix = LineIndex::new(world.clone(), rect);
         let xf = Transform { sx: 8.0, sy: 8.0, tx: 20.0, ty: 400.0 };
         let (mut hits, mut misses) = (0, 0);
         for _ in 0..2000 {
-            let (x, y) = (next(&mut s) * 1000.0 - 50.0, next(&mut s) * 500.0 - 50.0);
-            let b = [x, y, x + next(&mut s) * 30.0, y + next(&mut s) * 10.0];
+            let (x, y) = (next() * 1000.0 - 50.0, next() * 500.0 - 50.0);
+            let b = [x, y, x + next() * 30.0, y + next() * 10.0];
             let brute = world.iter().any(|w| segment_hits_box(xf.at([w[0], w[1]]), xf.at([w[2], w[3]]), &b));
             assert_eq!(ix.hits(&b, &xf), brute, "box {b:?}");
             if brute { hits += 1 } else { misses += 1 }

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use super::{Placed, Transform};
 use crate::diagram::scene::{Anchor, Pt, ViewKind};
-use crate::hash::KeyHasher;
+use crate::hash::{BuildKeyHasher, KeyHasher};
 
 /// A resolved pen: a stroke (colour, width, dashes), a fill of closed shapes and an opacity.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -90,7 +90,7 @@ pub struct DisplayList {
 pub(super) struct Builder {
     pub list: DisplayList,
     /// The first pen of each [`pen_key`].
-    index: HashMap<u64, usize, std::hash::BuildHasherDefault<KeyHasher>>,
+    index: HashMap<u64, usize, BuildKeyHasher>,
 }
 
 /// A hash of every field of `pen` (numbers by their bits).

@@ -6,9 +6,9 @@
 //! dimension line, arrowheads and halo, and what the pointer is over again on top.
 
 use std::collections::{HashMap, HashSet};
-use std::hash::{BuildHasherDefault, Hash, Hasher};
+use std::hash::{Hash, Hasher};
 
-use crate::hash::KeyHasher;
+use crate::hash::{BuildKeyHasher, KeyHasher};
 
 use super::labels::LINE;
 use super::list::{Builder, Op, Pen};
@@ -18,9 +18,6 @@ use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style};
 
 /// Paths wholly this far off the page are left out.
 const CULL: f64 = 12.0;
-
-/// Maps and sets keyed by small integers and tuples (a fast hash, no random seed).
-type Fast = BuildHasherDefault<KeyHasher>;
 
 /// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
 type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
@@ -44,7 +41,7 @@ struct Batch {
     first: usize,
     points: Vec<Pt>,
     starts: Vec<usize>,
-    seen: HashMap<u64, usize, Fast>,
+    seen: HashMap<u64, usize, BuildKeyHasher>,
 }
 
 /// A point to 1/8 px (halves to even: one instruction in the wasm build, where `round` is a call).
@@ -80,8 +77,9 @@ impl Batch {
 /// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
 pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Placed], view: &View) {
     let mark = &view.mark;
-    let by_item: HashMap<usize, &Placed, Fast> = placed.iter().map(|l| (l.item, l)).collect();
-    let marked: HashSet<usize, Fast> = mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
+    let by_item: HashMap<usize, &Placed, BuildKeyHasher> = placed.iter().map(|l| (l.item, l)).collect();
+    let marked: HashSet<usize, BuildKeyHasher> =
+        mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
     let mark = if b.list.stale || marked.is_empty() { None } else { Some((&marked, mark.light)) };
     let mut p = Painter { b, xf };
     if let Some((set, light)) = mark {
@@ -133,9 +131,9 @@ impl Painter<'_> {
     fn halos(
         &mut self,
         scene: &Scene,
-        set: &HashSet<usize, Fast>,
+        set: &HashSet<usize, BuildKeyHasher>,
         light: bool,
-        by_item: &HashMap<usize, &Placed, Fast>,
+        by_item: &HashMap<usize, &Placed, BuildKeyHasher>,
     ) {
         let alpha = if light { 0.3 } else { 0.5 };
         let grow = if light { 4.0 } else { 6.0 };
@@ -195,7 +193,7 @@ impl Painter<'_> {
     fn paths(&mut self, scene: &Scene, roughing: bool) {
         let (w, h) = (self.b.list.width, self.b.list.height);
         let mut batches: Vec<Batch> = Vec::new();
-        let mut index: HashMap<BatchKey, usize, Fast> = HashMap::default();
+        let mut index: HashMap<BatchKey, usize, BuildKeyHasher> = HashMap::default();
         let mut pts: Vec<Pt> = Vec::new();
         for (i, item) in scene.items.iter().enumerate() {
             let (points, closed) = match &item.shape {

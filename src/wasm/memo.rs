@@ -5,7 +5,7 @@
 //! thread rebuilds that thread's pieces and the spindle axis only.
 
 use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
+use std::hash::Hasher;
 use std::sync::Arc;
 
 use crate::motion::Move;
@@ -26,7 +26,7 @@ const BLOCK: usize = 256;
 const RUN: usize = 16;
 
 /// Pieces by key (the keys are hashes already: no second hash with a random seed).
-type ByKey = HashMap<u64, Chunk, BuildHasherDefault<KeyHasher>>;
+type ByKey = HashMap<u64, Chunk, crate::hash::BuildKeyHasher>;
 
 /// A run of items with what the whole scene needs of it.
 struct Chunk {

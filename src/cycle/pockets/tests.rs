@@ -139,13 +139,7 @@ fn g72_pockets_and_bad_input_end() {
 /// over no point of the shifted shape that lies above its depth.
 #[test]
 fn random_pocketed_shapes_rough_within_the_shape() {
-    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = crate::hash::unit_floats(0x2545_f491_4f6c_dd1d);
     for _ in 0..500 {
         let n = 2 + (next() * 12.0) as usize;
         let mut z = 0.0;
