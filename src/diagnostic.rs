@@ -104,8 +104,15 @@ impl Diagnostics {
 
     /// Records a finding at `span`.
     pub fn push_message(&mut self, message: Message, span: Span) {
+        self.keep(span, |via| (message, span, via.clone()));
+    }
+
+    /// Keeps the item `make` gives (from the current call chain) while
+    /// there is room; else counts one dropped at `span`, making nothing.
+    fn keep(&mut self, span: Span, make: impl FnOnce(&Via) -> Item) {
         if self.items.len() < self.limit {
-            self.items.push((message, span, self.via.clone()));
+            let item = make(&self.via);
+            self.items.push(item);
         } else {
             self.drop_one(span);
         }
@@ -120,11 +127,7 @@ impl Diagnostics {
 
     /// Records a diagnostic whose arguments are only worked out when it will be kept.
     pub fn push_with(&mut self, template: &'static Template, span: Span, args: impl FnOnce() -> Args) {
-        if self.items.len() < self.limit {
-            self.items.push((Message::new(template, args()), span, self.via.clone()));
-        } else {
-            self.drop_one(span);
-        }
+        self.keep(span, |via| (Message::new(template, args()), span, via.clone()));
     }
 
     /// Whether an error-level diagnostic was recorded.
@@ -196,20 +199,12 @@ impl Diagnostics {
     /// Records a copy of `item` (kept from an earlier reading): copied only
     /// when it will be kept, else counted as dropped.
     pub fn push_copy(&mut self, item: &Item) {
-        if self.items.len() < self.limit {
-            self.items.push(item.clone());
-        } else {
-            self.drop_one(item.1);
-        }
+        self.keep(item.1, |_| item.clone());
     }
 
     /// Records a diagnostic with its own call chain.
     pub fn push_item(&mut self, item: Item) {
-        if self.items.len() < self.limit {
-            self.items.push(item);
-        } else {
-            self.drop_one(item.1);
-        }
+        self.keep(item.1, |_| item);
     }
 
     /// The diagnostics kept, in the order they came.
