@@ -8,6 +8,7 @@
 
 use std::hash::{Hash, Hasher};
 
+use super::labels::{annotated, labelled_in};
 use super::{Transform, View};
 use crate::diagram::scene::{Item, Scene, Shape};
 use crate::hash::KeyHasher;
@@ -47,7 +48,8 @@ impl FitMemo {
 }
 
 /// What a fit depends on, hashed: the view kind, focus and page, the
-/// options that choose and word the labels, and every labelled item.
+/// options that choose and word the labels, and every item the labels drawn
+/// come from (with many threads annotated, the chosen thread's and those of no thread).
 fn fit_key(scene: &Scene, view: &View) -> u64 {
     let mut h = KeyHasher::default();
     (scene.view as u8).hash(&mut h);
@@ -59,14 +61,12 @@ fn fit_key(scene: &Scene, view: &View) -> u64 {
     h.write_u8(u8::from(view.stretch) | (u8::from(view.roughing) << 1));
     h.write_usize(view.thread);
     view.lang.hash(&mut h);
-    for item in scene.items.iter().filter(|i| labelled(i)) {
+    let annotated = annotated(scene);
+    h.write_usize(annotated);
+    for item in scene.items.iter().filter(|i| labelled_in(i, annotated, view.thread)) {
         hash_label_item(&mut h, item);
     }
     h.finish()
-}
-
-fn labelled(item: &Item) -> bool {
-    matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. })
 }
 
 fn hash_label_item(h: &mut KeyHasher, item: &Item) {
@@ -136,6 +136,55 @@ mod tests {
         // So does another page size.
         let narrow = View { width: 390.0, ..View::default() };
         assert_eq!(memo.fit(&relabelled, &narrow), super::super::fit_of(&relabelled, &narrow));
+        assert_eq!(memo.made(), 3);
+    }
+
+    /// Eight threads of two passes each at 30 + 2k mm, each after turning its diameter.
+    fn eight_threads() -> Scene {
+        let mut text = String::from("G50 X100 Z100\nS300 M03\n");
+        for k in 0..8 {
+            let d = 30 + 2 * k;
+            text += &format!("G00 X{} Z70\nG01 X{d} F0.2\nZ20\nX{}\nG00 Z70\n", d + 10, d + 5);
+            for x in [0.9, 1.3] {
+                text += &format!("X{:.1}\nG32 Z13 F2\nG00 X{}\nZ70\n", d as f64 - x, d + 10);
+            }
+        }
+        let plan = crate::plan(&text, &Settings::new(Dialect::Gsk980tdc));
+        assert_eq!(plan.threads.len(), 8);
+        crate::diagram::side::side(&plan)
+    }
+
+    /// A dimension of thread `t` with another value.
+    fn relabel(scene: &mut Scene, t: u32) {
+        let dim = scene
+            .items
+            .iter_mut()
+            .find(|i| i.thread == Some(t) && matches!(i.shape, Shape::Dim { .. }))
+            .expect("a dimension of the thread");
+        if let Shape::Dim { label, .. } = &mut dim.shape {
+            *label = Label::new(label.key, "123456.789");
+        }
+    }
+
+    #[test]
+    fn with_many_threads_only_the_chosen_threads_labels_decide_the_fit() {
+        // Above MAX_ANNOTATED threads only the chosen thread's labels are drawn, so only they fit.
+        let scene = eight_threads();
+        let view = View { thread: 2, ..View::default() };
+        let mut memo = FitMemo::new();
+        let first = memo.fit(&scene, &view);
+        let mut other = scene.clone();
+        relabel(&mut other, 5);
+        assert_eq!(memo.fit(&other, &view), first);
+        assert_eq!(memo.made(), 1, "another thread's label: kept");
+        assert_eq!(first, super::super::fit_of(&other, &view), "and a fit from scratch agrees");
+        let mut chosen = other.clone();
+        relabel(&mut chosen, 2);
+        assert_eq!(memo.fit(&chosen, &view), super::super::fit_of(&chosen, &view));
+        assert_eq!(memo.made(), 2, "the chosen thread's label: fitted again");
+        // Choosing another thread fits again.
+        let view5 = View { thread: 5, ..view };
+        assert_eq!(memo.fit(&chosen, &view5), super::super::fit_of(&chosen, &view5));
         assert_eq!(memo.made(), 3);
     }
 }

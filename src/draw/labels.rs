@@ -5,7 +5,7 @@
 
 use super::text::{measure, wrap};
 use super::{FONT_SIZE, MAX_ANNOTATED, Transform, View};
-use crate::diagram::scene::{Anchor, Pt, Scene, Shape, Style};
+use crate::diagram::scene::{Anchor, Item, Pt, Scene, Shape, Style};
 
 /// Height of a label's box: 12 px text and its halo.
 pub(super) const LINE: f64 = 15.0;
@@ -140,19 +140,40 @@ impl Label {
     }
 }
 
+/// Whether `item` has a label (a dimension or a text).
+pub(super) fn has_label(item: &Item) -> bool {
+    matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. })
+}
+
+/// How many threads have labels in `scene`, counted up to one more than
+/// [`MAX_ANNOTATED`] (all that [`scene_labels`] asks of the number).
+pub(super) fn annotated(scene: &Scene) -> usize {
+    let mut seen = [0u32; MAX_ANNOTATED + 1];
+    let mut n = 0;
+    for t in scene.items.iter().filter(|i| has_label(i)).filter_map(|i| i.thread) {
+        if !seen[..n].contains(&t) {
+            seen[n] = t;
+            n += 1;
+            if n > MAX_ANNOTATED {
+                break;
+            }
+        }
+    }
+    n
+}
+
+/// Whether [`scene_labels`] gives `item` a label in a scene of `annotated`
+/// threads with labels, thread `chosen` chosen: above [`MAX_ANNOTATED`], only the chosen thread's.
+pub(super) fn labelled_in(item: &Item, annotated: usize, chosen: usize) -> bool {
+    let chosen = u32::try_from(chosen).unwrap_or(u32::MAX);
+    has_label(item) && !(annotated > MAX_ANNOTATED && item.thread.is_some_and(|t| t != chosen))
+}
+
 /// The labels drawn of `scene` with `o`: with
 /// many annotated threads, only the chosen thread's; notes wider than about
 /// half of a `width` px view wrapped.
 pub(super) fn scene_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
-    let mut threads: Vec<u32> = scene
-        .items
-        .iter()
-        .filter(|i| matches!(i.shape, Shape::Dim { .. } | Shape::Text { .. }))
-        .filter_map(|i| i.thread)
-        .collect();
-    crate::order::sort(&mut threads);
-    threads.dedup();
-    let annotated = threads.len();
+    let annotated = annotated(scene);
     let chosen = u32::try_from(o.thread).unwrap_or(u32::MAX);
     let only = annotated > MAX_ANNOTATED;
     let wrap_at = if width > 0.0 { (0.45 * width).max(160.0) } else { f64::INFINITY };

@@ -225,8 +225,9 @@ impl Painter<'_> {
     }
 
     fn item(&mut self, item: &Item, placed: Option<&Placed>, halo: &str) {
-        // Paths went with their pens already.
-        if matches!(item.shape, Shape::Polyline { .. } | Shape::Polygon { .. }) {
+        // Paths went with their pens already; a label that found no place draws nothing.
+        let unplaced = placed.is_none() && matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. });
+        if unplaced || matches!(item.shape, Shape::Polyline { .. } | Shape::Polygon { .. }) {
             return;
         }
         let pen = pen_of(item);
