@@ -5,6 +5,7 @@
 //! the other shapes in item order, each label where it was placed with its
 //! dimension line, arrowheads and halo, and what the pointer is over again on top.
 
+use std::collections::hash_map::Entry;
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
 
@@ -72,6 +73,11 @@ impl Batch {
         self.starts.push(self.points.len());
         self.points.extend_from_slice(pts);
     }
+}
+
+/// Whether two lists of points are the same, bit for bit.
+fn same_bits(a: &[Pt], b: &[Pt]) -> bool {
+    a.len() == b.len() && a.iter().flatten().zip(b.iter().flatten()).all(|(u, v)| u.to_bits() == v.to_bits())
 }
 
 /// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
@@ -195,6 +201,9 @@ impl Painter<'_> {
         let mut batches: Vec<Batch> = Vec::new();
         let mut index: HashMap<BatchKey, usize, BuildKeyHasher> = HashMap::default();
         let mut pts: Vec<Pt> = Vec::new();
+        // A path of one pen drawn again exactly (a program's repeated sections)
+        // goes where its first did (left out, or culled): known by its world points.
+        let mut worlds: HashMap<u64, &[Pt], BuildKeyHasher> = HashMap::default();
         for (i, item) in scene.items.iter().enumerate() {
             let (points, closed) = match &item.shape {
                 Shape::Polyline { points } => (points, false),
@@ -204,13 +213,24 @@ impl Painter<'_> {
             if item.style == Style::Roughing && !roughing {
                 continue;
             }
+            let key = batch_key(item, closed);
+            let mut wh = KeyHasher::default();
+            key.hash(&mut wh);
+            wh.write_usize(points.len());
+            points.iter().flatten().for_each(|v| wh.write_u64(v.to_bits()));
+            match worlds.entry(wh.finish()) {
+                Entry::Occupied(e) if same_bits(e.get(), points) => continue,
+                Entry::Occupied(_) => {}
+                Entry::Vacant(e) => {
+                    e.insert(points);
+                }
+            }
             pts.clear();
             pts.extend(points.iter().map(|p| self.xf.at(*p)));
             let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
             if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {
                 continue;
             }
-            let key = batch_key(item, closed);
             let k = *index.entry(key).or_insert_with(|| {
                 let seen = HashMap::default();
                 batches.push(Batch { key, first: i, points: Vec::new(), starts: Vec::new(), seen });
@@ -393,5 +413,49 @@ mod tests {
             })
             .collect();
         assert_eq!(paths, [(2, 4), (1, 2)]);
+    }
+
+    /// Exact repeats of a path in its own pen are left out without being
+    /// drawn again (found by their world points): the list is the one of the
+    /// scene without them; a repeat in another pen, or of a path off the page, is not lost or drawn.
+    #[test]
+    fn exact_repeats_draw_what_the_scene_without_them_draws() {
+        let mut next = crate::hash::unit_floats(0x2545_f491_4f6c_dd1d);
+        let styles = [Style::Cut, Style::Rapid, Style::Outline];
+        let mut firsts: Vec<Item> = Vec::new();
+        for _ in 0..300 {
+            let n = 2 + (next() * 4.0) as usize;
+            // Some wholly off the page (x beyond 1,000 px).
+            let off = if next() < 0.2 { 2000.0 } else { 0.0 };
+            let pts: Vec<[f64; 2]> = (0..n).map(|_| [off + next() * 700.0, next() * 400.0]).collect();
+            firsts.push(line(&pts, styles[(next() * 3.0) as usize]));
+        }
+        let mut with = Scene::new(ViewKind::Side);
+        let mut without = Scene::new(ViewKind::Side);
+        for (k, it) in firsts.iter().enumerate() {
+            with.push(it.clone(), true);
+            without.push(it.clone(), true);
+            // An earlier path again: in its own pen (left out) or in the next pen (drawn).
+            let again = &firsts[(next() * (k + 1) as f64) as usize];
+            with.push(again.clone(), true);
+            let mut other = again.clone();
+            other.style = styles[(styles.iter().position(|s| *s == other.style).unwrap() + 1) % 3];
+            with.push(other.clone(), true);
+            without.push(other, true);
+        }
+        with.finish();
+        without.finish();
+        let view = View {
+            width: 1000.0,
+            height: 500.0,
+            transform: Some(Transform { sx: 1.0, sy: 1.0, tx: 0.0, ty: 450.0 }),
+            ..View::default()
+        };
+        let (a, b) = (display(&with, &view), display(&without, &view));
+        assert_eq!(a.ops, b.ops);
+        assert_eq!(a.pens, b.pens);
+        let drawn: usize =
+            a.ops.iter().map(|op| if let Op::Paths { starts, .. } = op { starts.len() } else { 0 }).sum();
+        assert!(drawn > 300, "{drawn} paths drawn");
     }
 }
