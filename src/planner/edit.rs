@@ -84,8 +84,19 @@ fn lines_of(text: &str, starts: &[u32], from: usize, to: usize) -> (u32, u32) {
 }
 
 /// How many bytes `a` and `b` have in common at their ends.
-fn common_suffix(a: &str, b: &str) -> usize {
-    a.bytes().rev().zip(b.bytes().rev()).take_while(|(x, y)| x == y).count()
+pub(super) fn common_suffix(a: &str, b: &str) -> usize {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    let n = a.len().min(b.len());
+    let (ea, eb) = (a.len(), b.len());
+    // In chunks first, as `first_difference`: an edit near the top leaves a long common end.
+    let mut i = 0;
+    while i + 64 <= n && a[ea - i - 64..ea - i] == b[eb - i - 64..eb - i] {
+        i += 64;
+    }
+    while i < n && a[ea - i - 1] == b[eb - i - 1] {
+        i += 1;
+    }
+    i
 }
 
 /// Byte offset of the first difference between `a` and `b` (the shorter

@@ -1,6 +1,6 @@
 //! Tests of the incremental planner.
 
-use super::edit::first_difference;
+use super::edit::{common_suffix, first_difference};
 use super::*;
 use crate::dialect::Dialect;
 
@@ -13,6 +13,26 @@ fn first_difference_finds_the_edit() {
     let mut edited = long.clone();
     edited.replace_range(500..501, "9");
     assert_eq!(first_difference(&long, &edited), 500);
+}
+
+/// The common end, read in chunks, is the one read byte by byte.
+#[test]
+fn common_suffix_finds_the_common_end() {
+    let bytewise = |a: &str, b: &str| a.bytes().rev().zip(b.bytes().rev()).take_while(|(x, y)| x == y).count();
+    let long = "G01 X1\n".repeat(100);
+    let mut next = crate::hash::unit_floats(0x9e37_79b9);
+    for _ in 0..500 {
+        let mut edited = long.clone();
+        let at = (next() * long.len() as f64) as usize;
+        let cut = (next() * 3.0) as usize;
+        edited.replace_range(at..(at + cut).min(long.len()), ["", "9", "77"][(next() * 3.0) as usize]);
+        let tail = &long[(next() * long.len() as f64) as usize..];
+        for (a, b) in [(&long[..], &edited[..]), (&edited[..], &long[..]), (tail, &edited[..]), (&long[..], tail)] {
+            assert_eq!(common_suffix(a, b), bytewise(a, b), "{a:?} {b:?}");
+        }
+    }
+    assert_eq!(common_suffix("", "x"), 0);
+    assert_eq!(common_suffix("abc", "abc"), 3);
 }
 
 /// An edit near the end resumes at the last checkpoint before it and gives the full plan.
