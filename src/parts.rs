@@ -37,7 +37,7 @@ impl<T: Clone> Parts<T> {
     }
 
     /// The items in order.
-    pub fn iter(&self) -> impl Iterator<Item = &T> + Clone {
+    pub fn iter(&self) -> impl DoubleEndedIterator<Item = &T> + Clone {
         self.parts.iter().flat_map(|p| p.iter())
     }
 

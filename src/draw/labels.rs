@@ -150,7 +150,8 @@ pub(super) fn has_label(item: &Item) -> bool {
 pub(super) fn annotated(scene: &Scene) -> usize {
     let mut seen = [0u32; MAX_ANNOTATED + 1];
     let mut n = 0;
-    for t in scene.items.iter().filter(|i| has_label(i)).filter_map(|i| i.thread) {
+    // From the end: a scene's dimensions and notes follow its paths.
+    for t in scene.items.iter().rev().filter(|i| has_label(i)).filter_map(|i| i.thread) {
         if !seen[..n].contains(&t) {
             seen[n] = t;
             n += 1;

@@ -40,6 +40,8 @@ struct Chunk {
     extent: (f64, f64),
     /// The items drawn through the radial breaks they were last drawn through.
     mapped: Option<(Vec<Break>, Arc<Vec<Item>>)>,
+    /// The call of [`SideMemo::side`] that last took it.
+    taken: u32,
 }
 
 impl Chunk {
@@ -60,7 +62,7 @@ impl Chunk {
         rapids.iter().for_each(|p| rapids_box.add(*p));
         let extent = radial::extent(s.items.iter());
         let items = Arc::new(s.items.into_vec());
-        Chunk { items, bounds: s.bounds, focus: s.focus, rapids, rapids_box, extent, mapped: None }
+        Chunk { items, bounds: s.bounds, focus: s.focus, rapids, rapids_box, extent, mapped: None, taken: 0 }
     }
 
     /// The items drawn through the breaks `list`: mapped once per list, then
@@ -83,9 +85,12 @@ impl Chunk {
 }
 
 /// The pieces of one call: taken from the last call's by key, or built.
+/// They stay in one map, each marked with the call that last took it; the
+/// others are dropped at the end of the call.
 struct Pieces {
-    old: ByKey,
-    kept: ByKey,
+    map: ByKey,
+    /// This call's mark.
+    call: u32,
     /// Keys of the pieces built in this call.
     built: Vec<u64>,
     reused: usize,
@@ -94,32 +99,31 @@ struct Pieces {
 impl Pieces {
     /// Keeps the piece of `key`, built by `make` unless the last call had it; returns the key.
     fn take(&mut self, key: u64, make: impl FnOnce() -> Chunk) -> u64 {
-        if !self.kept.contains_key(&key) {
-            let c = match self.old.remove(&key) {
-                Some(c) => {
+        match self.map.get_mut(&key) {
+            Some(c) => {
+                if c.taken != self.call {
+                    c.taken = self.call;
                     self.reused += 1;
-                    c
                 }
-                None => {
-                    self.built.push(key);
-                    make()
-                }
-            };
-            self.kept.insert(key, c);
+            }
+            None => {
+                self.built.push(key);
+                let mut c = make();
+                c.taken = self.call;
+                self.map.insert(key, c);
+            }
         }
         key
     }
 
     /// [`Pieces::take`] for two pieces built together.
     fn take_pair(&mut self, keys: (u64, u64), make: impl FnOnce() -> (Chunk, Chunk)) -> (u64, u64) {
-        let has = |k: &u64| self.kept.contains_key(k) || self.old.contains_key(k);
-        if !(has(&keys.0) && has(&keys.1)) {
-            let (a, b) = make();
+        if !(self.map.contains_key(&keys.0) && self.map.contains_key(&keys.1)) {
+            let (mut a, mut b) = make();
+            (a.taken, b.taken) = (self.call, self.call);
             self.built.extend([keys.0, keys.1]);
-            self.old.remove(&keys.0);
-            self.old.remove(&keys.1);
-            self.kept.insert(keys.0, a);
-            self.kept.insert(keys.1, b);
+            self.map.insert(keys.0, a);
+            self.map.insert(keys.1, b);
             return keys;
         }
         (self.take(keys.0, || Chunk::of([])), self.take(keys.1, || Chunk::of([])))
@@ -140,6 +144,8 @@ pub struct SideMemo {
     chunks: ByKey,
     built: usize,
     reused: usize,
+    /// Calls so far (the mark of the pieces each took).
+    calls: u32,
 }
 
 /// One call's pieces: the head and the order, and which were built.
@@ -196,9 +202,9 @@ impl SideMemo {
 
     /// Builds or reuses every piece of `plan`'s side section.
     fn build(&mut self, plan: &Plan, thread_keys: &[u64]) -> Built {
-        let old = std::mem::take(&mut self.chunks);
-        let kept = ByKey::with_capacity_and_hasher(old.len(), Default::default());
-        let mut pieces = Pieces { old, kept, built: Vec::new(), reused: 0 };
+        self.calls = self.calls.wrapping_add(1);
+        let map = std::mem::take(&mut self.chunks);
+        let mut pieces = Pieces { map, call: self.calls, built: Vec::new(), reused: 0 };
         let layout = Layout::of(plan);
         let thread_key = |ti: usize| thread_keys.get(ti).copied().unwrap_or(0);
         let mut order: Vec<u64> = Vec::new();
@@ -275,11 +281,13 @@ impl SideMemo {
         }
         self.built = pieces.built.len();
         self.reused = pieces.reused;
+        let call = pieces.call;
+        pieces.map.retain(|_, c| c.taken == call);
         let head = {
-            let chunks: Vec<&Chunk> = order.iter().map(|k| &pieces.kept[k]).collect();
+            let chunks: Vec<&Chunk> = order.iter().map(|k| &pieces.map[k]).collect();
             head(&chunks)
         };
-        self.chunks = pieces.kept;
+        self.chunks = pieces.map;
         Built { head, order }
     }
 }
