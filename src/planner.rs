@@ -76,8 +76,13 @@ pub struct Planner {
 struct Tail {
     /// Checkpoints after the resume point.
     checkpoints: Vec<Checkpoint>,
-    /// Motions, threads and diagnostics from the resume point on.
+    /// Motions, threads and diagnostics from the resume point on (the
+    /// motions: all of the last reading's when `whole_moves`).
     moves: Vec<Move>,
+    /// Whether `moves` holds every motion of the last reading (the ones
+    /// before the resume point were fewer than the rest: they were copied
+    /// for the new reading, and the rest stay where they are).
+    whole_moves: bool,
     threads: Vec<Thread>,
     diags: Vec<Item>,
     /// Their counts at the resume point.
@@ -403,9 +408,19 @@ impl Planner {
         let at = (cp.snap.moves(), cp.snap.threads(), cp.snap.diagnostics());
         let shift = edit.shift;
         let places = later[joinable_from..].iter().map(|c| shift.pos(c.offset)).collect();
+        // The fewer motions are copied: those before the resume point, or the rest.
+        let (total, at_m) = (r.asm.moves.len(), at.0.min(r.asm.moves.len()));
+        let (moves, whole_moves) = if at_m < total - at_m {
+            let all = std::mem::take(&mut r.asm.moves);
+            r.asm.moves = all[..at_m].to_vec();
+            (all, true)
+        } else {
+            (r.asm.moves.split_off(at_m), false)
+        };
         Some(Tail {
             checkpoints: later,
-            moves: r.asm.moves.split_off(at.0.min(r.asm.moves.len())),
+            moves,
+            whole_moves,
             threads: r.asm.threads.split_off(at.1.min(r.asm.threads.len())),
             diags: r.diags.split_off(at.2),
             at,
@@ -432,9 +447,20 @@ impl Planner {
         let (skip_m, skip_t, skip_d) = (cp.moves() - t.at.0, cp.threads() - t.at.1, cp.diagnostics() - t.at.2);
         self.join = Some(Join { old: cp.threads(), new: r.asm.threads.len(), lines: t.edited_lines, shift: t.shift });
         let s = t.shift;
-        for mut m in t.moves.drain(skip_m.min(t.moves.len())..) {
-            m.span = s.span(m.span);
-            r.asm.moves.push(m);
+        if t.whole_moves {
+            // The new reading's motions replace the last one's up to the join;
+            // the rest stay in place (moved once when the counts differ).
+            let keep = (t.at.0 + skip_m).min(t.moves.len());
+            let mut all = std::mem::take(&mut t.moves);
+            all[keep..].iter_mut().for_each(|m| m.span = s.span(m.span));
+            all.splice(..keep, std::mem::take(&mut r.asm.moves));
+            r.asm.moves = all;
+        } else {
+            let rest = t.moves.drain(skip_m.min(t.moves.len())..);
+            r.asm.moves.extend(rest.map(|mut m| {
+                m.span = s.span(m.span);
+                m
+            }));
         }
         for mut th in t.threads.drain(skip_t.min(t.threads.len())..) {
             th.first_move = th.first_move.saturating_add_signed(dm);
