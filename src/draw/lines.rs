@@ -188,8 +188,18 @@ fn segments(shape: &Shape, out: &mut Vec<[f64; 4]>) {
 pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
     let mut out = Vec::new();
     let mut seen: HashSet<[u64; 4], BuildKeyHasher> = HashSet::default();
+    // Paths that share their points (see `wasm::memo`) add no segment after the first.
+    let mut held: HashSet<(usize, bool), BuildKeyHasher> = HashSet::default();
     'all: for of_threads in [true, false] {
         for item in scene.items.iter().filter(|i| i.thread.is_some() == of_threads && !crossable(i.style)) {
+            let path = match &item.shape {
+                Shape::Polyline { points } => Some((points.as_ptr() as usize, false)),
+                Shape::Polygon { points } => Some((points.as_ptr() as usize, true)),
+                _ => None,
+            };
+            if path.is_some_and(|p| !held.insert(p)) {
+                continue;
+            }
             let from = out.len();
             segments(&item.shape, &mut out);
             let mut kept = from;
@@ -240,5 +250,19 @@ mod tests {
         }
         // Both answers were asked for.
         assert!(hits > 100 && misses > 100, "{hits} hits, {misses} misses");
+    }
+
+    /// A polygon holding the points of a polyline before it keeps its closing side.
+    #[test]
+    fn a_polygon_sharing_a_polylines_points_keeps_its_closing_side() {
+        use crate::diagram::scene::{Item, ViewKind};
+        let pts: std::sync::Arc<[Pt]> = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]].into();
+        let mut s = Scene::new(ViewKind::Side);
+        s.push(Item::new(Shape::Polyline { points: pts.clone() }, Style::Cut), true);
+        s.push(Item::new(Shape::Polygon { points: pts }, Style::Outline), true);
+        s.finish();
+        let xf = Transform { sx: 10.0, sy: 10.0, tx: 0.0, ty: 200.0 };
+        // The closing side runs from (10, 10) to (0, 0): its middle (5, 5) is at page (50, 150).
+        assert!(scene_lines(&s).hits(&[48.0, 148.0, 52.0, 152.0], &xf));
     }
 }

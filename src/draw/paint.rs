@@ -202,8 +202,10 @@ impl Painter<'_> {
         let mut index: HashMap<BatchKey, usize, BuildKeyHasher> = HashMap::default();
         let mut pts: Vec<Pt> = Vec::new();
         // A path of one pen drawn again exactly (a program's repeated sections)
-        // goes where its first did (left out, or culled): known by its world points.
+        // goes where its first did (left out, or culled): known by the address
+        // of its points when it shares them (see `wasm::memo`), else by its world points.
         let mut worlds: HashMap<u64, &[Pt], BuildKeyHasher> = HashMap::default();
+        let mut held: HashSet<(usize, BatchKey), BuildKeyHasher> = HashSet::default();
         for (i, item) in scene.items.iter().enumerate() {
             let (points, closed) = match &item.shape {
                 Shape::Polyline { points } => (points, false),
@@ -214,6 +216,9 @@ impl Painter<'_> {
                 continue;
             }
             let key = batch_key(item, closed);
+            if !held.insert((points.as_ptr() as usize, key)) {
+                continue;
+            }
             let mut wh = KeyHasher::default();
             key.hash(&mut wh);
             wh.write_usize(points.len());

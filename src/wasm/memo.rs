@@ -5,6 +5,7 @@
 //! thread rebuilds that thread's pieces and the spindle axis only.
 
 use std::collections::HashMap;
+use std::collections::hash_map::Entry;
 use std::hash::Hasher;
 use std::sync::Arc;
 
@@ -14,7 +15,7 @@ use crate::plan::Plan;
 use super::keys::{KeyHasher, combine, hash_move, packed_key};
 use super::pack::pack;
 use crate::diagram::radial::{self, Break};
-use crate::diagram::scene::{Item, Pt, Rect, Scene, Style, ViewKind};
+use crate::diagram::scene::{Item, Pt, Rect, Scene, Shape, Style, ViewKind};
 use crate::diagram::side::{
     Band, Layout, axis, capped_note, detail_note, grow_focus_grouped, motion_item, pass_items, thread_items,
     unmatched_item, work_extent_in,
@@ -67,7 +68,7 @@ impl Chunk {
 
     /// The items drawn through the breaks `list`: mapped once per list, then
     /// kept; shared with the scenes they are put in.
-    fn drawn(&mut self, list: &[Break]) -> Arc<Vec<Item>> {
+    fn drawn(&mut self, list: &[Break], shared: &mut Shared) -> Arc<Vec<Item>> {
         if list.is_empty() {
             return self.items.clone();
         }
@@ -76,6 +77,7 @@ impl Chunk {
             _ => {
                 let mut items = (*self.items).clone();
                 items.iter_mut().for_each(|i| radial::map_item(list, i));
+                shared.share(&mut items);
                 let items = Arc::new(items);
                 self.mapped = Some((list.to_vec(), items.clone()));
                 items
@@ -84,11 +86,55 @@ impl Chunk {
     }
 }
 
+/// The points of paths shared between pieces: a path drawn again exactly
+/// (a program's repeated sections) holds the same points, so a drawing
+/// knows it for a repeat by the address of its points
+/// (`draw::paint`, `draw::lines`) without reading them.
+#[derive(Default)]
+struct Shared {
+    /// Points by the hash of their bits.
+    points: HashMap<u64, Arc<[Pt]>, crate::hash::BuildKeyHasher>,
+}
+
+impl Shared {
+    /// Makes the paths among `items` hold the points of an earlier path equal to them, bit for bit.
+    fn share(&mut self, items: &mut [Item]) {
+        for item in items {
+            let (Shape::Polyline { points } | Shape::Polygon { points }) = &mut item.shape else { continue };
+            let mut h = KeyHasher::default();
+            h.write_usize(points.len());
+            points.iter().flatten().for_each(|v| h.write_u64(v.to_bits()));
+            match self.points.entry(h.finish()) {
+                Entry::Occupied(e) => {
+                    let same = e.get().len() == points.len()
+                        && e.get()
+                            .iter()
+                            .flatten()
+                            .zip(points.iter().flatten())
+                            .all(|(a, b)| a.to_bits() == b.to_bits());
+                    if same {
+                        *points = e.get().clone();
+                    }
+                }
+                Entry::Vacant(e) => {
+                    e.insert(points.clone());
+                }
+            }
+        }
+    }
+
+    /// Forgets the points no item holds any more.
+    fn forget_unused(&mut self) {
+        self.points.retain(|_, p| Arc::strong_count(p) > 1);
+    }
+}
+
 /// The pieces of one call: taken from the last call's by key, or built.
 /// They stay in one map, each marked with the call that last took it; the
 /// others are dropped at the end of the call.
 struct Pieces {
     map: ByKey,
+    shared: Shared,
     /// This call's mark.
     call: u32,
     /// Keys of the pieces built in this call.
@@ -110,10 +156,18 @@ impl Pieces {
                 self.built.push(key);
                 let mut c = make();
                 c.taken = self.call;
+                self.share(&mut c);
                 self.map.insert(key, c);
             }
         }
         key
+    }
+
+    /// Shares the points of a piece just built with the pieces before it.
+    fn share(&mut self, c: &mut Chunk) {
+        if let Some(items) = Arc::get_mut(&mut c.items) {
+            self.shared.share(items);
+        }
     }
 
     /// [`Pieces::take`] for two pieces built together.
@@ -121,6 +175,8 @@ impl Pieces {
         if !(self.map.contains_key(&keys.0) && self.map.contains_key(&keys.1)) {
             let (mut a, mut b) = make();
             (a.taken, b.taken) = (self.call, self.call);
+            self.share(&mut a);
+            self.share(&mut b);
             self.built.extend([keys.0, keys.1]);
             self.map.insert(keys.0, a);
             self.map.insert(keys.1, b);
@@ -146,6 +202,8 @@ pub struct SideMemo {
     reused: usize,
     /// Calls so far (the mark of the pieces each took).
     calls: u32,
+    /// The points the pieces' paths share.
+    shared: Shared,
 }
 
 /// One call's pieces: the head and the order, and which were built.
@@ -192,9 +250,10 @@ impl SideMemo {
         // The pieces go in whole, shared: no item is copied.
         for k in &b.order {
             if let Some(c) = self.chunks.get_mut(k) {
-                scene.items.push_shared(c.drawn(&list));
+                scene.items.push_shared(c.drawn(&list, &mut self.shared));
             }
         }
+        self.shared.forget_unused();
         radial::finish(&list, &mut scene);
         scene.finish();
         scene
@@ -204,7 +263,8 @@ impl SideMemo {
     fn build(&mut self, plan: &Plan, thread_keys: &[u64]) -> Built {
         self.calls = self.calls.wrapping_add(1);
         let map = std::mem::take(&mut self.chunks);
-        let mut pieces = Pieces { map, call: self.calls, built: Vec::new(), reused: 0 };
+        let shared = std::mem::take(&mut self.shared);
+        let mut pieces = Pieces { map, shared, call: self.calls, built: Vec::new(), reused: 0 };
         let layout = Layout::of(plan);
         let thread_key = |ti: usize| thread_keys.get(ti).copied().unwrap_or(0);
         let mut order: Vec<u64> = Vec::new();
@@ -288,6 +348,7 @@ impl SideMemo {
             head(&chunks)
         };
         self.chunks = pieces.map;
+        self.shared = pieces.shared;
         Built { head, order }
     }
 }
@@ -351,6 +412,37 @@ mod tests {
         let got = memo.side(&plan, &keys.threads);
         assert_eq!(got, side(&plan), "{text}");
         memo.counts()
+    }
+
+    /// Paths drawn again (the program repeats every seventh thread) share
+    /// their points, before and after an edit, and draw exactly as unshared.
+    #[test]
+    fn repeated_paths_share_their_points_and_draw_as_unshared() {
+        let s = Settings::new(Dialect::Gsk980tdc);
+        let mut memo = SideMemo::new();
+        let base = program(40);
+        let edited = base.replacen("X29.1", "X29.15", 1);
+        for text in [&base, &edited, &base] {
+            let plan = crate::plan(text, &s);
+            let got = memo.side(&plan, &PlanKeys::of(&plan).threads);
+            let paths: Vec<usize> = got
+                .items
+                .iter()
+                .filter_map(|i| match &i.shape {
+                    Shape::Polyline { points } | Shape::Polygon { points } => Some(points.as_ptr() as usize),
+                    _ => None,
+                })
+                .collect();
+            let mut held = paths.clone();
+            held.sort_unstable();
+            held.dedup();
+            assert!(held.len() * 4 < paths.len(), "{} points held by {} paths", held.len(), paths.len());
+            let whole = side(&plan);
+            for width in [936.0, 390.0] {
+                let view = crate::draw::View { width, height: 420.0, ..Default::default() };
+                assert_eq!(crate::draw::display(&got, &view), crate::draw::display(&whole, &view));
+            }
+        }
     }
 
     #[test]
