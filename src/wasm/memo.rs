@@ -26,8 +26,9 @@ const BLOCK: usize = 256;
 /// Most passes in one cached run.
 const RUN: usize = 16;
 
-/// Pieces by key (the keys are hashes already: no second hash with a random seed).
-type ByKey = HashMap<u64, Chunk, crate::hash::BuildKeyHasher>;
+/// Where each piece is among the pieces, by key (the keys are hashes
+/// already: no second hash with a random seed).
+type ByKey = HashMap<u64, usize, crate::hash::BuildKeyHasher>;
 
 /// A run of items with what the whole scene needs of it.
 struct Chunk {
@@ -130,10 +131,11 @@ impl Shared {
 }
 
 /// The pieces of one call: taken from the last call's by key, or built.
-/// They stay in one map, each marked with the call that last took it; the
-/// others are dropped at the end of the call.
+/// They stay in one list, each marked with the call that last took it; the
+/// others are dropped at the end of the call ([`Pieces::keep_taken`]).
 struct Pieces {
-    map: ByKey,
+    chunks: Vec<Chunk>,
+    index: ByKey,
     shared: Shared,
     /// This call's mark.
     call: u32,
@@ -143,61 +145,98 @@ struct Pieces {
 }
 
 impl Pieces {
-    /// Keeps the piece of `key`, built by `make` unless the last call had it; returns the key.
-    fn take(&mut self, key: u64, make: impl FnOnce() -> Chunk) -> u64 {
-        match self.map.get_mut(&key) {
-            Some(c) => {
+    /// Keeps the piece of `key`, built by `make` unless the last call had
+    /// it; returns where it is.
+    fn take(&mut self, key: u64, make: impl FnOnce() -> Chunk) -> usize {
+        match self.index.get(&key) {
+            Some(&i) => {
+                let c = &mut self.chunks[i];
                 if c.taken != self.call {
                     c.taken = self.call;
                     self.reused += 1;
                 }
+                i
             }
             None => {
                 self.built.push(key);
-                let mut c = make();
-                c.taken = self.call;
-                self.share(&mut c);
-                self.map.insert(key, c);
+                self.store(key, make())
             }
         }
-        key
     }
 
-    /// Shares the points of a piece just built with the pieces before it.
-    fn share(&mut self, c: &mut Chunk) {
+    /// Puts `c`, just built, under `key` (in place of the piece it had), marked and sharing its points.
+    fn store(&mut self, key: u64, mut c: Chunk) -> usize {
+        c.taken = self.call;
         if let Some(items) = Arc::get_mut(&mut c.items) {
             self.shared.share(items);
+        }
+        match self.index.get(&key) {
+            Some(&i) => {
+                self.chunks[i] = c;
+                i
+            }
+            None => {
+                self.chunks.push(c);
+                self.index.insert(key, self.chunks.len() - 1);
+                self.chunks.len() - 1
+            }
         }
     }
 
     /// [`Pieces::take`] for two pieces built together.
-    fn take_pair(&mut self, keys: (u64, u64), make: impl FnOnce() -> (Chunk, Chunk)) -> (u64, u64) {
-        if !(self.map.contains_key(&keys.0) && self.map.contains_key(&keys.1)) {
-            let (mut a, mut b) = make();
-            (a.taken, b.taken) = (self.call, self.call);
-            self.share(&mut a);
-            self.share(&mut b);
+    fn take_pair(&mut self, keys: (u64, u64), make: impl FnOnce() -> (Chunk, Chunk)) -> (usize, usize) {
+        if !(self.index.contains_key(&keys.0) && self.index.contains_key(&keys.1)) {
+            let (a, b) = make();
             self.built.extend([keys.0, keys.1]);
-            self.map.insert(keys.0, a);
-            self.map.insert(keys.1, b);
-            return keys;
+            return (self.store(keys.0, a), self.store(keys.1, b));
         }
         (self.take(keys.0, || Chunk::of([])), self.take(keys.1, || Chunk::of([])))
     }
 
     /// Keeps a piece built anyway (it is cheap and rare), under the key of its content.
-    fn put(&mut self, chunk: Chunk) -> u64 {
+    fn put(&mut self, chunk: Chunk) -> usize {
         let mut s = Scene::new(ViewKind::Side);
         s.items.push_shared(chunk.items.clone());
         let key = packed_key(&pack(&s));
         self.take(key, || chunk)
+    }
+
+    /// Drops the pieces this call did not take: emptied in place, or, once
+    /// they are most of the list, left out (`order`, the places of taken
+    /// pieces, follows the rest).
+    fn keep_taken(&mut self, order: &mut [usize]) {
+        let call = self.call;
+        let dead = self.chunks.iter().filter(|c| c.taken != call).count();
+        if dead * 2 <= self.chunks.len() {
+            for c in self.chunks.iter_mut().filter(|c| c.taken != call && !c.items.is_empty()) {
+                *c = Chunk::of([]);
+            }
+            let chunks = &self.chunks;
+            self.index.retain(|_, i| chunks[*i].taken == call);
+            return;
+        }
+        let mut to = vec![usize::MAX; self.chunks.len()];
+        let mut kept = Vec::with_capacity(self.chunks.len() - dead);
+        for (i, c) in std::mem::take(&mut self.chunks).into_iter().enumerate() {
+            if c.taken == call {
+                to[i] = kept.len();
+                kept.push(c);
+            }
+        }
+        self.chunks = kept;
+        self.index.retain(|_, i| {
+            *i = to[*i];
+            *i != usize::MAX
+        });
+        order.iter_mut().for_each(|i| *i = to[*i]);
     }
 }
 
 /// Pieces of the last side section, by key; and how many of the last call's pieces were built.
 #[derive(Default)]
 pub struct SideMemo {
-    chunks: ByKey,
+    chunks: Vec<Chunk>,
+    index: ByKey,
     built: usize,
     reused: usize,
     /// Calls so far (the mark of the pieces each took).
@@ -209,7 +248,8 @@ pub struct SideMemo {
 /// One call's pieces: the head and the order, and which were built.
 struct Built {
     head: Scene,
-    order: Vec<u64>,
+    /// Places of the pieces among the memo's, in scene order.
+    order: Vec<usize>,
 }
 
 /// What a piece is, mixed into its key.
@@ -242,16 +282,14 @@ impl SideMemo {
         let mut scene = b.head;
         crate::diagram::section::apply(&mut scene, plan);
         let mut extent = radial::extent(scene.items.iter());
-        for e in b.order.iter().map(|k| self.chunks[k].extent) {
+        for e in b.order.iter().map(|&i| self.chunks[i].extent) {
             extent = (extent.0.min(e.0), extent.1.max(e.1));
         }
         let list = radial::breaks(plan, extent);
         scene.items.iter_mut().for_each(|i| radial::map_item(&list, i));
         // The pieces go in whole, shared: no item is copied.
-        for k in &b.order {
-            if let Some(c) = self.chunks.get_mut(k) {
-                scene.items.push_shared(c.drawn(&list, &mut self.shared));
-            }
+        for &i in &b.order {
+            scene.items.push_shared(self.chunks[i].drawn(&list, &mut self.shared));
         }
         self.shared.forget_unused();
         radial::finish(&list, &mut scene);
@@ -262,12 +300,12 @@ impl SideMemo {
     /// Builds or reuses every piece of `plan`'s side section.
     fn build(&mut self, plan: &Plan, thread_keys: &[u64]) -> Built {
         self.calls = self.calls.wrapping_add(1);
-        let map = std::mem::take(&mut self.chunks);
+        let (chunks, index) = (std::mem::take(&mut self.chunks), std::mem::take(&mut self.index));
         let shared = std::mem::take(&mut self.shared);
-        let mut pieces = Pieces { map, shared, call: self.calls, built: Vec::new(), reused: 0 };
+        let mut pieces = Pieces { chunks, index, shared, call: self.calls, built: Vec::new(), reused: 0 };
         let layout = Layout::of(plan);
         let thread_key = |ti: usize| thread_keys.get(ti).copied().unwrap_or(0);
-        let mut order: Vec<u64> = Vec::new();
+        let mut order: Vec<usize> = Vec::new();
         // Each thread's band and dimensions: drawn from the thread and its turned work.
         let mut fronts = Vec::new();
         for (ti, t) in plan.threads.iter().enumerate() {
@@ -341,13 +379,13 @@ impl SideMemo {
         }
         self.built = pieces.built.len();
         self.reused = pieces.reused;
-        let call = pieces.call;
-        pieces.map.retain(|_, c| c.taken == call);
+        pieces.keep_taken(&mut order);
         let head = {
-            let chunks: Vec<&Chunk> = order.iter().map(|k| &pieces.map[k]).collect();
+            let chunks: Vec<&Chunk> = order.iter().map(|&i| &pieces.chunks[i]).collect();
             head(&chunks)
         };
-        self.chunks = pieces.map;
+        self.chunks = pieces.chunks;
+        self.index = pieces.index;
         self.shared = pieces.shared;
         Built { head, order }
     }
