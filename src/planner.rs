@@ -462,13 +462,14 @@ impl Planner {
                 m
             }));
         }
-        for mut th in t.threads.drain(skip_t.min(t.threads.len())..) {
-            th.first_move = th.first_move.saturating_add_signed(dm);
-            for p in &mut th.passes {
-                p.moves = p.moves.shifted(dm);
+        let rest = t.threads.drain(skip_t.min(t.threads.len())..);
+        r.asm.threads.extend(rest.map(|mut th| {
+            if dm != 0 {
+                th.first_move = th.first_move.saturating_add_signed(dm);
+                th.passes.iter_mut().for_each(|p| p.moves = p.moves.shifted(dm));
             }
-            r.asm.threads.push(th);
-        }
+            th
+        }));
         let diags = t.diags.split_off(skip_d.min(t.diags.len()));
         r.diags.extend_shifted(diags, s);
         let line = t.checkpoints[k].line;
