@@ -23,8 +23,11 @@
 //! thread). The result is the plan a full re-plan would give; the tests
 //! check that for random edits.
 
+mod changed;
 mod edit;
 mod tail;
+
+pub use changed::Changed;
 
 use crate::diagnostic::{Diagnostics, Item};
 use crate::exec::reads::Reads;
@@ -69,6 +72,10 @@ pub struct Planner {
     last_repeated: u64,
     /// Where the last plan took over the reading before it (for its threads' advice).
     join: Option<Join>,
+    /// What the last plan kept of the one before it.
+    changed: Option<Changed>,
+    /// Plans made so far.
+    plans: u64,
 }
 
 impl Planner {
@@ -88,6 +95,8 @@ impl Planner {
             last_reads: Reads::default(),
             last_repeated: 0,
             join: None,
+            changed: None,
+            plans: 0,
         }
     }
 
@@ -103,6 +112,17 @@ impl Planner {
             self.checkpoints.clear();
             self.plan = None;
         }
+    }
+
+    /// What the last plan kept of the plan before it (none when it was
+    /// made from nothing: the first plan, new settings, a text too large).
+    pub fn changed(&self) -> Option<&Changed> {
+        self.changed.as_ref()
+    }
+
+    /// How many plans this planner has made (the last plan is the `plans()`-th).
+    pub fn plans(&self) -> u64 {
+        self.plans
     }
 
     /// The line the last plan resumed reading at (1 when it read everything).
@@ -140,8 +160,11 @@ impl Planner {
             Some((ci, moved)) => (Some(ci), moved),
             None => (None, None),
         };
+        self.plans += 1;
+        let mut changed = self.plan.as_ref().map(|_| Changed::default());
         let mut r = Reading::new(&self.settings, if resume.is_some() { 0 } else { text.len() });
         let Some(mut lexer) = lexer_for(text, &self.settings, &mut r.diags) else {
+            self.changed = None;
             self.reset(text);
             return self.plan.insert(finish(text, &self.settings, r.outputs(), Vec::new()));
         };
@@ -185,6 +208,9 @@ impl Planner {
                     r.diags.shift_spans(s);
                 }
                 kept_threads = cp.snap.threads();
+                if let Some(c) = &mut changed {
+                    (c.moves_kept, c.threads_kept) = (cp.snap.moves(), kept_threads);
+                }
                 lexer.seek(cp.offset, cp.line);
                 self.line_starts.truncate(cp.line as usize - 1);
                 if self.line_starts.len() + 1 != cp.line as usize {
@@ -234,7 +260,10 @@ impl Planner {
         let inch_now = r.it.m.inch;
         if let (false, Some(k), Some(t)) = (read_all, meet, tail) {
             self.stopped_at = Some(t.checkpoints[k].line);
-            self.splice(&mut r, t, k);
+            let (moves, threads) = self.splice(&mut r, t, k);
+            if let Some(c) = &mut changed {
+                (c.moves_rejoined, c.threads_rejoined) = (Some(moves), Some(threads));
+            }
         } else {
             self.last_reads = std::mem::take(&mut r.reads);
             self.last_repeated = r.exec.repeated;
@@ -262,6 +291,7 @@ impl Planner {
         *advice = old_advice.drain(..kept_threads.min(old_advice.len())).collect();
         let join = self.join.as_ref();
         let settings = &self.settings;
+        let mut refinished = Vec::new();
         let plan =
             finish_with(text, settings, out, self.line_starts.clone(), &before, |threads, moves, spans, room| {
                 for i in advice.len()..threads.len() {
@@ -272,6 +302,7 @@ impl Planner {
                         continue;
                     }
                     let mut d = Diagnostics::with_limit(usize::MAX);
+                    refinished.push(i);
                     finish_thread(threads, i, moves, settings, text, &mut d, spans);
                     advice.push(d.into_items());
                 }
@@ -282,6 +313,7 @@ impl Planner {
                 }
                 all
             });
+        self.changed = changed.map(|c| Changed { refinished, ..c });
         self.plan.insert(plan)
     }
 
@@ -390,8 +422,11 @@ impl Planner {
     }
 
     /// Ends reading `r` with the last reading's tail from its checkpoint `k` on.
-    fn splice(&mut self, r: &mut Reading, mut t: Tail, k: usize) {
+    /// Returns where the rest was joined: (new, old) places of its first
+    /// motion and of its first thread.
+    fn splice(&mut self, r: &mut Reading, mut t: Tail, k: usize) -> ((usize, usize), (usize, usize)) {
         let cp = &t.checkpoints[k].snap;
+        let joined = ((r.asm.moves.len(), cp.moves()), (r.asm.threads.len(), cp.threads()));
         let (dm, dt, dd) = (
             r.asm.moves.len() as isize - cp.moves() as isize,
             r.asm.threads.len() as isize - cp.threads() as isize,
@@ -445,6 +480,7 @@ impl Planner {
             self.line_starts.extend(t.line_starts[from..].iter().map(|&p| s.pos(p as usize) as u32));
         }
         self.inch = t.inch;
+        joined
     }
     fn reset(&mut self, text: &str) {
         self.stopped_at = None;

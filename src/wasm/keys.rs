@@ -19,6 +19,7 @@ use std::mem::discriminant;
 use crate::figures::{ChipLoad, Gauge, Shop};
 use crate::motion::{ArcData, Move, Point};
 use crate::plan::Plan;
+use crate::planner::Changed;
 use crate::thread::{Pass, Thread};
 
 use super::pack::Packed;
@@ -363,18 +364,55 @@ pub struct PlanKeys {
     pub all_listed: u64,
     /// The key of the side section's inputs.
     pub side: u64,
+    /// The keys of the motions by blocks of [`MOVES_PER_KEY`], and how many motions there were.
+    moves: (Vec<u64>, usize),
 }
+
+/// Motions per key of [`PlanKeys`]' motions.
+pub const MOVES_PER_KEY: usize = 256;
 
 impl PlanKeys {
     /// The keys of `plan`.
     pub fn of(plan: &Plan) -> PlanKeys {
-        let threads: Vec<u64> = plan.threads.iter().map(thread_key).collect();
+        PlanKeys::after(None, plan)
+    }
+
+    /// The keys of `plan`, taken from `last` (the keys of the plan before
+    /// it) for the motions and threads that `Changed` says are that plan's;
+    /// without `last`, all worked out.
+    pub fn after(last: Option<(&PlanKeys, &Changed)>, plan: &Plan) -> PlanKeys {
+        let was = |i: usize| last.and_then(|(k, c)| c.thread_was(i).filter(|&j| j < k.threads.len()).map(|j| (k, j)));
+        let (threads, listed): (Vec<u64>, Vec<u64>) = plan
+            .threads
+            .iter()
+            .enumerate()
+            .map(|(i, t)| match was(i) {
+                Some((k, j)) => (k.threads[j], k.listed[j]),
+                None => {
+                    let key = thread_key(t);
+                    (key, combine(&[key, shop_key(&t.shop)]))
+                }
+            })
+            .unzip();
+        let n = plan.moves.len();
+        let moves: Vec<u64> = (0..n.div_ceil(MOVES_PER_KEY))
+            .map(|b| {
+                let (from, to) = (b * MOVES_PER_KEY, ((b + 1) * MOVES_PER_KEY).min(n));
+                // The last plan's key of the same block, when it held the same motions.
+                let same = |(k, c): (&PlanKeys, &Changed)| {
+                    let (keys, len) = &k.moves;
+                    let was_to = ((b + 1) * MOVES_PER_KEY).min(*len);
+                    (c.moves_same(from, to) && was_to == to).then(|| keys.get(b).copied()).flatten()
+                };
+                last.and_then(same).unwrap_or_else(|| moves_key(&plan.moves[from..to]))
+            })
+            .collect();
         let all_threads = combine(&threads);
-        let side = combine(&[all_threads, moves_key(&plan.moves)]);
-        let listed: Vec<u64> =
-            plan.threads.iter().zip(&threads).map(|(t, k)| combine(&[*k, shop_key(&t.shop)])).collect();
+        let mut all_moves = moves.clone();
+        all_moves.push(n as u64);
+        let side = combine(&[all_threads, combine(&all_moves)]);
         let all_listed = combine(&listed);
-        PlanKeys { threads, all_threads, listed, all_listed, side }
+        PlanKeys { threads, all_threads, listed, all_listed, side, moves: (moves, n) }
     }
 }
 
@@ -427,5 +465,73 @@ mod tests {
         // Keys fit a JS number exactly and use its bits.
         assert!(a.iter().all(|k| js_key(*k) < (1u64 << 52) as f64));
         assert!(a.iter().any(|k| js_key(*k) >= (1u64 << 51) as f64));
+    }
+
+    /// After each edit, the keys taken from the last plan's where the
+    /// planner kept its motions and threads are the keys worked out anew.
+    #[test]
+    fn keys_after_an_edit_are_the_keys_of_the_plan() {
+        // Threads on their own diameters (13 lines each: checkpoints every 256 blocks fall inside).
+        let mut lines: Vec<String> = vec!["G50 X100 Z100".into()];
+        for k in 0..60 {
+            let d = 30 + k % 9;
+            lines.extend([
+                format!("G00 X{} Z70", d + 10),
+                format!("G01 X{d} F0.2"),
+                "Z20".into(),
+                format!("X{}", d + 5),
+                "G00 Z70".into(),
+            ]);
+            for x in [0.9, 1.5] {
+                lines.extend([
+                    format!("X{:.1}", f64::from(d) - x),
+                    "G32 Z13 F2".into(),
+                    format!("G00 X{}", d + 10),
+                    "Z70".into(),
+                ]);
+            }
+        }
+        lines.push("M30".into());
+        let pool = ["X31.1", "G32 Z14 F2", "Z70", "(M36x2-6g)", "M05", "G00 X60 Z90", "X", "G04 P1", ""];
+        let mut planner = crate::planner::Planner::new(Settings::new(Dialect::Gsk980tdc));
+        let mut keys = PlanKeys::of(planner.plan(&lines.join("\n")));
+        // A designation written before a thread that lies after the join (the
+        // checkpoint at line 513 falls between it and its first pass at 514):
+        // that thread of the kept rest is finished anew, and its figures change.
+        lines[509].push_str(" (M36x2-6g)");
+        let plan = planner.plan(&lines.join("\n")).clone();
+        let changed = planner.changed().expect("an edit of a plan").clone();
+        let (new, _) = changed.threads_rejoined.expect("joined");
+        let i = *changed.refinished.iter().find(|&&i| i >= new).expect("a thread after the join finished anew");
+        let fresh = PlanKeys::of(&plan);
+        assert_ne!(fresh.listed[i], keys.listed[i], "its figures changed");
+        assert_eq!(PlanKeys::after(Some((&keys, &changed)), &plan), fresh);
+        keys = fresh;
+        let mut next = crate::hash::unit_floats(0x51_7cc1);
+        let (mut reused, mut rejoined) = (0, 0);
+        for round in 0..300 {
+            let at = 1 + (next() * (lines.len() - 2) as f64) as usize;
+            match round % 10 {
+                // A digit typed at the end of a line, most often.
+                0..=5 => lines[at].push('1'),
+                6 => lines[at] = pool[(next() * pool.len() as f64) as usize].to_string(),
+                7 => lines.insert(at, pool[(next() * pool.len() as f64) as usize].to_string()),
+                8 => {
+                    lines.remove(at);
+                }
+                _ => {
+                    lines[at].pop();
+                }
+            }
+            let plan = planner.plan(&lines.join("\n")).clone();
+            let fresh = PlanKeys::of(&plan);
+            let changed = planner.changed().expect("an edit of a plan").clone();
+            let after = PlanKeys::after(Some((&keys, &changed)), &plan);
+            assert_eq!(after, fresh, "round {round}: {changed:?}");
+            reused += usize::from(changed.moves_kept > 0);
+            rejoined += usize::from(changed.moves_rejoined.is_some());
+            keys = after;
+        }
+        assert!(reused > 100 && rejoined > 100, "kept {reused}, rejoined {rejoined} of 300");
     }
 }

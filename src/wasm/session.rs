@@ -42,6 +42,9 @@ pub(super) struct State {
     diagnostics: DiagnosticsSent,
     /// Each view's last fit (by [`super::shown::Which`]): kept while typing leaves the focus and labels as they were.
     pub(super) fits: [crate::draw::FitMemo; 3],
+    /// The keys of the planner's last plan and its number (the next plan's
+    /// keys take from them what the planner kept).
+    keys: Option<(u64, PlanKeys)>,
 }
 
 /// A planning session of one view (see the module documentation).
@@ -119,6 +122,7 @@ impl Session {
                 compare: None,
                 fits: Default::default(),
                 diagnostics: DiagnosticsSent::default(),
+                keys: None,
             },
         };
         session.planner.plan(text);
@@ -127,11 +131,16 @@ impl Session {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
         session.plans += 1;
-        let State { planner, side, threads, shown, thread: chosen, plans, compare, diagnostics, .. } = &mut session;
+        let State {
+            planner, side, threads, shown, thread: chosen, plans, compare, diagnostics, keys: last_keys, ..
+        } = &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {
-                let keys = PlanKeys::of(plan);
+                let keys = match (last_keys.take(), planner.changed()) {
+                    (Some((n, k)), Some(c)) if n + 1 == planner.plans() => PlanKeys::after(Some((&k, c)), plan),
+                    _ => PlanKeys::of(plan),
+                };
                 let picked = pick(plan, thread);
                 *chosen = picked.unwrap_or(0);
                 let (tooth, starts) = thread_scenes_of(plan, picked, start);
@@ -148,7 +157,10 @@ impl Session {
                     crate::compare::compare(plan, b)
                 });
                 let sent = (threads, diagnostics);
-                answer(text, plan, &keys, sent, &problems, (picked, start, lang), known_diagnostics, &known).map(|o| {
+                let answered =
+                    answer(text, plan, &keys, sent, &problems, (picked, start, lang), known_diagnostics, &known);
+                *last_keys = Some((planner.plans(), keys));
+                answered.map(|o| {
                     if let Some(c) = &compared {
                         set(&o, "comparison", &super::compared::comparison_js(c));
                     }
@@ -219,7 +231,10 @@ impl Session {
         let out = match state.as_mut() {
             Some(st) => match st.planner.last() {
                 Some(plan) => {
-                    let keys = PlanKeys::of(plan);
+                    let keys = match &st.keys {
+                        Some((n, k)) if *n == st.planner.plans() => k.clone(),
+                        _ => PlanKeys::of(plan),
+                    };
                     let picked = pick(plan, thread);
                     st.thread = picked.unwrap_or(0);
                     let (tooth, starts) = thread_scenes_of(plan, picked, start);
