@@ -13,6 +13,17 @@ use crate::thread::Role;
 /// A point in world coordinates: `[horizontal, vertical]`.
 pub type Pt = [f64; 2];
 
+/// Whether two lists of points are the same, bit for bit.
+pub fn same_points(a: &[Pt], b: &[Pt]) -> bool {
+    a.len() == b.len() && a.iter().flatten().zip(b.iter().flatten()).all(|(u, v)| u.to_bits() == v.to_bits())
+}
+
+/// Feeds `pts` (their number, then every coordinate's bits) into `h`.
+pub fn hash_points(h: &mut impl std::hash::Hasher, pts: &[Pt]) {
+    h.write_usize(pts.len());
+    pts.iter().flatten().for_each(|v| h.write_u64(v.to_bits()));
+}
+
 /// Which view a scene is for; it fixes what the world axes mean.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]

@@ -176,11 +176,10 @@ pub(super) fn labelled_in(item: &Item, annotated: usize, chosen: usize) -> bool 
 pub(super) fn scene_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
     let annotated = annotated(scene);
     let chosen = u32::try_from(o.thread).unwrap_or(u32::MAX);
-    let only = annotated > MAX_ANNOTATED;
     let wrap_at = if width > 0.0 { (0.45 * width).max(160.0) } else { f64::INFINITY };
     let mut out = Vec::new();
     for (i, item) in scene.items.iter().enumerate() {
-        if only && item.thread.is_some_and(|t| t != chosen) {
+        if !labelled_in(item, annotated, o.thread) {
             continue;
         }
         let mine = item.thread.is_none_or(|t| annotated <= 1 || t == chosen);

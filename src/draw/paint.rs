@@ -15,7 +15,7 @@ use super::labels::LINE;
 use super::list::{Builder, Op, Pen};
 use super::pens::{HALO, HIGHLIGHT, HIGHLIGHT_HALO, ItemPen, pen_of};
 use super::{Placed, Transform, View};
-use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style};
+use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style, hash_points, same_points};
 
 /// Paths wholly this far off the page are left out.
 const CULL: f64 = 12.0;
@@ -73,11 +73,6 @@ impl Batch {
         self.starts.push(self.points.len());
         self.points.extend_from_slice(pts);
     }
-}
-
-/// Whether two lists of points are the same, bit for bit.
-fn same_bits(a: &[Pt], b: &[Pt]) -> bool {
-    a.len() == b.len() && a.iter().flatten().zip(b.iter().flatten()).all(|(u, v)| u.to_bits() == v.to_bits())
 }
 
 /// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
@@ -221,10 +216,9 @@ impl Painter<'_> {
             }
             let mut wh = KeyHasher::default();
             key.hash(&mut wh);
-            wh.write_usize(points.len());
-            points.iter().flatten().for_each(|v| wh.write_u64(v.to_bits()));
+            hash_points(&mut wh, points);
             match worlds.entry(wh.finish()) {
-                Entry::Occupied(e) if same_bits(e.get(), points) => continue,
+                Entry::Occupied(e) if same_points(e.get(), points) => continue,
                 Entry::Occupied(_) => {}
                 Entry::Vacant(e) => {
                     e.insert(points);

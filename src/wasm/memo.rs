@@ -15,7 +15,7 @@ use crate::plan::Plan;
 use super::keys::{KeyHasher, combine, hash_move, packed_key};
 use super::pack::pack;
 use crate::diagram::radial::{self, Break};
-use crate::diagram::scene::{Item, Pt, Rect, Scene, Shape, Style, ViewKind};
+use crate::diagram::scene::{Item, Pt, Rect, Scene, Shape, Style, ViewKind, hash_points, same_points};
 use crate::diagram::side::{
     Band, Layout, axis, capped_note, detail_note, grow_focus_grouped, motion_item, pass_items, thread_items,
     unmatched_item, work_extent_in,
@@ -103,17 +103,10 @@ impl Shared {
         for item in items {
             let (Shape::Polyline { points } | Shape::Polygon { points }) = &mut item.shape else { continue };
             let mut h = KeyHasher::default();
-            h.write_usize(points.len());
-            points.iter().flatten().for_each(|v| h.write_u64(v.to_bits()));
+            hash_points(&mut h, points);
             match self.points.entry(h.finish()) {
                 Entry::Occupied(e) => {
-                    let same = e.get().len() == points.len()
-                        && e.get()
-                            .iter()
-                            .flatten()
-                            .zip(points.iter().flatten())
-                            .all(|(a, b)| a.to_bits() == b.to_bits());
-                    if same {
+                    if same_points(e.get(), points) {
                         *points = e.get().clone();
                     }
                 }
