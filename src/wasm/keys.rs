@@ -408,9 +408,7 @@ impl PlanKeys {
             })
             .collect();
         let all_threads = combine(&threads);
-        let mut all_moves = moves.clone();
-        all_moves.push(n as u64);
-        let side = combine(&[all_threads, combine(&all_moves)]);
+        let side = combine(&[all_threads, combine(&moves), n as u64]);
         let all_listed = combine(&listed);
         PlanKeys { threads, all_threads, listed, all_listed, side, moves: (moves, n) }
     }

@@ -34,8 +34,6 @@ pub(super) struct State {
     pub(super) shown: Shown,
     /// The chosen thread (its dimensions are drawn when the side section has many).
     pub(super) thread: usize,
-    /// Plans made so far (each plan's number).
-    plans: u64,
     /// Another program compared with this one (`Session::compare`): its plan and number.
     pub(super) compare: Option<(Plan, u64)>,
     /// The diagnostics list answered last (an answer may send only its change).
@@ -118,7 +116,6 @@ impl Session {
                 threads: ThreadsSent::default(),
                 shown: Shown::default(),
                 thread: 0,
-                plans: 0,
                 compare: None,
                 fits: Default::default(),
                 diagnostics: DiagnosticsSent::default(),
@@ -130,10 +127,8 @@ impl Session {
         if let Some(plan) = session.planner.last_mut() {
             crate::hint::add(text, &settings, plan, crate::hint::MAX_BYTES_LIVE);
         }
-        session.plans += 1;
-        let State {
-            planner, side, threads, shown, thread: chosen, plans, compare, diagnostics, keys: last_keys, ..
-        } = &mut session;
+        let State { planner, side, threads, shown, thread: chosen, compare, diagnostics, keys: last_keys, .. } =
+            &mut session;
         let lang = self.lang.get();
         let out = match planner.last() {
             Some(plan) => {
@@ -146,7 +141,7 @@ impl Session {
                 let (tooth, starts) = thread_scenes_of(plan, picked, start);
                 let side_scene = Rc::new(side.side(plan, &keys.threads));
                 let scenes = Scenes {
-                    plan: *plans,
+                    plan: planner.plans(),
                     scenes: [Some(side_scene), tooth.0, starts.0],
                     keys: [js_key(keys.side), tooth.1, starts.1],
                 };
@@ -166,7 +161,7 @@ impl Session {
                     }
                     set(&o, "shown", &Float64Array::from(&shown.keys()[..]).into());
                     set(&o, "stale", &shown.stale().into());
-                    set(&o, "plan", &(*plans as f64).into());
+                    set(&o, "plan", &(planner.plans() as f64).into());
                     set(&o, "goodPlan", &shown.good_plan().map_or(JsValue::NULL, |g| (g as f64).into()));
                     set(&o, "resumedAt", &planner.resumed_at().into());
                     o.into()
