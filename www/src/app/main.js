@@ -5,7 +5,7 @@
 // with an alarm keeps the last good drawing and table, greyed.
 
 import { createEditor } from '../editor/editor.js';
-import { startEngine } from '../engine/client.js';
+import { afterTask, startEngine } from '../engine/client.js';
 import { patchList, spliceList } from '../engine/parts.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
 import { diagnosticRows, passHead, passLines, passRow, passVia, patchRows, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
@@ -234,7 +234,7 @@ function listsAfterPaint(f) {
     listsWaiting = null;
     g?.();
   };
-  requestAnimationFrame(() => setTimeout(run, 0));
+  requestAnimationFrame(() => afterTask(run));
   setTimeout(run, 100);
 }
 
