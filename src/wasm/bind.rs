@@ -108,14 +108,6 @@ pub fn plan_summary(text: &str, dialect_name: &str, settings: &str) -> Result<Js
     Ok(o.into())
 }
 
-/// The whole plan of `text` as a JSON-compatible value (what the CLI's
-/// `--json` writes, once `JSON.stringify`-ed), for download.
-#[wasm_bindgen]
-pub fn plan_value(text: &str, dialect_name: &str, settings: &str) -> Result<JsValue, JsValue> {
-    let (s, _) = settings_from(dialect(dialect_name)?, settings);
-    crate::plan(text, &s).serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(super::js::err)
-}
-
 thread_local! {
     /// The default session, for pages that plan one program.
     static DEFAULT: Session = Session::new();

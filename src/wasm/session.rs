@@ -251,26 +251,6 @@ impl Session {
         out
     }
 
-    /// The last plan as a JSON-compatible value (what the CLI's `--json`
-    /// writes: `JSON.stringify` it), for download. The wasm carries no JSON
-    /// writer of its own.
-    pub fn plan_value(&self) -> Result<JsValue, JsValue> {
-        self.with_last(json_value)
-    }
-
-    /// The last plan written block by block for dialect `to` (every pass
-    /// with its approach, cut, run-out, retract and return; see
-    /// [`crate::expand`]): `{program, notes}`, the notes in the session's
-    /// language. Planned again, the program gives the same passes.
-    pub fn expand(&self, to: &str) -> Result<JsValue, JsValue> {
-        let to = dialect(to)?;
-        let lang = self.lang.get();
-        self.with_last(|plan| {
-            let e = crate::expand::expand(plan, to);
-            to_js(&super::tools::Written::<()>::new(&e.program, &e.notes, lang, None))
-        })
-    }
-
     /// The motions of the last plan, seven numbers each:
     /// `[kind, x0, z0, x1, z1, line, cw]` with kind 0 rapid, 1 feed, 2 arc,
     /// 3 thread, 4 run-out, 5 screw-in, 6 a roughing cut and `cw` 1 for
@@ -297,11 +277,6 @@ impl Session {
         });
         Float64Array::from(&out[..])
     }
-}
-
-/// `v` as a JSON-compatible JavaScript value (`None` as null, maps as objects).
-fn json_value<T: serde::Serialize + ?Sized>(v: &T) -> Result<JsValue, JsValue> {
-    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(err)
 }
 
 impl Session {

@@ -1,6 +1,9 @@
 //! The program-writing tools JavaScript calls: the thread wizard
-//! ([`crate::wizard`]) and its table of forms. Expanding a plan to blocks is
-//! a [`super::Session`] method (it writes the session's last plan).
+//! ([`crate::wizard`]) and its table of forms, a program written block by
+//! block for another controller ([`crate::expand`]) and the plan as JSON.
+//! They are a wasm module of their own (feature `tools`), loaded by a page
+//! when first used: each plans the text it is given (what the page's
+//! session planned last) and keeps nothing.
 //!
 //! As in `bind`, nothing here may panic: a request is read field by field,
 //! every wrong field is named in the error.
@@ -9,7 +12,7 @@ use js_sys::Reflect;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-use super::js::{dialect, err, to_js};
+use super::js::{dialect, err, settings_from, to_js};
 use crate::dialect::Dialect;
 use crate::form::Form;
 use crate::message::{Lang, Remark};
@@ -115,7 +118,7 @@ fn request(o: &JsValue) -> Result<Request, JsValue> {
 
 /// A written program with its notes in the page's language.
 #[derive(Serialize)]
-pub(super) struct Written<'a, S: Serialize> {
+struct Written<'a, S: Serialize> {
     program: &'a str,
     notes: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -124,7 +127,7 @@ pub(super) struct Written<'a, S: Serialize> {
 
 impl<'a, S: Serialize> Written<'a, S> {
     /// `program` with `notes` rendered in `lang` (and the wizard's `spec`).
-    pub(super) fn new(program: &'a str, notes: &[Remark], lang: Lang, spec: Option<S>) -> Self {
+    fn new(program: &'a str, notes: &[Remark], lang: Lang, spec: Option<S>) -> Self {
         Written { program, notes: notes.iter().map(|n| n.render(lang)).collect(), spec }
     }
 }
@@ -139,4 +142,33 @@ pub fn wizard_generate(req: JsValue) -> Result<JsValue, JsValue> {
     let lang = text(&req, "lang")?.and_then(|l| Lang::parse(&l)).unwrap_or_default();
     let g = generate(&r).map_err(|e| err(e.render(lang)))?;
     to_js(&Written::new(&g.program, &g.notes, lang, Some(&g.spec)))
+}
+
+/// The plan of `text` written block by block for dialect `to` (every pass
+/// with its approach, cut, run-out, retract and return; see
+/// [`crate::expand`]): `{program, notes}`, the notes in `lang` (`en` or
+/// `zh`; anything else is English). Planned again, the program gives the
+/// same passes.
+#[wasm_bindgen]
+pub fn expand(
+    text: &str,
+    dialect_name: &str,
+    settings: &str,
+    to: &str,
+    lang: Option<String>,
+) -> Result<JsValue, JsValue> {
+    let (s, _) = settings_from(dialect(dialect_name)?, settings);
+    let to = dialect(to)?;
+    let lang = lang.as_deref().and_then(Lang::parse).unwrap_or_default();
+    let e = crate::expand::expand(&crate::plan(text, &s), to);
+    to_js(&Written::<()>::new(&e.program, &e.notes, lang, None))
+}
+
+/// The whole plan of `text` as a JSON-compatible value (what the CLI's
+/// `--json` writes, once `JSON.stringify`-ed), for download. The wasm
+/// carries no JSON writer of its own.
+#[wasm_bindgen]
+pub fn plan_value(text: &str, dialect_name: &str, settings: &str) -> Result<JsValue, JsValue> {
+    let (s, _) = settings_from(dialect(dialect_name)?, settings);
+    crate::plan(text, &s).serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(err)
 }

@@ -101,8 +101,9 @@ export function finish(label, counts) {
  * with O1006 planned (its five passes in the table); page errors and console
  * errors go to `problems`. Returns `{page, close}`.
  */
-export async function openApp(prefix, url, viewport, problems) {
+export async function openApp(prefix, url, viewport, problems, onContext = () => {}) {
   const { context, close } = await launch(prefix, { viewport });
+  onContext(context);
   const page = context.pages()[0] || (await context.newPage());
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));

@@ -7,21 +7,30 @@
 // - "Expand to blocks" writes O1006 (seed 004) for LinuxCNC as G33 blocks;
 //   opened as a new program it plans the same five passes, X47.1 … X45.4.
 // - In Chinese the wizard's form titles, notes and refusals are Chinese.
+// - The tools are a wasm module of their own: the app's first diagram does
+//   not fetch it; the first tool used fetches it once, in a worker as on the
+//   page (`?engine=page`), where "Plan JSON" downloads O1006's five passes.
 // Screenshots of both dialogs in both languages go to tests/browser/screenshots/.
 
 import { siteUrl, checker, guard, openApp, finish, shots } from './harness.mjs';
+import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 
 const url = siteUrl('tools.test.mjs');
 const { check, counts } = checker();
 const timer = guard(120, 'the tools test');
 const problems = [];
-const { page, close } = await openApp('screwcut-tools-', url, { width: 1440, height: 900 }, problems);
+const toolsWasm = [];
+const { page, close } = await openApp('screwcut-tools-', url, { width: 1440, height: 900 }, problems, (context) =>
+  context.on('request', (r) => r.url().endsWith('/screwcut_tools_bg.wasm') && toolsWasm.push(r.url())),
+);
 
 try {
   const programs = () => page.evaluate(() => window.__screwcut.library.programs.list().map((i) => i.name));
   const xs = () => page.locator('#passes tbody tr[data-pass] td:nth-child(3)').allTextContents();
   const before = await programs();
+
+  check('the first diagram loads no tools module', toolsWasm.length === 0, JSON.stringify(toolsWasm));
 
   // ---- the wizard ----
   await page.click('#wizard');
@@ -86,6 +95,31 @@ try {
   await page.waitForFunction(() => (document.querySelector('dialog.wizard .wz-program')?.textContent || '').includes('G33'), null, { timeout: 10_000 }).catch(() => {});
   await dlg.screenshot({ path: path.join(shots, 'tools-expand-zh.png') });
   await dlg.locator('button[value="cancel"]').click();
+  check('the tools module was fetched once for every tool used', toolsWasm.length === 1, JSON.stringify(toolsWasm));
+
+  // ---- the engine on the page: the same tools module ----
+  const onPage = await page.context().newPage();
+  onPage.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  await onPage.goto(`${url}?engine=page`);
+  await onPage.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  await onPage.selectOption('#programs', o1006);
+  await onPage.waitForFunction(() => (window.__screwcut.text() || '').includes('N200 G32'), null, { timeout: 10_000 }).catch(() => {});
+  const mode = await onPage.evaluate(() => window.__screwcut.mode);
+  await onPage.click('#expand');
+  const pageDlg = onPage.locator('dialog.wizard');
+  await pageDlg.waitFor({ timeout: 10_000 });
+  await pageDlg.locator('select[name="to"]').selectOption('linuxcnc');
+  await onPage.waitForFunction(() => (document.querySelector('dialog.wizard .wz-program')?.textContent || '').includes('G33'), null, { timeout: 10_000 }).catch(() => {});
+  const onPageExpanded = await pageDlg.locator('.wz-program').textContent();
+  await pageDlg.screenshot({ path: path.join(shots, 'tools-expand-page-engine.png') });
+  check('?engine=page: O1006 expands to the same G33 blocks, the tools module fetched by the page', mode === 'page' && onPageExpanded === expanded && toolsWasm.length === 2, `${mode} ${toolsWasm.length} ${onPageExpanded.slice(0, 200)}`);
+  await pageDlg.locator('button[value="cancel"]').click();
+  // The plan as JSON (the CLI's --json) from the same module: O1006's five passes.
+  await onPage.click('#file-menu summary');
+  const [download] = await Promise.all([onPage.waitForEvent('download', { timeout: 10_000 }), onPage.click('#plan-json')]);
+  const json = JSON.parse(await readFile(await download.path(), 'utf8'));
+  const firstX = json.threads?.[0]?.passes?.map((p) => p.from?.[0]);
+  check('"Plan as JSON" downloads O1006\'s plan: five passes X47.1 … X45.4', json.dialect === 'gsk980tdc' && JSON.stringify(firstX) === JSON.stringify([47.1, 46.5, 45.9, 45.5, 45.4]), JSON.stringify([json.dialect, firstX, Object.keys(json.threads?.[0]?.passes?.[0] || {})]));
   check('no console or page errors', problems.length === 0, JSON.stringify(problems));
 } catch (e) {
   check('the tools test ran to the end', false, e && e.stack ? e.stack : String(e));

@@ -316,17 +316,27 @@ pub fn bench(args: &[String]) -> Result {
     eprintln!("\n== wasm build and size");
     let site = root.join("target").join("site-bench");
     web::build_site(true, &site)?;
-    let wasm = site.join("screwcut_bg.wasm");
-    let raw = std::fs::metadata(&wasm).map_err(|e| format!("{}: {e}", wasm.display()))?.len();
-    let gz = Command::new("gzip")
-        .args(["-9", "-c"])
-        .arg(&wasm)
-        .output()
-        .map_err(|e| format!("cannot run gzip: {e}"))?
-        .stdout
-        .len();
-    println!("wasm size: {raw} bytes raw, {gz} bytes gzipped (-9) ({:.1} KiB)", gz as f64 / 1024.0);
-    figs.insert("wasm_gz_kib".into(), gz as f64 / 1024.0);
+    for m in crate::wasm::MODULES {
+        let wasm = site.join(m.wasm_file());
+        let raw = std::fs::metadata(&wasm).map_err(|e| format!("{}: {e}", wasm.display()))?.len();
+        let gz = Command::new("gzip")
+            .args(["-9", "-c"])
+            .arg(&wasm)
+            .output()
+            .map_err(|e| format!("cannot run gzip: {e}"))?
+            .stdout
+            .len();
+        let br = crate::precompress::br_size(&wasm) as f64 / 1024.0;
+        println!(
+            "{} ({}): {raw} bytes raw, {gz} bytes gzipped (-9) ({:.1} KiB), {br:.1} KiB Brotli",
+            m.wasm_file(),
+            if m.feature == "view" { "loaded first" } else { "loaded when a tool is first used" },
+            gz as f64 / 1024.0
+        );
+        if m.feature == "view" {
+            figs.insert("wasm_gz_kib".into(), gz as f64 / 1024.0);
+        }
+    }
     let bench = root.join("bench");
     install::ensure_npm(&bench)?;
     let programs = root.join("target").join("bench");

@@ -13,6 +13,7 @@ mod install;
 mod package;
 mod precompress;
 mod server;
+mod wasm;
 mod web;
 
 use std::process::ExitCode;

@@ -13,11 +13,12 @@ use crate::Result;
 use crate::install::{root, run};
 
 /// Files the packed tarball must hold (under `package/`).
-const PACKED: [&str; 8] = [
+const PACKED: [&str; 9] = [
     "package.json",
     "screwcut-preview.js",
     "screwcut-preview.d.ts",
     "screwcut_bg.wasm",
+    "screwcut_tools_bg.wasm",
     "README.md",
     "LICENSE-MIT",
     "LICENSE-APACHE",

@@ -6,7 +6,9 @@
 //! `screwcut-preview.js` (the embeddable
 //! `<screwcut-preview>` element, bundled the same way without the editor),
 //! `screwcut_bg.wasm` (the core, size-optimised by the binaryen pinned in
-//! `www/package.json`; shared by both bundles) and `examples/` (every file
+//! `www/package.json`; shared by both bundles), `screwcut_tools_bg.wasm`
+//! (the program-writing tools, which the app loads when first used; see
+//! `crate::wasm`) and `examples/` (every file
 //! listed in `examples/index.json`). `cargo xtask dist` adds `element/`, the element
 //! as a folder a documentation site can vendor: the element, and the app its
 //! "Open in editor" link opens by default.
@@ -16,6 +18,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use crate::install::{ensure_chromium, ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, output, root, run};
+use crate::wasm::WasmOpt;
 use crate::{Result, server};
 
 /// Default port of `cargo xtask serve`.
@@ -74,8 +77,9 @@ pub const ELEMENT_FILES: [&str; 4] = ["screwcut-preview.js", "screwcut_bg.wasm",
 /// The app, copied from the built site into the element's folder with its
 /// `examples/`: the "Open in editor" link opens the app next to the script
 /// by default, so the link works wherever the folder is copied (the app
-/// shares the element's wasm).
-pub const APP_FILES: [&str; 5] = ["index.html", "app.js", "worker.js", "style.css", "favicon.svg"];
+/// shares the element's wasm; its tools module is the app's alone).
+pub const APP_FILES: [&str; 6] =
+    ["index.html", "app.js", "worker.js", "style.css", "favicon.svg", "screwcut_tools_bg.wasm"];
 
 /// Writes `dir` (emptied first) as the vendorable element package, from the built site `site`.
 pub fn write_element_package(site: &Path, dir: &Path) -> Result {
@@ -137,7 +141,7 @@ fn element_package_json(version: &str) -> String {
     "./app": "./index.html",
     "./package.json": "./package.json"
   }},
-  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "examples/"],
+  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "screwcut_tools_bg.wasm", "examples/"],
   "sideEffects": true,
   "keywords": ["cnc", "lathe", "g-code", "thread", "web-component", "custom-element", "wasm"]
 }}
@@ -278,30 +282,14 @@ pub fn browser_tests() -> Result {
     rest.into_iter().fold(app, |all, r| all.and(r))
 }
 
-/// Builds the site into `out` (emptied first): wasm (release or debug),
-/// wasm-bindgen glue, wasm-opt for a release build, the esbuild bundle,
-/// static files and examples. Says, and returns, what wasm-opt did.
+/// Builds the site into `out` (emptied first): the two wasm modules
+/// (release or debug, with their wasm-bindgen glue and wasm-opt for a
+/// release build: `crate::wasm`), the esbuild bundles, static files and
+/// examples. Says, and returns, what wasm-opt did.
 pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
-    ensure_wasm_target()?;
-    ensure_wasm_bindgen()?;
-    let root = root();
-    let www = root.join("www");
-    let mut args = vec!["build", "--package", "screwcut", "--lib", "--target", "wasm32-unknown-unknown"];
-    if release {
-        args.push("--release");
-    }
-    run("cargo", &args, None)?;
-    let profile = if release { "release" } else { "debug" };
-    let wasm = target_dir()?.join("wasm32-unknown-unknown").join(profile).join("screwcut.wasm");
+    let www = root().join("www");
     let pkg = www.join("pkg");
-    run(
-        "wasm-bindgen",
-        &["--target", "web", "--no-typescript", "--out-dir", &path_str(&pkg)?, &path_str(&wasm)?],
-        None,
-    )?;
-    ensure_npm(&www)?;
-    let bg = pkg.join("screwcut_bg.wasm");
-    let opt = if release { optimise(&bg) } else { WasmOpt::Skipped("debug build".into()) };
+    let opt = crate::wasm::build_modules(release, &pkg)?;
     if out.exists() {
         std::fs::remove_dir_all(out).map_err(|e| format!("cannot empty {}: {e}", out.display()))?;
     }
@@ -322,7 +310,9 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
         }
         run(&esbuild, &args, Some(&www))?;
     }
-    copy(&bg, &out.join("screwcut_bg.wasm"))?;
+    for m in crate::wasm::MODULES {
+        copy(&pkg.join(m.wasm_file()), &out.join(m.wasm_file()))?;
+    }
     let statics = www.join("static");
     for entry in std::fs::read_dir(&statics).map_err(|e| format!("{}: {e}", statics.display()))? {
         let entry = entry.map_err(|e| e.to_string())?;
@@ -330,7 +320,7 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
             copy(&entry.path(), &out.join(entry.file_name()))?;
         }
     }
-    let examples = root.join("examples");
+    let examples = root().join("examples");
     let index = read(&examples.join("index.json"))?;
     for file in example_files(&index)? {
         copy(&examples.join(&file), &out.join("examples").join(&file))?;
@@ -341,11 +331,14 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     let gz = |f: &str| crate::precompress::gz_size(&out.join(f)).div_ceil(1024);
     let br = |f: &str| crate::precompress::br_size(&out.join(f)).div_ceil(1024);
     eprintln!(
-        "site: {} (KiB raw/gzip/brotli: wasm {}/{}/{}; app.js {}/{}/{}; screwcut-preview.js {}/{}/{})\nwasm: {opt}",
+        "site: {} (KiB raw/gzip/brotli: wasm {}/{}/{}, tools wasm {}/{}/{}; app.js {}/{}/{}; screwcut-preview.js {}/{}/{})\nwasm: {opt}",
         out.display(),
         size("screwcut_bg.wasm"),
         gz("screwcut_bg.wasm"),
         br("screwcut_bg.wasm"),
+        size("screwcut_tools_bg.wasm"),
+        gz("screwcut_tools_bg.wasm"),
+        br("screwcut_tools_bg.wasm"),
         size("app.js"),
         gz("app.js"),
         br("app.js"),
@@ -354,104 +347,6 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
         br("screwcut-preview.js")
     );
     Ok(opt)
-}
-
-/// What the size optimisation of a release build did to the wasm.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum WasmOpt {
-    /// `wasm-opt -Oz` ran and its output loads and plans: version and sizes in bytes.
-    Optimised { version: String, before: u64, after: u64 },
-    /// The wasm is as wasm-bindgen wrote it, for this reason.
-    Skipped(String),
-}
-
-impl std::fmt::Display for WasmOpt {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            WasmOpt::Optimised { version, before, after } => write!(
-                f,
-                "size-optimised by {version} -Oz: {} KiB -> {} KiB",
-                before.div_ceil(1024),
-                after.div_ceil(1024)
-            ),
-            WasmOpt::Skipped(why) => write!(f, "NOT size-optimised: {why}"),
-        }
-    }
-}
-
-/// Runs `wasm-opt -Oz` on `wasm` in place with the binaryen pinned in
-/// `www/package.json` (installed by `npm ci` there), and keeps the result
-/// only if the wasm-bindgen glue still loads it and plans with it.
-///
-/// The pinned npm build is used rather than a system binaryen so that every
-/// machine ships the wasm that was measured: Debian bookworm's binaryen 108
-/// writes this module's `__wbindgen_externrefs` export against the wrong
-/// table, and the glue then fails to load it.
-fn optimise(wasm: &Path) -> WasmOpt {
-    let tool = root().join("www").join("node_modules").join(".bin").join("wasm-opt");
-    let Some(tool) = tool.to_str().filter(|_| tool.exists()) else {
-        return WasmOpt::Skipped(format!("{} is missing (npm ci in www/)", tool.display()));
-    };
-    let version = output(tool, &["--version"]).map(|v| v.trim().to_string()).unwrap_or_default();
-    if version.is_empty() {
-        return WasmOpt::Skipped(format!("{tool} --version failed"));
-    }
-    let tmp = wasm.with_extension("opt.wasm");
-    let features = [
-        "--enable-bulk-memory",
-        "--enable-nontrapping-float-to-int",
-        "--enable-sign-ext",
-        "--enable-mutable-globals",
-        "--enable-reference-types",
-        "--enable-multivalue",
-    ];
-    let size = |p: &Path| std::fs::metadata(p).map(|m| m.len()).unwrap_or(0);
-    let before = size(wasm);
-    let outcome = (|| -> Result<u64> {
-        let (w, t) = (path_str(wasm)?, path_str(&tmp)?);
-        let mut args = vec!["-Oz"];
-        args.extend(features);
-        args.extend([w.as_str(), "-o", t.as_str()]);
-        run(tool, &args, None)?;
-        smoke_test(&tmp)?;
-        let after = size(&tmp);
-        std::fs::rename(&tmp, wasm).map_err(|e| format!("{}: {e}", wasm.display()))?;
-        Ok(after)
-    })();
-    match outcome {
-        Ok(after) => WasmOpt::Optimised { version, before, after },
-        Err(e) => {
-            let _ = std::fs::remove_file(&tmp);
-            WasmOpt::Skipped(format!("{version}: {e}"))
-        }
-    }
-}
-
-/// Loads `wasm` with the wasm-bindgen glue beside it in Node and plans a thread.
-fn smoke_test(wasm: &Path) -> Result {
-    let glue = wasm.with_file_name("screwcut.js");
-    let script = format!(
-        "import fs from 'node:fs';\
-         const m = await import({glue:?});\
-         m.initSync({{ module: fs.readFileSync({wasm:?}) }});\
-         const s = new m.Session();\
-         const r = s.update('G00 X58 Z70\\nX47.1\\nG32 Z13 F2\\nG00 X58\\nZ70\\n', 'gsk980tdc', '', 0, 1, -1, undefined, false, false);\
-         const d = s.draw('side', 640, 360, undefined, false, -1, -1, new Uint32Array(0), false);\
-         if (r.threads.length !== 1 || !r.shown[0] || d.ops.length === 0) throw new Error('the optimised wasm plans or draws wrongly');",
-        glue = format!("file://{}", path_str(&glue)?),
-        wasm = path_str(wasm)?,
-    );
-    let out = Command::new("node")
-        .args(["--input-type=module", "-e", &script])
-        .output()
-        .map_err(|e| format!("cannot run node: {e}"))?;
-    if out.status.success() {
-        Ok(())
-    } else {
-        let msg = String::from_utf8_lossy(&out.stderr);
-        let first = msg.lines().find(|l| l.contains("Error")).unwrap_or("failed").trim().to_string();
-        Err(format!("the wasm-opt output does not load ({first})"))
-    }
 }
 
 /// The `file` entries of `examples/index.json`, checked to be plain file names.

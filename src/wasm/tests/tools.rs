@@ -102,9 +102,7 @@ fn a_bad_wizard_request_is_named() {
 /// with the same five passes: X47.1 … X45.4, Z70 to Z13.
 #[wasm_bindgen_test]
 fn a_plan_expands_to_blocks_for_another_controller() {
-    let s = wasm::Session::new();
-    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
-    let e = s.expand("linuxcnc").unwrap();
+    let e = wasm::expand(O1006, "gsk980tdc", "", "linuxcnc", None).unwrap();
     let program = get(&e, "program").as_string().unwrap();
     assert!(program.contains("G33 X47.1 Z13 K2"), "{program}");
     let r = plan(&program, "linuxcnc");
@@ -114,15 +112,31 @@ fn a_plan_expands_to_blocks_for_another_controller() {
     assert_close(&x, &[47.1, 46.5, 45.9, 45.5, 45.4]);
     let z: Vec<f64> = js_sys::Float64Array::from(get(&passes, "zEnd")).to_vec();
     assert_close(&z, &[13.0; 5]);
-    assert!(message(s.expand("bogus").unwrap_err()).contains("unknown dialect"));
-    // Notes in the session's language: Renhe has no G96 and writes a G30 tail.
+    assert!(message(wasm::expand(O1006, "gsk980tdc", "", "bogus", None).unwrap_err()).contains("unknown dialect"));
+    assert!(message(wasm::expand(O1006, "bogus", "", "linuxcnc", None).unwrap_err()).contains("unknown dialect"));
+    // Notes in the language asked for: Renhe has no G96 and writes a G30 tail.
     let css = "G00 X58 Z70\nG96 S120 M03\nG00 X47.1\nG32 Z13 F2\nG00 X58\nZ70\nM30\n";
-    s.update(css, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
-    let notes =
-        |e: JsValue| -> Vec<String> { array(&get(&e, "notes")).iter().map(|n| n.as_string().unwrap()).collect() };
-    let en = notes(s.expand("gsk980tdc").unwrap());
+    let notes = |lang: Option<&str>| -> Vec<String> {
+        let e = wasm::expand(css, "gsk980tdc", "", "gsk980tdc", lang.map(String::from)).unwrap();
+        array(&get(&e, "notes")).iter().map(|n| n.as_string().unwrap()).collect()
+    };
+    let en = notes(None);
     assert!(en.iter().any(|n| n.starts_with("constant surface speed (G96) is not written")), "{en:?}");
-    s.set_lang("zh");
-    let zh = notes(s.expand("gsk980tdc").unwrap());
+    let zh = notes(Some("zh"));
     assert!(zh.iter().any(|n| n.starts_with("恒线速（G96）没有写出")), "{zh:?}");
+}
+
+/// The settings given are the plan's: O1006 read with X as a radius
+/// (`x_mode=radius`, the controllers' DIA parameter) cuts twice the
+/// diameter, X94.2 for X47.1 (what `screwcut expand --set x_mode=radius`
+/// writes).
+#[wasm_bindgen_test]
+fn an_expansion_plans_with_the_settings_given() {
+    let program = |settings: &str| -> String {
+        let e = wasm::expand(O1006, "gsk980tdc", settings, "linuxcnc", None).unwrap();
+        get(&e, "program").as_string().unwrap()
+    };
+    assert!(program("").contains("G33 X47.1 Z13 K2"));
+    let radius = program("x_mode=radius");
+    assert!(radius.contains("G33 X94.2 Z13 K2") && !radius.contains("X47.1"), "{radius}");
 }

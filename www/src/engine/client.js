@@ -93,13 +93,14 @@ export async function startEngine({ wasmUrl, workerUrl, mode, onMessage }) {
       onMessage({ type: 'note', message: `drawing on the page: ${e.message}` });
     }
   }
-  const [glue, { Engine }] = await Promise.all([import('../../pkg/screwcut.js'), import('./engine.js')]);
+  const [glue, { Engine, toolsLoader }] = await Promise.all([import('../../pkg/screwcut.js'), import('./engine.js')]);
   await glue.default({ module_or_path: wasmUrl });
   let client = null;
   const engine = new Engine(
     glue,
     (m) => client.receive(m),
     (f) => requestAnimationFrame(() => afterTask(f)),
+    { loadTools: toolsLoader(wasmUrl) },
   );
   client = new Client('page', (m) => queueMicrotask(() => engine.handle(m)), onMessage);
   return { client, dialects: glue.dialects() };

@@ -20,12 +20,16 @@ export class Engine {
    * @param core the initialised wasm module (`Session`, `dialects`, …)
    * @param post `post(message, transfer)` to the page
    * @param afterCommit runs a function once the current frame is on screen
-   * @param opts `{immediate}`: draw a plan's views at once rather than at the
-   *   next animation frame (in a worker, whose canvases show what was drawn
-   *   when its task ends; pan and zoom still draw at animation frames)
+   * @param opts `{immediate, loadTools}`: `immediate` draws a plan's views
+   *   at once rather than at the next animation frame (in a worker, whose
+   *   canvases show what was drawn when its task ends; pan and zoom still
+   *   draw at animation frames); `loadTools` resolves to the initialised
+   *   tools module (`toolsLoader`), called the first time a tool is used
    */
   constructor(core, post, afterCommit, opts = {}) {
     this.immediate = !!opts.immediate;
+    this.loadTools = opts.loadTools || (() => Promise.reject(new Error('no tools module')));
+    this.toolsLoading = null; // the tools module, once asked for
     this.core = core;
     this.post = post;
     this.afterCommit = afterCommit;
@@ -47,6 +51,7 @@ export class Engine {
     this.sentPasses = null;
     this.roughing = false; // the roughing cuts of G71/G72 are drawn on demand
     this.text = null; // the text last planned (a plan may come as changes to it)
+    this.planned = null; // {text, dialect, settings} of the last plan: what the tools write
     this.sentAs = null; // how it came: 'text' or 'edits'
     this.tidying = false; // a tidy of the session is queued
   }
@@ -132,6 +137,7 @@ export class Engine {
       }
     }
     this.text = text;
+    this.planned = { text, dialect, settings };
     this.sentAs = edits ? 'edits' : 'text';
     if (thread !== undefined) this.thread = thread;
     if (start !== undefined) this.start = start;
@@ -316,24 +322,41 @@ export class Engine {
     this.post({ type: 'reply', id, data });
   }
 
+  /** The tools module, loaded the first time a tool is used (a failed load is tried again next time). */
+  tools() {
+    this.toolsLoading ||= this.loadTools().catch((e) => {
+      this.toolsLoading = null;
+      throw new Error(`the tools did not load: ${e && e.message ? e.message : e}`);
+    });
+    return this.toolsLoading;
+  }
+
   /**
-   * The program-writing tools: `what: 'forms'` (the wizard's controllers and
-   * forms), `'generate'` (the wizard's program for `request`), `'expand'`
-   * (the last plan block by block for dialect `to`), their notes and
-   * refusals in the page's language. A wrong request is answered with an
-   * error naming it.
+   * The program-writing tools, from the tools module: `what: 'forms'` (the
+   * wizard's controllers and forms), `'generate'` (the wizard's program for
+   * `request`), `'expand'` (the last plan block by block for dialect `to`),
+   * their notes and refusals in the page's language. A wrong request is
+   * answered with an error naming it.
    */
-  on_tool({ id, what, request, to }) {
+  async on_tool({ id, what, request, to }) {
+    if (!['forms', 'generate', 'expand'].includes(what)) throw new Error(`unknown tool '${what}'`);
+    // What is asked for is fixed now: a plan arriving while the tools load is not the one expanded.
+    const { planned, lang } = this;
+    if (what === 'expand' && !planned) throw new Error('nothing planned yet');
+    const tools = await this.tools();
     let data;
-    if (what === 'forms') data = this.core.wizard_forms(this.lang);
-    else if (what === 'generate') data = this.core.wizard_generate({ ...request, lang: this.lang });
-    else if (what === 'expand') data = this.session.expand(to);
-    else throw new Error(`unknown tool '${what}'`);
+    if (what === 'forms') data = tools.wizard_forms(lang);
+    else if (what === 'generate') data = tools.wizard_generate({ ...request, lang });
+    else data = tools.expand(planned.text, planned.dialect, planned.settings || '', to, lang);
     this.post({ type: 'reply', id, data });
   }
 
-  on_json({ id }) {
-    this.post({ type: 'reply', id, data: JSON.stringify(this.session.plan_value()) });
+  /** The last plan as the CLI's JSON (`--json`), from the tools module. */
+  async on_json({ id }) {
+    const { planned } = this;
+    if (!planned) throw new Error('nothing planned yet');
+    const tools = await this.tools();
+    this.post({ type: 'reply', id, data: JSON.stringify(tools.plan_value(planned.text, planned.dialect, planned.settings || '')) });
   }
 
   /**
@@ -415,4 +438,18 @@ export function applyEdits(text, edits) {
     at = to;
   }
   return out + text.slice(at);
+}
+
+/**
+ * Loads the tools module (`screwcut_tools_bg.wasm`, beside the wasm at
+ * `wasmUrl`) and resolves to its initialised glue: the thread wizard, a plan
+ * written block by block, the plan as JSON. A page loads it only when one
+ * of them is first used.
+ */
+export function toolsLoader(wasmUrl) {
+  return async () => {
+    const tools = await import('../../pkg/screwcut_tools.js');
+    await tools.default({ module_or_path: new URL('screwcut_tools_bg.wasm', wasmUrl) });
+    return tools;
+  };
 }

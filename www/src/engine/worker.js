@@ -1,10 +1,11 @@
 // The drawing worker: the wasm planner and the app's three views on
 // OffscreenCanvases, so that planning and drawing never hold up typing.
-// The first message is `{type: 'init', wasm}` (the wasm file's URL); the
-// engine (engine.js) answers every other.
+// The first message is `{type: 'init', wasm}` (the wasm file's URL; the
+// tools module is loaded from beside it when first used); the engine
+// (engine.js) answers every other.
 
 import init, * as core from '../../pkg/screwcut.js';
-import { Engine } from './engine.js';
+import { Engine, toolsLoader } from './engine.js';
 
 let engine = null;
 const queue = [];
@@ -16,7 +17,7 @@ self.onmessage = async (e) => {
     try {
       await init({ module_or_path: m.wasm });
       // In a worker a drawing is on screen once the animation frame that drew it returns.
-      engine = new Engine(core, post, (f) => f(), { immediate: true });
+      engine = new Engine(core, post, (f) => f(), { immediate: true, loadTools: toolsLoader(m.wasm) });
       post({ type: 'ready', dialects: core.dialects() });
       for (const q of queue.splice(0)) engine.handle(q);
     } catch (err) {
