@@ -102,8 +102,9 @@ pub fn work_extent(t: &Thread, band: &Band, moves: &[Move]) -> Option<(f64, f64)
 /// work found so far, by crest and extent (threads cut again on one diameter
 /// over one length, as a program often has, look once).
 pub struct FeedIndex {
-    /// `(start radius, motion index)` of the feed motions with a finite start radius, by radius.
-    by_radius: Vec<(f64, usize)>,
+    /// The feed motions with a finite start radius, ordered by that radius
+    /// rounded to `f32` ([`radius_key`]) and then by motion: `key << 32 | motion index`.
+    by_radius: Vec<u64>,
     /// Work of straight threads by the bits of `(crest0, lo, hi)`.
     found: RefCell<WorkByBand>,
 }
@@ -111,17 +112,38 @@ pub struct FeedIndex {
 /// Work extents by the bits of `(crest0, lo, hi)`.
 type WorkByBand = HashMap<[u64; 3], Option<(f64, f64)>, BuildKeyHasher>;
 
+/// A radius's place in the index: `r` rounded to `f32` (which never
+/// reorders two radii), its bits turned so that integers order as the
+/// numbers do. Sorting these integers is several times faster than sorting
+/// by comparing radii, and a range of radii is the range of their keys.
+fn radius_key(r: f64) -> u32 {
+    // +0.0 for -0.0: the two are one radius.
+    let b = ((r + 0.0) as f32).to_bits();
+    if b >> 31 == 1 { !b } else { b | 1 << 31 }
+}
+
 impl FeedIndex {
     /// Indexes the feed motions of `moves`.
     pub fn new(moves: &[Move]) -> FeedIndex {
-        let mut by_radius: Vec<(f64, usize)> = moves
+        let mut by_radius: Vec<u64> = moves
             .iter()
             .enumerate()
             .filter(|(_, m)| m.kind == MoveKind::Feed && m.from.r().is_finite())
-            .map(|(k, m)| (m.from.r(), k))
+            .map(|(k, m)| (u64::from(radius_key(m.from.r())) << 32) | k as u64)
             .collect();
-        crate::order::sort_by(&mut by_radius, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        by_radius.sort_unstable();
         FeedIndex { by_radius, found: RefCell::default() }
+    }
+
+    /// The indices of the feed motions whose start radius may be within
+    /// `lo..=hi`: all of those, and some just outside (one `f32` step).
+    fn near(&self, lo: f64, hi: f64) -> impl Iterator<Item = usize> + '_ {
+        let (lo, hi) = (radius_key(lo), radius_key(hi));
+        let first = self.by_radius.partition_point(|e| ((e >> 32) as u32) < lo);
+        self.by_radius[first..]
+            .iter()
+            .take_while(move |e| ((*e >> 32) as u32) <= hi)
+            .map(|e| (e & 0xffff_ffff) as usize)
     }
 }
 
@@ -150,15 +172,9 @@ pub fn work_extent_in(t: &Thread, band: &Band, moves: &[Move], index: &FeedIndex
         if let Some(found) = index.found.borrow().get(&key) {
             return *found;
         }
+        // The motions starting within tol of crest0, and a few more, which `take` leaves out.
         let tol = 1e-4 + 1e-6 * band.crest0.abs();
-        let list = &index.by_radius;
-        let first = list.partition_point(|(r, _)| *r < band.crest0 - tol);
-        for &(r, k) in &list[first..] {
-            if r > band.crest0 + tol {
-                break;
-            }
-            take(&moves[k]);
-        }
+        index.near(band.crest0 - tol, band.crest0 + tol).for_each(|k| take(&moves[k]));
         let found = (lo <= hi).then_some((lo, hi));
         index.found.borrow_mut().insert(key, found);
         return found;
@@ -172,4 +188,23 @@ pub fn work_extent_in(t: &Thread, band: &Band, moves: &[Move], index: &FeedIndex
 pub fn deltas(band: &Band, work: (f64, f64)) -> (f64, f64) {
     let (lo, hi) = work;
     if band.sense() < 0.0 { (band.l0 - hi, lo - band.l1) } else { (lo - band.l0, band.l1 - hi) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::radius_key;
+
+    /// The index's keys order radii as the numbers do (a range of radii is
+    /// a range of keys): negative and positive, zero of either sign as one,
+    /// radii closer than an `f32` step as one.
+    #[test]
+    fn radius_keys_order_as_the_radii() {
+        let radii = [-1e300, -25.0, -1e-4, -1e-40, -0.0, 0.0, 1e-40, 1e-4, 19.99988, 20.0, 20.00012, 25.0, 1e300];
+        for w in radii.windows(2) {
+            assert!(radius_key(w[0]) <= radius_key(w[1]), "{} before {}", w[0], w[1]);
+        }
+        assert_eq!(radius_key(-0.0), radius_key(0.0));
+        assert!(radius_key(-25.0) < radius_key(-1e-4) && radius_key(1e-4) < radius_key(25.0));
+        assert!(radius_key(19.99988) < radius_key(20.0) && radius_key(20.0) < radius_key(20.00012));
+    }
 }
