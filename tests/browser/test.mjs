@@ -262,6 +262,30 @@ try {
   await measure('typing digits into the first pass X', 'X47.1', '2345', true);
   await page.screenshot({ path: path.join(shots, '4-5000-lines.png') });
 
+  // ---- the diagnostics list is written as it is read ----
+  // The 5,000-line program has 476 notes (`screwcut plan` lists them), one more after the digits typed above: the page holds 100 rows at first.
+  const listState = () =>
+    page.evaluate(() => ({
+      rows: document.querySelectorAll('#diagnostics li[data-i]').length,
+      more: document.querySelector('#diagnostics li.more')?.textContent || '',
+      total: window.__screwcut.result.diagnostics.length,
+      hot: document.querySelector('#diagnostics li.hot')?.dataset.i ?? null,
+    }));
+  const firstRows = await listState();
+  check('a long diagnostics list writes its first 100 rows and says how many more', firstRows.total === 477 && firstRows.rows === 100 && firstRows.more.includes('377'), JSON.stringify(firstRows));
+  await page.evaluate(() => {
+    const s = document.querySelector('#diagnostics').closest('.scroll');
+    s.scrollTop = s.scrollHeight;
+  });
+  await page.waitForFunction(() => document.querySelectorAll('#diagnostics li[data-i]').length > 100, null, { timeout: 5_000 }).catch(() => {});
+  const scrolledRows = await listState();
+  check('… scrolled to its end, it writes 100 more', scrolledRows.rows === 200 && scrolledRows.more.includes('277'), JSON.stringify(scrolledRows));
+  await page.locator('#diagnostics').locator('xpath=..').focus();
+  await page.keyboard.press('End');
+  const endRows = await listState();
+  check('… End on the keyboard goes to the last note, written for it', endRows.rows === 477 && endRows.more === '' && endRows.hot === '476', JSON.stringify(endRows));
+  await page.keyboard.press('Escape');
+
   // ---- a late edit updates every view ----
   // The last thread's finishing pass (X45.4), chosen by putting the cursor on it.
   await page.locator('.cm-line').first().click();

@@ -98,6 +98,7 @@ export function labelViews(r, ti, st, t) {
  * `passes` (the table's scroller), `diagnostics` (the list), `rows` (the
  * table's VirtualRows, its `order` the shown passes), `result()`,
  * `thread()`, `shown()` (the diagnostics shown: [diagnostic, index]),
+ * `diagnosticRow(k)` (row k's element, written if it is not yet),
  * `setHover(h)`, `goto(line, column)`, `t`. Returns the two lists.
  */
 export function bindListKeys(ctx) {
@@ -114,11 +115,11 @@ export function bindListKeys(ctx) {
   const list = ctx.diagnostics;
   const diagnostics = listKeys(list.closest('.scroll'), {
     label: () => t('list_diagnostics'),
-    count: () => (ctx.result() ? Math.min(ctx.shown().length, list.querySelectorAll('li[data-i]').length) : 0),
+    count: () => (ctx.result() ? ctx.shown().length : 0),
     text: (k) => `${diag(k).line}:${diag(k).column} ${t(diag(k).severity)} [${diag(k).code}] ${diag(k).message}`,
     move: (k) => {
       for (const li of list.querySelectorAll('li.hot')) li.classList.remove('hot');
-      const li = k >= 0 ? list.children[k] : null;
+      const li = k >= 0 ? ctx.diagnosticRow(k) : null;
       li?.classList.add('hot');
       li?.scrollIntoView({ block: 'nearest' });
       ctx.setHover(k >= 0 ? { thread: -1, pass: -1, lines: [diag(k).line] } : null);

@@ -8,12 +8,13 @@ import { createEditor } from '../editor/editor.js';
 import { afterTask, startEngine } from '../engine/client.js';
 import { patchList, spliceList } from '../engine/parts.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
-import { diagnosticRows, passHead, passLines, passRow, passVia, patchRows, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
+import { passHead, passLines, passRow, passVia, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
 import { esc } from '../shared/table.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { showBehind } from './behind.js';
 import { bindDesignation, DESIGNATION, renderCheck } from './check.js';
 import { Compare } from './compare.js';
+import { DiagnosticsList } from './diaglist.js';
 import { fileName, fillPrintSheet, openFile } from './files.js';
 import { download, shareLink, toast } from './pageutil.js';
 import { Planning } from './planning.js';
@@ -69,6 +70,7 @@ function update(patch) {
 let planning; // plans in flight, keystrokes, the good plan's lists (planning.js)
 let compareUi = null; // Compare with… (compare.js)
 let passRows;
+const diagList = new DiagnosticsList($('diagnostics'), { t: (k, a) => t(k, a), lang: () => getLang() });
 const lists = []; // the keyboard-operated lists (a11y.js)
 
 function settingsText() {
@@ -102,6 +104,7 @@ async function showProgram(s) {
   state.program = s.program;
   $('dialect').value = state.dialect;
   planning.another();
+  diagList.reset();
   // What was chosen in the last program (a thread, a start, a hovered pass) is not this one's.
   update({ thread: 0, start: 1, hover: null });
   makeEditor(state.program);
@@ -308,10 +311,7 @@ function renderDiagnostics(list) {
   rendered = { list, severities: ui.severities, lang: getLang() };
   const shown = list.map((d, i) => [d, i]).filter(([d]) => ui.severities.has(d.severity));
   update({ diagnosticsShown: shown });
-  const MAX = 2000;
-  const rows = diagnosticRows(shown.slice(0, MAX), t, getLang());
-  const more = shown.length > MAX ? `<li class="more">${esc(t('more', { n: shown.length - MAX }))}</li>` : '';
-  patchRows($('diagnostics'), rows, more);
+  diagList.show(shown);
   const counts = { error: 0, warning: 0, info: 0 };
   for (const d of list) counts[d.severity]++;
   for (const sev of Object.keys(counts)) setText(document.querySelector(`#sev-filter [data-sev="${sev}"] .n`), String(counts[sev]));
@@ -505,6 +505,7 @@ async function main() {
       result: () => ui.result,
       thread: () => ui.thread,
       shown: () => ui.diagnosticsShown,
+      diagnosticRow: (k) => diagList.row(k),
       setHover: (h) => {
         update({ hover: h });
         refreshHighlight();

@@ -178,6 +178,7 @@ const EN = {
   open_in_editor: 'Open in editor',
   loading: 'Loading…',
   more: '… {n} more',
+  more_rows: '… {n} more: scroll or click to show them',
 };
 
 const ZH = {
@@ -354,6 +355,7 @@ const ZH = {
   open_in_editor: '在编辑器中打开',
   loading: '加载中…',
   more: '… 另有 {n} 条',
+  more_rows: '… 另有 {n} 条：滚动或点击显示',
 };
 
 const TABLES = { en: EN, zh: ZH };
