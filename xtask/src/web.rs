@@ -290,6 +290,7 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     let www = root().join("www");
     let pkg = www.join("pkg");
     let opt = crate::wasm::build_modules(release, &pkg)?;
+    ensure_npm(&www)?;
     if out.exists() {
         std::fs::remove_dir_all(out).map_err(|e| format!("cannot empty {}: {e}", out.display()))?;
     }
