@@ -165,10 +165,13 @@ pub fn expand(
 }
 
 /// The whole plan of `text` as a JSON-compatible value (what the CLI's
-/// `--json` writes, once `JSON.stringify`-ed), for download. The wasm
+/// `--json` writes, once `JSON.stringify`-ed, with its `dialect-hint` note
+/// when another dialect reads the text better), for download. The wasm
 /// carries no JSON writer of its own.
 #[wasm_bindgen]
 pub fn plan_value(text: &str, dialect_name: &str, settings: &str) -> Result<JsValue, JsValue> {
     let (s, _) = settings_from(dialect(dialect_name)?, settings);
-    crate::plan(text, &s).serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(err)
+    let mut plan = crate::plan(text, &s);
+    crate::hint::add(text, &s, &mut plan, crate::hint::MAX_BYTES);
+    plan.serialize(&serde_wasm_bindgen::Serializer::json_compatible()).map_err(err)
 }

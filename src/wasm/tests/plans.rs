@@ -272,6 +272,13 @@ fn plan_json_is_the_cli_schema() {
     assert_close(&to, &[48.8571, -72.0]);
     assert!(!array(&get(&v, "moves")).is_empty());
     assert!(message(wasm::plan_value("G32", "nope", "").unwrap_err()).contains("unknown dialect"));
+    // Pasted LinuxCNC code under Fanuc (tests/diagnostics.rs): the plan names the dialect that
+    // reads it, as `screwcut plan --json` does (src/hint.rs).
+    let pasted = "G18 G21 G90\nM3 S500\nG0 X30 Z5\nG76 P2 Z-30 I-1 J0.3 K1.23\nM2\n";
+    let v = wasm::plan_value(pasted, "fanuc0i", "").unwrap();
+    let codes: Vec<String> =
+        array(&get(&v, "diagnostics")).iter().map(|d| get(d, "code").as_string().unwrap_or_default()).collect();
+    assert!(codes.iter().any(|c| c == "dialect-hint"), "{codes:?}");
 }
 
 #[wasm_bindgen_test]
