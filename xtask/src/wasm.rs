@@ -12,7 +12,7 @@ use std::path::Path;
 use std::process::Command;
 
 use crate::Result;
-use crate::install::{ensure_npm, ensure_wasm_bindgen, ensure_wasm_target, output, root, run};
+use crate::install::{ensure_wasm_bindgen, ensure_wasm_target, output, root, run};
 use crate::web::{path_str, target_dir};
 
 /// One wasm module of the site.
@@ -55,8 +55,9 @@ pub const MODULES: [Module; 2] = [
 ];
 
 /// Builds every module (release or debug) into `pkg`: the wasm and its
-/// glue, size-optimised in a release build. Returns what wasm-opt did to
-/// each, as one outcome: optimised when all were.
+/// glue, size-optimised in a release build (by the wasm-opt of `www/`'s npm
+/// packages, installed by the caller). Returns what wasm-opt did to each, as
+/// one outcome: optimised when all were.
 pub fn build_modules(release: bool, pkg: &Path) -> Result<WasmOpt> {
     ensure_wasm_target()?;
     ensure_wasm_bindgen()?;
@@ -88,12 +89,7 @@ pub fn build_modules(release: bool, pkg: &Path) -> Result<WasmOpt> {
             &["--target", "web", "--no-typescript", "--out-dir", &path_str(pkg)?, &path_str(&input)?],
             None,
         )?;
-        let opt = if release {
-            ensure_npm(&root().join("www"))?;
-            optimise(&pkg.join(m.wasm_file()), &m)
-        } else {
-            WasmOpt::Skipped("debug build".into())
-        };
+        let opt = if release { optimise(&pkg.join(m.wasm_file()), &m) } else { WasmOpt::Skipped("debug build".into()) };
         eprintln!("{}: {opt}", m.wasm_file());
         outcome = Some(match (outcome, opt) {
             (Some(WasmOpt::Skipped(why)), _) => WasmOpt::Skipped(why),

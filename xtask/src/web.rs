@@ -289,8 +289,9 @@ pub fn browser_tests() -> Result {
 pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     let www = root().join("www");
     let pkg = www.join("pkg");
-    let opt = crate::wasm::build_modules(release, &pkg)?;
+    // The bundler, and wasm-opt for the modules, are the front end's npm packages.
     ensure_npm(&www)?;
+    let opt = crate::wasm::build_modules(release, &pkg)?;
     if out.exists() {
         std::fs::remove_dir_all(out).map_err(|e| format!("cannot empty {}: {e}", out.display()))?;
     }
