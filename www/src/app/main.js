@@ -70,7 +70,7 @@ function update(patch) {
 let planning; // plans in flight, keystrokes, the good plan's lists (planning.js)
 let compareUi = null; // Compare with… (compare.js)
 let passRows;
-const diagList = new DiagnosticsList($('diagnostics'), { t: (k, a) => t(k, a), lang: () => getLang() });
+const diagList = new DiagnosticsList($('diagnostics'), { t, lang: getLang });
 const lists = []; // the keyboard-operated lists (a11y.js)
 
 function settingsText() {
