@@ -127,7 +127,7 @@ function makeEditor(doc) {
     // The program is the editor's from now on.
     programSet = null;
     sync.changed(changes, before, after);
-    replan();
+    replan(after);
   };
   editor = createEditor($('editor'), { doc, onChange, onCursor, words: editorWords() });
   editor.view.dom.addEventListener('keydown', (e) => planning.input(e.timeStamp), true);
@@ -136,9 +136,11 @@ function makeEditor(doc) {
 
 // ---- planning ----
 
-/** Sends the text to the engine; while a plan is in flight, only the latest text follows it. */
-function replan() {
-  const doc = editor.view.state.doc;
+/**
+ * Sends the text (`doc`, the editor's document unless given) to the engine;
+ * while a plan is in flight, only the latest text follows it.
+ */
+function replan(doc = editor.view.state.doc) {
   const request = () => ({ ...sync.take(doc), dialect: state.dialect, settings: settingsText(), thread: ui.thread, start: ui.start });
   if (!planning.plan(request, doc)) return;
   persist();

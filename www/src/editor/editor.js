@@ -33,9 +33,9 @@ function whenIdle(f) {
 
 /**
  * Creates the editor in `parent`.
- * onChange(changes, before, after) runs on every document change (a
- * CodeMirror ChangeSet and the documents before and after it; read the
- * text with `text()`: building it costs a walk of the whole document); onCursor(line) when the
+ * onChange(changes, before, after) runs on every document change, before
+ * the editor shows it (a CodeMirror ChangeSet and the documents before and
+ * after it; the editor's state is still `before`); onCursor(line) when the
  * cursor moves to another line.
  */
 export function createEditor(parent, { doc, onChange, onCursor, words }) {
@@ -48,6 +48,15 @@ export function createEditor(parent, { doc, onChange, onCursor, words }) {
   let pending = null; // diagnostics to show after the frame: {list, changes made since}
   const view = new EditorView({
     parent,
+    // The change goes to onChange before the editor updates its own view
+    // (its document's lines, decorations, gutters): the engine plans while
+    // the editor draws the typed character.
+    dispatchTransactions(trs, v) {
+      let changes = null;
+      for (const tr of trs) if (tr.docChanged) changes = changes ? changes.compose(tr.changes) : tr.changes;
+      if (changes) onChange(changes, v.state.doc, trs[trs.length - 1].state.doc);
+      v.update(trs);
+    },
     state: EditorState.create({
       doc,
       extensions: [
@@ -66,7 +75,6 @@ export function createEditor(parent, { doc, onChange, onCursor, words }) {
         EditorView.updateListener.of((u) => {
           if (u.docChanged) {
             if (pending) pending.changes = pending.changes ? pending.changes.compose(u.changes) : u.changes;
-            onChange(u.changes, u.startState.doc, u.state.doc);
           }
           if (u.selectionSet || u.docChanged) {
             const line = u.state.doc.lineAt(u.state.selection.main.head).number;
