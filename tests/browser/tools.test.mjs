@@ -10,6 +10,8 @@
 // - The tools are a wasm module of their own: the app's first diagram does
 //   not fetch it; the first tool used fetches it once, in a worker as on the
 //   page (`?engine=page`), where "Plan JSON" downloads O1006's five passes.
+//   Nor does it fetch the bundles of the tools' glue, the dialogs and the
+//   page's own planner: each is fetched when first needed, once.
 // Screenshots of both dialogs in both languages go to tests/browser/screenshots/.
 
 import { siteUrl, checker, guard, openApp, finish, shots } from './harness.mjs';
@@ -21,9 +23,17 @@ const { check, counts } = checker();
 const timer = guard(120, 'the tools test');
 const problems = [];
 const toolsWasm = [];
+// The bundles fetched on first use (file name → requests).
+const LAZY = ['screwcut_tools.js', 'wizard.js', 'page-engine.js'];
+const lazy = new Map(LAZY.map((f) => [f, 0]));
 const { page, close } = await openApp('screwcut-tools-', url, { width: 1440, height: 900 }, problems, (context) =>
-  context.on('request', (r) => r.url().endsWith('/screwcut_tools_bg.wasm') && toolsWasm.push(r.url())),
+  context.on('request', (r) => {
+    const file = new URL(r.url()).pathname.split('/').pop();
+    if (file === 'screwcut_tools_bg.wasm') toolsWasm.push(r.url());
+    if (lazy.has(file)) lazy.set(file, lazy.get(file) + 1);
+  }),
 );
+const fetched = () => JSON.stringify(Object.fromEntries(lazy));
 
 try {
   const programs = () => page.evaluate(() => window.__screwcut.library.programs.list().map((i) => i.name));
@@ -31,6 +41,7 @@ try {
   const before = await programs();
 
   check('the first diagram loads no tools module', toolsWasm.length === 0, JSON.stringify(toolsWasm));
+  check('… nor the tools\' glue, the dialogs or the page\'s own planner', LAZY.every((f) => lazy.get(f) === 0), fetched());
 
   // ---- the wizard ----
   await page.click('#wizard');
@@ -96,6 +107,7 @@ try {
   await dlg.screenshot({ path: path.join(shots, 'tools-expand-zh.png') });
   await dlg.locator('button[value="cancel"]').click();
   check('the tools module was fetched once for every tool used', toolsWasm.length === 1, JSON.stringify(toolsWasm));
+  check('… its glue and the dialogs once each; the page\'s own planner not at all', lazy.get('screwcut_tools.js') === 1 && lazy.get('wizard.js') === 1 && lazy.get('page-engine.js') === 0, fetched());
 
   // ---- the engine on the page: the same tools module ----
   const onPage = await page.context().newPage();
@@ -113,6 +125,7 @@ try {
   const onPageExpanded = await pageDlg.locator('.wz-program').textContent();
   await pageDlg.screenshot({ path: path.join(shots, 'tools-expand-page-engine.png') });
   check('?engine=page: O1006 expands to the same G33 blocks, the tools module fetched by the page', mode === 'page' && onPageExpanded === expanded && toolsWasm.length === 2, `${mode} ${toolsWasm.length} ${onPageExpanded.slice(0, 200)}`);
+  check('… with the page\'s own planner fetched for it', lazy.get('page-engine.js') === 1, fetched());
   await pageDlg.locator('button[value="cancel"]').click();
   // The plan as JSON (the CLI's --json) from the same module: O1006's five passes.
   await onPage.click('#file-menu summary');

@@ -78,8 +78,17 @@ pub const ELEMENT_FILES: [&str; 4] = ["screwcut-preview.js", "screwcut_bg.wasm",
 /// `examples/`: the "Open in editor" link opens the app next to the script
 /// by default, so the link works wherever the folder is copied (the app
 /// shares the element's wasm; its tools module is the app's alone).
-pub const APP_FILES: [&str; 6] =
-    ["index.html", "app.js", "worker.js", "style.css", "favicon.svg", "screwcut_tools_bg.wasm"];
+pub const APP_FILES: [&str; 9] = [
+    "index.html",
+    "app.js",
+    "worker.js",
+    "style.css",
+    "favicon.svg",
+    "screwcut_tools_bg.wasm",
+    "screwcut_tools.js",
+    "wizard.js",
+    "page-engine.js",
+];
 
 /// Writes `dir` (emptied first) as the vendorable element package, from the built site `site`.
 pub fn write_element_package(site: &Path, dir: &Path) -> Result {
@@ -141,7 +150,7 @@ fn element_package_json(version: &str) -> String {
     "./app": "./index.html",
     "./package.json": "./package.json"
   }},
-  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "screwcut_tools_bg.wasm", "examples/"],
+  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "screwcut_tools_bg.wasm", "screwcut_tools.js", "wizard.js", "page-engine.js", "examples/"],
   "sideEffects": true,
   "keywords": ["cnc", "lathe", "g-code", "thread", "web-component", "custom-element", "wasm"]
 }}
@@ -297,10 +306,17 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
     }
     std::fs::create_dir_all(out.join("examples")).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let esbuild = path_str(&www.join("node_modules").join(".bin").join("esbuild"))?;
+    // The bundles: the app, its worker, the element; and what the app and
+    // its worker fetch on first use (each bundled whole, so that a first
+    // diagram waits for no shared chunk): the tools' glue, the dialogs, the
+    // page's own planner (`?engine=page`, or no worker).
     let entries = [
         ("src/app/main.js", "app.js"),
         ("src/engine/worker.js", "worker.js"),
         ("src/embed/element.js", "screwcut-preview.js"),
+        ("pkg/screwcut_tools.js", "screwcut_tools.js"),
+        ("src/app/wizard.js", "wizard.js"),
+        ("src/engine/page.js", "page-engine.js"),
     ];
     for (entry, file) in entries {
         let outfile = format!("--outfile={}", path_str(&out.join(file))?);

@@ -23,7 +23,6 @@ import { SettingsPanel } from './settingspanel.js';
 import { DEFAULT_DIALECT, encodeFragment, knownDialect } from './share.js';
 import { TextSync } from './textsync.js';
 import { bindViewBar } from './viewbar.js';
-import { openExpand, openWizard } from './wizard.js';
 
 const $ = (id) => document.getElementById(id);
 /** Sets an element's text unless it already reads so (a new text node means a new layout). */
@@ -542,8 +541,11 @@ function finishSetup() {
   $('settings-form').addEventListener('change', onSettingInput);
   const tool = (m) => client.request('tool', m);
   const open = ({ text, dialect }) => library.openNew({ dialect, settings: inherited(state.settings), program: text });
-  $('wizard').addEventListener('click', () => openWizard({ request: tool, t, dialect: state.dialect, onOpen: open }).catch((e) => toast(e.message)));
-  $('expand').addEventListener('click', () => openExpand({ request: tool, t, dialects, dialect: state.dialect, alarms: ui.result ? ui.result.alarms : 0, onOpen: open }).catch((e) => toast(e.message)));
+  // The dialogs are a bundle of their own (`wizard.js` beside `app.js`),
+  // fetched when one first opens, with what the page shows at the click.
+  const dialog = (name, args) => import(new URL('wizard.js', import.meta.url).href).then((w) => w[name](args)).catch((e) => toast(e.message));
+  $('wizard').addEventListener('click', () => dialog('openWizard', { request: tool, t, dialect: state.dialect, onOpen: open }));
+  $('expand').addEventListener('click', () => dialog('openExpand', { request: tool, t, dialects, dialect: state.dialect, alarms: ui.result ? ui.result.alarms : 0, onOpen: open }));
   bindDesignation($('designation'), (v) => {
     state.settings[state.dialect] ||= {};
     const mine = state.settings[state.dialect];

@@ -93,7 +93,7 @@ export async function startEngine({ wasmUrl, workerUrl, mode, onMessage }) {
       onMessage({ type: 'note', message: `drawing on the page: ${e.message}` });
     }
   }
-  const [glue, { Engine, toolsLoader }] = await Promise.all([import('../../pkg/screwcut.js'), import('./engine.js')]);
+  const { glue, Engine, toolsLoader } = await import(new URL('page-engine.js', import.meta.url).href);
   await glue.default({ module_or_path: wasmUrl });
   let client = null;
   const engine = new Engine(

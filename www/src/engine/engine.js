@@ -441,14 +441,15 @@ export function applyEdits(text, edits) {
 }
 
 /**
- * Loads the tools module (`screwcut_tools_bg.wasm`, beside the wasm at
- * `wasmUrl`) and resolves to its initialised glue: the thread wizard, a plan
+ * Loads the tools module (`screwcut_tools_bg.wasm` and its glue
+ * `screwcut_tools.js`, beside the wasm at `wasmUrl`) and resolves to its initialised glue: the thread wizard, a plan
  * written block by block, the plan as JSON. A page loads it only when one
  * of them is first used.
  */
 export function toolsLoader(wasmUrl) {
   return async () => {
-    const tools = await import('../../pkg/screwcut_tools.js');
+    // The glue is a bundle of its own beside the wasm (`screwcut_tools.js`).
+    const tools = await import(new URL('screwcut_tools.js', wasmUrl).href);
     await tools.default({ module_or_path: new URL('screwcut_tools_bg.wasm', wasmUrl) });
     return tools;
   };
