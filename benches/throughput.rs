@@ -70,6 +70,21 @@ fn main() {
         println!("{}", p.last().map_or(0, |l| l.moves.len()));
         return;
     }
+    // Profiling mode: the side section of the 50,000-line program after that digit, from the kept pieces, N times.
+    if let Some(i) = args.iter().position(|a| a == "--side-profile") {
+        let n: usize = args[i + 1].parse().expect("count");
+        let (text, edited) = typed_texts(50_000);
+        let settings = Settings::new(Dialect::Gsk980tdc);
+        let plans = [screwcut::plan(&text, &settings), screwcut::plan(&edited, &settings)];
+        let keys = plans.each_ref().map(screwcut::wasm::keys::PlanKeys::of);
+        let mut memo = screwcut::wasm::memo::SideMemo::new();
+        let mut items = 0;
+        for k in 0..=n {
+            items += memo.side(&plans[k % 2], &keys[k % 2].threads).items.len();
+        }
+        println!("{items}");
+        return;
+    }
     if args.iter().any(|a| a == "--loops") {
         loops(&out_dir);
         typed();

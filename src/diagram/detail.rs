@@ -66,6 +66,10 @@ pub fn thin(passes: &[Pass], idx: &[usize]) -> (Vec<usize>, usize) {
 /// What the side section shows of thread `t`.
 pub fn side_detail(t: &Thread) -> Detail {
     let n = t.passes.len();
+    if n <= MAX_PASSES {
+        // Nothing to thin or merge (what the steps below give, without their lists).
+        return Detail { drawn: vec![true; n], merged_starts: 1, per_start: n, every: 1 };
+    }
     let start1: Vec<usize> = (0..n).filter(|&i| t.passes[i].start == 1).collect();
     // Starts that repeat start 1's path pass for pass are drawn once when
     // drawing them all would be more than a drawing can show.

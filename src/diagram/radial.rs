@@ -93,24 +93,20 @@ pub fn extent<'a>(items: impl IntoIterator<Item = &'a Item>) -> (f64, f64) {
 pub fn breaks(plan: &Plan, (lo, hi): (f64, f64)) -> Vec<Break> {
     let mut out = Vec::new();
     for internal in [false, true] {
-        let bands: Vec<(Band, f64)> = plan
-            .threads
-            .iter()
-            .filter(|t| t.internal == internal && t.long_axis == Axis::Z)
-            .filter_map(|t| Band::of(t).map(|b| (b, t.height)))
-            .filter(|(b, h)| b.height.is_finite() && *h > 0.0)
-            .collect();
-        if bands.is_empty() {
-            continue;
-        }
-        let h = bands.iter().map(|(b, _)| b.height).fold(0.0, f64::max);
+        // The deepest thread's height and the outermost crest (innermost for internal threads), in one pass.
         let crest =
             |b: &Band| if internal { b.crest(b.l0).min(b.crest(b.l1)) } else { b.crest(b.l0).max(b.crest(b.l1)) };
-        let at = if internal {
-            bands.iter().map(|(b, _)| crest(b)).fold(f64::INFINITY, f64::min) - KEEP * h
-        } else {
-            bands.iter().map(|(b, _)| crest(b)).fold(f64::NEG_INFINITY, f64::max) + KEEP * h
-        };
+        let (mut h, mut edge, mut any) = (0.0, if internal { f64::INFINITY } else { f64::NEG_INFINITY }, false);
+        let bands = plan.threads.iter().filter(|t| t.internal == internal && t.long_axis == Axis::Z);
+        for b in bands.filter_map(|t| Band::of(t).filter(|b| b.height.is_finite() && t.height > 0.0)) {
+            any = true;
+            h = f64::max(h, b.height);
+            edge = if internal { f64::min(edge, crest(&b)) } else { f64::max(edge, crest(&b)) };
+        }
+        if !any {
+            continue;
+        }
+        let at = if internal { edge - KEEP * h } else { edge + KEEP * h };
         let unit = UNIT * h;
         let far = if internal { at - lo } else { hi - at }.max(0.0);
         if far > WORTH * unit && at.is_finite() && (!internal || at > 0.0) {
