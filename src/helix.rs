@@ -145,7 +145,16 @@ fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diag
 /// 360°/starts apart).
 pub fn phase(angle: f64, start: f64, end: f64, shift: f64, lead: f64) -> f64 {
     let sense = if end < start { 1.0 } else { -1.0 };
-    (angle / 360.0 + sense * (start - shift) / lead).rem_euclid(1.0)
+    turns(angle / 360.0 + sense * (start - shift) / lead)
+}
+
+/// `x` in whole turns dropped (0 ≤ result ≤ 1): `x.rem_euclid(1.0)`, the
+/// same value (a zero may differ in sign), by `floor` instead of the
+/// remainder, which is a slow call natively and a loop in wasm; the check
+/// takes one per pass of a plan at every keystroke.
+fn turns(x: f64) -> f64 {
+    // Exact for x ≥ 0; for x < 0 one rounding of the same sum as rem_euclid's.
+    x - x.floor()
 }
 
 /// How far back a cut at start angle `angle` (degrees) begins at angle 0
@@ -177,19 +186,42 @@ fn cut_span(p: &Pass, moves: &[Move], spans: &dyn Fn(u32) -> Span) -> Span {
 
 /// How far apart two phases are, either way round (turns, 0 … 0.5).
 fn phase_gap(a: f64, b: f64) -> f64 {
-    let d = (a - b).rem_euclid(1.0);
+    let d = turns(a - b);
     d.min(1.0 - d)
 }
 
 /// `a − b` in turns, in −0.5 … 0.5.
 fn signed_gap(a: f64, b: f64) -> f64 {
-    let d = (a - b).rem_euclid(1.0);
+    let d = turns(a - b);
     if d > 0.5 { d - 1.0 } else { d }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `turns` is `rem_euclid(1.0)`: the same number for phases as they come
+    /// (angles / 360 plus starts in leads, either sign, tiny and large).
+    #[test]
+    fn turns_are_the_euclidean_remainder() {
+        let mut xs = vec![0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 1e-20, -1e-20, 1e-300, -1e-300, 123456.789, -123456.789];
+        xs.extend([f64::EPSILON, -f64::EPSILON, 1.0 - f64::EPSILON, -(1.0 - f64::EPSILON), 3e15 + 0.5, -3e15 - 0.5]);
+        let mut x = -7.3;
+        while x < 7.3 {
+            xs.push(x);
+            x += 0.013_7;
+        }
+        for lead in [0.35, 0.7, 1.5, 2.0, 25.4 / 13.0, 4.0] {
+            for z in [-47.3, -5.0, -0.001, 0.0, 3.1, 70.0] {
+                xs.push(z / lead);
+                xs.push(90.0 / 360.0 - z / lead);
+            }
+        }
+        for x in xs {
+            let (got, want) = (turns(x), x.rem_euclid(1.0));
+            assert!(got == want && (0.0..=1.0).contains(&got), "{x}: {got} ≠ {want}");
+        }
+    }
 
     #[test]
     fn a_start_angle_is_an_axial_shift_of_lead_times_angle() {
