@@ -124,7 +124,9 @@ pub fn update(
     known_diagnostics: f64,
     known: Option<Vec<f64>>,
 ) -> Result<JsValue, JsValue> {
-    DEFAULT.with(|s| s.update(text, dialect_name, settings, thread, start, known_diagnostics, known, false, false))
+    DEFAULT.with(|s| {
+        s.update(Some(text.into()), dialect_name, settings, thread, start, known_diagnostics, known, false, false)
+    })
 }
 
 /// [`Session::thread_scenes`] on the default session.

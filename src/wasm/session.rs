@@ -54,6 +54,10 @@ pub struct Session {
     lang: Cell<Lang>,
     /// Whether its drawings show the roughing cuts of G71/G72 (on demand).
     roughing: Cell<bool>,
+    /// The text of the last update with the edits made to it since
+    /// ([`Session::edit`]): the next update may plan it without the text
+    /// crossing into wasm again.
+    kept: Cell<Option<String>>,
 }
 
 #[wasm_bindgen]
@@ -89,8 +93,54 @@ impl Session {
     /// The program is re-read only from the last planner snapshot before the
     /// first byte that differs from the last call's text; `resumedAt` is the
     /// line reading resumed at (1: the whole program was read).
+    ///
+    /// `text` omitted (`undefined`): the text kept from the last update, with
+    /// the edits made since ([`Session::edit`]); an error when none is kept.
     #[allow(clippy::too_many_arguments)] // the JavaScript call's positional arguments
     pub fn update(
+        &self,
+        text: Option<String>,
+        dialect_name: &str,
+        settings: &str,
+        thread: i32,
+        start: u32,
+        known_diagnostics: f64,
+        known: Option<Vec<f64>>,
+        fresh: bool,
+        keep: bool,
+    ) -> Result<JsValue, JsValue> {
+        let text = match text.or_else(|| self.kept.take()) {
+            Some(t) => t,
+            None => return Err(err("no text kept: the update needs the whole text")),
+        };
+        let out = self.plan_text(&text, dialect_name, settings, thread, start, known_diagnostics, known, fresh, keep);
+        self.kept.set(Some(text));
+        out
+    }
+
+    /// The text kept for the next update (none before the first).
+    pub fn kept_text(&self) -> Option<String> {
+        let text = self.kept.take();
+        self.kept.set(text.clone());
+        text
+    }
+
+    /// Makes the change a browser editor states (UTF-16 units `from..to`
+    /// replaced with `inserted`) to the text kept for the next update.
+    /// Returns false when no text is kept or the change does not fit it:
+    /// the next update then needs the whole text.
+    pub fn edit(&self, from: u32, to: u32, inserted: &str) -> bool {
+        let Some(mut text) = self.kept.take() else { return false };
+        let fits = super::text::replace_utf16(&mut text, from as usize, to as usize, inserted);
+        self.kept.set(Some(text));
+        fits
+    }
+}
+
+impl Session {
+    /// [`Session::update`] of `text`.
+    #[allow(clippy::too_many_arguments)]
+    fn plan_text(
         &self,
         text: &str,
         dialect_name: &str,
@@ -172,7 +222,10 @@ impl Session {
         self.state.set(Some(session));
         out
     }
+}
 
+#[wasm_bindgen]
+impl Session {
     /// Frees the scenes no longer shown (call it after the drawing is on
     /// screen; else they are freed when the next plan arrives).
     pub fn tidy(&self) {

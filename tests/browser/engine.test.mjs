@@ -3,7 +3,10 @@
 //
 // - The app in a worker (OffscreenCanvas) and on the page (`?engine=page`,
 //   what a browser without OffscreenCanvas gets) draw the same scenes,
-//   highlight the same items and follow the same edits.
+//   highlight the same items and follow the same edits; a keystroke, a
+//   change in three places, undo and redo reach the engine as changes and
+//   the wasm session as changes to its own copy of the text (the text is
+//   not passed whole), which stays the editor's.
 // - In a program of 80 threads, an edit of one thread changes its entry of
 //   the thread menu and no other (both paths; the engine sends the page the
 //   summaries that changed).
@@ -88,6 +91,7 @@ try {
       await page.waitForTimeout(300);
       const [held, text] = [await engineText(), await page.evaluate(() => window.__screwcut.text())];
       check(`${mode}: ${what}: the engine plans the editor's text, sent as changes`, held.text === text && held.sentAs === 'edits', `${held.sentAs}, ${held.text?.length} / ${text.length} characters`);
+      check(`${mode}: ${what}: … made to the session's own copy, the text not passed whole`, held.kept === text && held.crossed === 'edits', `${held.crossed}, ${held.kept?.length} / ${text.length} characters`);
     };
     await same('after typing a pass');
     // One change in three places (several cursors, a paste of lines), undone, redone and undone again.

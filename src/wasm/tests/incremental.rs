@@ -247,7 +247,8 @@ fn each_view_keeps_its_own_session() {
     let (a, b) = (wasm::Session::new(), wasm::Session::new());
     let text_a = program(40);
     let text_b = program(30).replace("G32 Z13 F2", "G32 Z14 F2");
-    let up = |s: &wasm::Session, t: &str| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    let up =
+        |s: &wasm::Session, t: &str| s.update(Some(t.into()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     up(&a, &text_a);
     up(&b, &text_b);
     // A late edit to each, alternating: both resume near the end.
@@ -260,7 +261,7 @@ fn each_view_keeps_its_own_session() {
     assert!(num(&rb, "resumedAt") > 100.0, "b resumed at {}", num(&rb, "resumedAt"));
     // Each answers as a plan from scratch would.
     let fresh = wasm::Session::new();
-    let full = fresh.update(&a2, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    let full = fresh.update(Some(a2.clone()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     assert_eq!(snapshot_in(&ra, Some(&a)), snapshot_in(&full, Some(&fresh)));
 }
 
@@ -305,4 +306,34 @@ fn a_caller_holding_the_last_list_is_sent_its_change() {
     let whole: Vec<Diag> = field(&r4, "diagnostics");
     let full: Vec<Diag> = field(&from_scratch(&other, "gsk980tdc", ""), "diagnostics");
     assert_eq!(format!("{whole:?}"), format!("{full:?}"));
+}
+
+/// The editor's changes made to the kept text (`Session::edit`) plan as the
+/// whole edited text does: a digit typed into the first pass, a line pasted
+/// over a full-width word; a change that does not fit is refused and the
+/// kept text stays as it was; with no text kept an update needs the text.
+#[wasm_bindgen_test]
+fn edits_to_the_kept_text_plan_as_the_whole_text() {
+    let up = |s: &wasm::Session, t: Option<String>| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None, false, false);
+    let text = format!("(Ｇ32 螺纹)\n{}", program(30));
+    let s = wasm::Session::new();
+    assert!(up(&s, None).is_err(), "no text kept yet");
+    assert!(!s.edit(0, 0, "X"), "no text to edit yet");
+    up(&s, Some(text.clone())).unwrap();
+    // Line 10 is the first pass (`X29.1`): typed at its end by UTF-16 offset, after a comment of 9 units (17 bytes).
+    let at = text.encode_utf16().count() - program(30).encode_utf16().count();
+    let pass = program(30).lines().take(8).map(|l| l.len() + 1).sum::<usize>() + "X29.1".len();
+    assert!(s.edit((at + pass) as u32, (at + pass) as u32, "5"));
+    // The comment's full-width Ｇ (one unit, three bytes) replaced.
+    assert!(s.edit(1, 2, "G"));
+    let edited = text.replacen("X29.1\n", "X29.15\n", 1).replacen('Ｇ', "G", 1);
+    // Refused: inside nothing (past the end) and reversed.
+    assert!(!s.edit(1_000_000, 1_000_001, ""));
+    assert!(!s.edit(3, 2, ""));
+    let kept = up(&s, None).unwrap();
+    let fresh = wasm::Session::new();
+    let whole = up(&fresh, Some(edited.clone())).unwrap();
+    assert_eq!(snapshot_in(&kept, Some(&s)), snapshot_in(&whole, Some(&fresh)));
+    let first: Vec<PassInfo> = passes(&kept, "passes");
+    assert_eq!(first.first().map(|p| p.from[0]), Some(29.15), "the typed digit is planned");
 }

@@ -26,12 +26,12 @@ const CHECKED: &str =
 #[wasm_bindgen_test]
 fn diagnostics_and_notes_in_chinese() {
     let s = wasm::Session::new();
-    let en = s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    let en = s.update(Some(O1006.into()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     let d: Vec<Diag> = field(&en, "diagnostics");
     assert!(d[0].message.starts_with("the program does not turn this thread's major diameter"), "{d:?}");
     s.set_lang("zh");
     let key = num(&en, "diagnosticsKey");
-    let zh = s.update(O1006, "gsk980tdc", "", 0, 1, key, None, false, false).unwrap();
+    let zh = s.update(Some(O1006.into()), "gsk980tdc", "", 0, 1, key, None, false, false).unwrap();
     assert_ne!(num(&zh, "diagnosticsKey"), key, "the language is part of the key");
     let d: Vec<Diag> = field(&zh, "diagnostics");
     assert_eq!(d[0].code, "crest-assumed");
@@ -40,7 +40,7 @@ fn diagnostics_and_notes_in_chinese() {
     // The thread check's notes come in both languages, whatever the session's.
     for lang in ["zh", "en"] {
         s.set_lang(lang);
-        let r = s.update(CHECKED, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+        let r = s.update(Some(CHECKED.into()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
         let (zh, en) = (notes(&r, "zh"), notes(&r, "en"));
         assert!(zh[0].iter().any(|x| x.contains("程序没有车出大径")), "{zh:?}");
         assert!(en[0].iter().any(|x| x.contains("does not turn the major diameter")), "{en:?}");
@@ -52,7 +52,7 @@ fn diagnostics_and_notes_in_chinese() {
 fn relabel_switches_without_planning() {
     let s = wasm::Session::new();
     let known = Some(vec![-1.0; 2]);
-    let en = s.update(CHECKED, "gsk980tdc", "", 0, 1, -1.0, known, false, false).unwrap();
+    let en = s.update(Some(CHECKED.into()), "gsk980tdc", "", 0, 1, -1.0, known, false, false).unwrap();
     s.set_lang("zh");
     let zh = s.relabel().unwrap();
     assert_ne!(num(&zh, "diagnosticsKey"), num(&en, "diagnosticsKey"));
@@ -63,7 +63,9 @@ fn relabel_switches_without_planning() {
     // The next update of the same text in Chinese has the relabelled key and
     // the threads' key of the English answer: nothing is sent again.
     let held = vec![num(&en, "threadsKey"), -1.0];
-    let again = s.update(CHECKED, "gsk980tdc", "", 0, 1, num(&zh, "diagnosticsKey"), Some(held), false, false).unwrap();
+    let again = s
+        .update(Some(CHECKED.into()), "gsk980tdc", "", 0, 1, num(&zh, "diagnosticsKey"), Some(held), false, false)
+        .unwrap();
     assert!(get(&again, "diagnostics").is_null());
     assert!(get(&again, "threads").is_null());
     // Back to English: the English list again.

@@ -191,7 +191,7 @@ fn views_draw_pick_and_export_the_sessions_scenes() {
     use crate::draw::{Transform, View};
     let s = wasm::Session::new();
     let none = Uint32Array::new_with_length(0);
-    s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    s.update(Some(O1006.into()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     let d = s.draw("side", 640.0, 360.0, None, true, -1, -1, none.to_vec(), false).unwrap();
     let xf = Float64Array::from(get(&d, "transform")).to_vec();
     assert_eq!(xf.len(), 4);
@@ -247,9 +247,9 @@ fn views_draw_pick_and_export_the_sessions_scenes() {
 fn an_alarm_shows_the_drawing_left_greyed() {
     let s = wasm::Session::new();
     let none = Uint32Array::new_with_length(0).to_vec();
-    let good = s.update(O1006, "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    let good = s.update(Some(O1006.into()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
     let broken = O1006.replace("X46.5", "X46..5");
-    let r = s.update(&broken, "gsk980tdc", "", 0, 1, -1.0, None, false, true).unwrap();
+    let r = s.update(Some(broken.clone()), "gsk980tdc", "", 0, 1, -1.0, None, false, true).unwrap();
     assert_eq!(get(&r, "stale").as_bool(), Some(true));
     assert_eq!(shown_key(&r, 0), shown_key(&good, 0), "the good drawing's side section");
     let d = s.draw("side", 640.0, 360.0, None, false, -1, -1, none.clone(), false).unwrap();
@@ -258,6 +258,6 @@ fn an_alarm_shows_the_drawing_left_greyed() {
     assert!(!strokes.iter().any(|c| c == "#2563eb"), "grey pens: {strokes:?}");
     assert!(s.pick("side", Float64Array::from(get(&d, "transform")).to_vec(), 320.0, 180.0).unwrap().is_null());
     // Another program with an alarm: nothing kept.
-    let other = s.update(&broken, "gsk980tdc", "", 0, 1, -1.0, None, true, false).unwrap();
+    let other = s.update(Some(broken.clone()), "gsk980tdc", "", 0, 1, -1.0, None, true, false).unwrap();
     assert_eq!(get(&other, "stale").as_bool(), Some(false));
 }

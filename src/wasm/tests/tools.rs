@@ -19,7 +19,7 @@ fn object(fields: &[(&str, JsValue)]) -> JsValue {
 
 /// Plans `text` as `dialect` in a fresh session.
 fn plan(text: &str, dialect: &str) -> JsValue {
-    wasm::Session::new().update(text, dialect, "", 0, 1, -1.0, None, false, false).unwrap()
+    wasm::Session::new().update(Some(text.into()), dialect, "", 0, 1, -1.0, None, false, false).unwrap()
 }
 
 #[wasm_bindgen_test]

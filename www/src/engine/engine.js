@@ -53,6 +53,7 @@ export class Engine {
     this.text = null; // the text last planned (a plan may come as changes to it)
     this.planned = null; // {text, dialect, settings} of the last plan: what the tools write
     this.sentAs = null; // how it came: 'text' or 'edits'
+    this.crossed = null; // how it reached the session: 'text' (whole) or 'edits' (made to the text it kept)
     this.tidying = false; // a tidy of the session is queued
   }
 
@@ -136,15 +137,24 @@ export class Engine {
         return;
       }
     }
+    // The session makes the same changes to the text it kept (last first, so
+    // that each change's offsets still hold): the text then need not cross
+    // into wasm whole. One that does not fit, or none kept: the whole text.
+    let whole = true;
+    if (edits) {
+      whole = false;
+      for (let i = edits.length - 1; i >= 0 && !whole; i--) whole = !this.session.edit(edits[i][0], edits[i][1], edits[i][2]);
+    }
     this.text = text;
     this.planned = { text, dialect, settings };
     this.sentAs = edits ? 'edits' : 'text';
+    this.crossed = whole ? 'text' : 'edits';
     if (thread !== undefined) this.thread = thread;
     if (start !== undefined) this.start = start;
     const t0 = performance.now();
     let r;
     try {
-      r = this.held.fill(this.session.update(text, dialect, settings, this.thread, this.start, this.diagnosticsKey, this.held.known(), !!fresh, !!keep));
+      r = this.held.fill(this.session.update(whole ? text : undefined, dialect, settings, this.thread, this.start, this.diagnosticsKey, this.held.known(), !!fresh, !!keep));
     } catch (e) {
       // A planner failure (which must not happen) leaves the drawings on screen as they are (the views cannot draw).
       this.diagnosticsKey = -1;
@@ -392,8 +402,9 @@ export class Engine {
           Object.entries(this.views).map(([k, view]) => [k, { draw: view.lastDraw, paint: view.lastPaint, ops: view.list ? view.list.ops.length / 7 : 0, numbers: view.list ? view.list.nums.length : 0 }]),
         ),
       labels: () => v && v.labels(),
-      // The text the engine planned last and how it came (whole or as changes).
-      text: () => ({ text: this.text, sentAs: this.sentAs }),
+      // The text the engine planned last, how it came (whole or as changes),
+      // the session's copy and how that reached it.
+      text: () => ({ text: this.text, sentAs: this.sentAs, kept: this.session.kept_text(), crossed: this.crossed }),
       svg: () => v && v.svg(),
       items: () => this.session.items_of_style(name, format),
       point: () => {
@@ -442,9 +453,9 @@ export function applyEdits(text, edits) {
 
 /**
  * Loads the tools module (`screwcut_tools_bg.wasm` and its glue
- * `screwcut_tools.js`, beside the wasm at `wasmUrl`) and resolves to its initialised glue: the thread wizard, a plan
- * written block by block, the plan as JSON. A page loads it only when one
- * of them is first used.
+ * `screwcut_tools.js`, beside the wasm at `wasmUrl`) and resolves to its
+ * initialised glue: the thread wizard, a plan written block by block, the
+ * plan as JSON. A page loads it only when one of them is first used.
  */
 export function toolsLoader(wasmUrl) {
   return async () => {
