@@ -60,8 +60,8 @@ impl Band {
             for q in [p.from, p.to] {
                 let l = frame.long(q);
                 if l.is_finite() {
-                    lo = lo.min(l);
-                    hi = hi.max(l);
+                    lo = crate::num::min(lo, l);
+                    hi = crate::num::max(hi, l);
                 }
             }
         }

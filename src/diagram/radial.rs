@@ -94,14 +94,17 @@ pub fn breaks(plan: &Plan, (lo, hi): (f64, f64)) -> Vec<Break> {
     let mut out = Vec::new();
     for internal in [false, true] {
         // The deepest thread's height and the outermost crest (innermost for internal threads), in one pass.
-        let crest =
-            |b: &Band| if internal { b.crest(b.l0).min(b.crest(b.l1)) } else { b.crest(b.l0).max(b.crest(b.l1)) };
+        use crate::num::{max, min};
+        let crest = |b: &Band| {
+            let (c0, c1) = (b.crest(b.l0), b.crest(b.l1));
+            if internal { min(c0, c1) } else { max(c0, c1) }
+        };
         let (mut h, mut edge, mut any) = (0.0, if internal { f64::INFINITY } else { f64::NEG_INFINITY }, false);
         let bands = plan.threads.iter().filter(|t| t.internal == internal && t.long_axis == Axis::Z);
         for b in bands.filter_map(|t| Band::of(t).filter(|b| b.height.is_finite() && t.height > 0.0)) {
             any = true;
-            h = f64::max(h, b.height);
-            edge = if internal { f64::min(edge, crest(&b)) } else { f64::max(edge, crest(&b)) };
+            h = max(h, b.height);
+            edge = if internal { min(edge, crest(&b)) } else { max(edge, crest(&b)) };
         }
         if !any {
             continue;
