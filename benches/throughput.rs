@@ -80,7 +80,7 @@ fn main() {
         let mut memo = screwcut::wasm::memo::SideMemo::new();
         let mut items = 0;
         for k in 0..=n {
-            items += memo.side(&plans[k % 2], &keys[k % 2].threads).items.len();
+            items += memo.side(&plans[k % 2], &keys[k % 2]).items.len();
         }
         println!("{items}");
         return;
@@ -220,13 +220,13 @@ fn typed() {
         let plans = [screwcut::plan(&text, &settings), screwcut::plan(&edited, &settings)];
         let keys = plans.each_ref().map(screwcut::wasm::keys::PlanKeys::of);
         let mut memo = screwcut::wasm::memo::SideMemo::new();
-        memo.side(&plans[0], &keys[0].threads);
+        memo.side(&plans[0], &keys[0]);
         let mut typed = 0;
         let (side, items) = best_ms(10, || {
             typed += 1;
             let k = typed % 2;
             let t = Instant::now();
-            let scene = memo.side(&plans[k], &keys[k].threads);
+            let scene = memo.side(&plans[k], &keys[k]);
             (t.elapsed().as_secs_f64() * 1e3, scene.items.len())
         });
         println!("  … its side section from the kept pieces: best of 10 {side:.2} ms ({items} items)");

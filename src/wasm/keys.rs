@@ -330,6 +330,13 @@ fn hash_gauge(h: &mut KeyHasher, g: &Gauge) {
     }
 }
 
+/// The key of one motion (its span left out, as in [`hash_move`]).
+pub fn move_key(m: &Move) -> u64 {
+    let mut h = KeyHasher::default();
+    hash_move(&mut h, m);
+    h.finish()
+}
+
 /// The key of a run of motions.
 pub fn moves_key(moves: &[Move]) -> u64 {
     let mut h = KeyHasher::default();
@@ -366,6 +373,9 @@ pub struct PlanKeys {
     pub side: u64,
     /// The keys of the motions by blocks of [`MOVES_PER_KEY`], and how many motions there were.
     moves: (Vec<u64>, usize),
+    /// One key per motion ([`move_key`]), in plan order: what the side
+    /// section's pieces are keyed by, without reading the motions again.
+    pub motions: Vec<u64>,
 }
 
 /// Motions per key of [`PlanKeys`]' motions.
@@ -410,8 +420,34 @@ impl PlanKeys {
         let all_threads = combine(&threads);
         let side = combine(&[all_threads, combine(&moves), n as u64]);
         let all_listed = combine(&listed);
-        PlanKeys { threads, all_threads, listed, all_listed, side, moves: (moves, n) }
+        let motions = motion_keys(last, plan);
+        PlanKeys { threads, all_threads, listed, all_listed, side, moves: (moves, n), motions }
     }
+}
+
+/// Each motion's key: the last plan's for the motions `Changed` says are
+/// its (kept before the resume point, or rejoined after the edit), else
+/// worked out.
+fn motion_keys(last: Option<(&PlanKeys, &Changed)>, plan: &Plan) -> Vec<u64> {
+    let n = plan.moves.len();
+    let mut out = Vec::with_capacity(n);
+    let (kept, rejoined) = match last {
+        Some((k, c)) => {
+            let kept = c.moves_kept.min(n).min(k.motions.len());
+            out.extend_from_slice(&k.motions[..kept]);
+            let rejoined = c.moves_rejoined.filter(|&(new, old)| new >= kept && new <= n && old <= k.motions.len());
+            (kept, rejoined.map(|(new, old)| (new, &k.motions[old..])))
+        }
+        None => (0, None),
+    };
+    let fresh_to = rejoined.map_or(n, |(new, _)| new);
+    out.extend(plan.moves[kept..fresh_to].iter().map(move_key));
+    if let Some((_, old)) = rejoined {
+        let take = (n - fresh_to).min(old.len());
+        out.extend_from_slice(&old[..take]);
+        out.extend(plan.moves[fresh_to + take..].iter().map(move_key));
+    }
+    out
 }
 
 #[cfg(test)]

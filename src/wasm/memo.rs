@@ -12,7 +12,7 @@ use std::sync::Arc;
 use crate::motion::Move;
 use crate::plan::Plan;
 
-use super::keys::{KeyHasher, combine, hash_move, packed_key};
+use super::keys::{KeyHasher, PlanKeys, combine, move_key, packed_key};
 use super::pack::pack;
 use crate::diagram::radial::{self, Break};
 use crate::diagram::scene::{Item, Pt, Rect, Scene, Shape, Style, ViewKind, hash_points, same_points};
@@ -265,11 +265,11 @@ impl SideMemo {
         (self.built, self.reused)
     }
 
-    /// The side section of `plan`, whose threads have the keys
-    /// `thread_keys` ([`super::keys::thread_key`]); pieces are reused
-    /// from the last call where their keys match.
-    pub fn side(&mut self, plan: &Plan, thread_keys: &[u64]) -> Scene {
-        let b = self.build(plan, thread_keys);
+    /// The side section of `plan`, whose threads and motions have the keys
+    /// `keys` ([`PlanKeys`]); pieces are reused from the last call where
+    /// their keys match.
+    pub fn side(&mut self, plan: &Plan, keys: &PlanKeys) -> Scene {
+        let b = self.build(plan, keys);
         // As `side(plan)`: the axis, the part's section after it, the pieces,
         // then every item through the radial breaks.
         let mut scene = b.head;
@@ -291,7 +291,10 @@ impl SideMemo {
     }
 
     /// Builds or reuses every piece of `plan`'s side section.
-    fn build(&mut self, plan: &Plan, thread_keys: &[u64]) -> Built {
+    fn build(&mut self, plan: &Plan, keys: &PlanKeys) -> Built {
+        let thread_keys = &keys.threads;
+        // Each motion's key (the keys given, else worked out: they are the plan's).
+        let motion = |k: usize| keys.motions.get(k).copied().unwrap_or_else(|| move_key(&plan.moves[k]));
         self.calls = self.calls.wrapping_add(1);
         let (chunks, index) = (std::mem::take(&mut self.chunks), std::mem::take(&mut self.index));
         let shared = std::mem::take(&mut self.shared);
@@ -325,7 +328,7 @@ impl SideMemo {
             for k in start..end {
                 h.write_u8(u8::from(layout.owner[k]) | (u8::from(layout.roughing[k]) << 1));
                 if !layout.owner[k] {
-                    hash_move(&mut h, &plan.moves[k]);
+                    h.write_u64(motion(k));
                 }
             }
             let (moves, owner, has_threads) = (&plan.moves[start..end], &layout.owner[start..end], layout.has_threads);
@@ -349,7 +352,7 @@ impl SideMemo {
                 for r in [&p.lead_in, &p.cut, &p.tail] {
                     h.write_usize(r.end - r.start);
                 }
-                p.indices().for_each(|k| hash_move(&mut h, &plan.moves[k]));
+                p.indices().for_each(|k| h.write_u64(motion(k)));
             }
             let run = &paths[i..j];
             order.push(pieces.take(h.finish(), || {
@@ -440,7 +443,7 @@ mod tests {
     fn check(memo: &mut SideMemo, text: &str, settings: &Settings) -> (usize, usize) {
         let plan = crate::plan(text, settings);
         let keys = PlanKeys::of(&plan);
-        let got = memo.side(&plan, &keys.threads);
+        let got = memo.side(&plan, &keys);
         assert_eq!(got, side(&plan), "{text}");
         memo.counts()
     }
@@ -455,7 +458,7 @@ mod tests {
         let edited = base.replacen("X29.1", "X29.15", 1);
         for text in [&base, &edited, &base] {
             let plan = crate::plan(text, &s);
-            let got = memo.side(&plan, &PlanKeys::of(&plan).threads);
+            let got = memo.side(&plan, &PlanKeys::of(&plan));
             let paths: Vec<usize> = got
                 .items
                 .iter()
@@ -530,6 +533,6 @@ mod tests {
         plan.moves.truncate(plan.moves.len() / 2);
         assert!(!Layout::of(&plan).unmatched(&plan).is_empty(), "some passes have no motions");
         let keys = PlanKeys::of(&plan);
-        assert_eq!(memo.side(&plan, &keys.threads), side(&plan));
+        assert_eq!(memo.side(&plan, &keys), side(&plan));
     }
 }

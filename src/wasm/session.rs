@@ -189,7 +189,7 @@ impl Session {
                 let picked = pick(plan, thread);
                 *chosen = picked.unwrap_or(0);
                 let (tooth, starts) = thread_scenes_of(plan, picked, start);
-                let side_scene = Rc::new(side.side(plan, &keys.threads));
+                let side_scene = Rc::new(side.side(plan, &keys));
                 let scenes = Scenes {
                     plan: planner.plans(),
                     scenes: [Some(side_scene), tooth.0, starts.0],
