@@ -45,6 +45,19 @@ pub(super) struct State {
     keys: Option<(u64, PlanKeys)>,
 }
 
+/// The text of an update, put back as the text the session keeps when the
+/// update ends (by an answer or an error).
+struct Kept<'a> {
+    cell: &'a Cell<Option<String>>,
+    text: String,
+}
+
+impl Drop for Kept<'_> {
+    fn drop(&mut self) {
+        self.cell.set(Some(std::mem::take(&mut self.text)));
+    }
+}
+
 /// A planning session of one view (see the module documentation).
 #[wasm_bindgen]
 #[derive(Default)]
@@ -109,49 +122,12 @@ impl Session {
         fresh: bool,
         keep: bool,
     ) -> Result<JsValue, JsValue> {
-        let text = match text.or_else(|| self.kept.take()) {
-            Some(t) => t,
-            None => return Err(err("no text kept: the update needs the whole text")),
+        let Some(text) = text.or_else(|| self.kept.take()) else {
+            return Err(err("no text kept: the update needs the whole text"));
         };
-        let out = self.plan_text(&text, dialect_name, settings, thread, start, known_diagnostics, known, fresh, keep);
-        self.kept.set(Some(text));
-        out
-    }
-
-    /// The text kept for the next update (none before the first).
-    pub fn kept_text(&self) -> Option<String> {
-        let text = self.kept.take();
-        self.kept.set(text.clone());
-        text
-    }
-
-    /// Makes the change a browser editor states (UTF-16 units `from..to`
-    /// replaced with `inserted`) to the text kept for the next update.
-    /// Returns false when no text is kept or the change does not fit it:
-    /// the next update then needs the whole text.
-    pub fn edit(&self, from: u32, to: u32, inserted: &str) -> bool {
-        let Some(mut text) = self.kept.take() else { return false };
-        let fits = super::text::replace_utf16(&mut text, from as usize, to as usize, inserted);
-        self.kept.set(Some(text));
-        fits
-    }
-}
-
-impl Session {
-    /// [`Session::update`] of `text`.
-    #[allow(clippy::too_many_arguments)]
-    fn plan_text(
-        &self,
-        text: &str,
-        dialect_name: &str,
-        settings: &str,
-        thread: i32,
-        start: u32,
-        known_diagnostics: f64,
-        known: Option<Vec<f64>>,
-        fresh: bool,
-        keep: bool,
-    ) -> Result<JsValue, JsValue> {
+        // Kept for the next update however this one ends.
+        let kept = Kept { cell: &self.kept, text };
+        let text = kept.text.as_str();
         let d = dialect(dialect_name)?;
         let (s, problems) = settings_from(d, settings);
         let known = Known(known.unwrap_or_default());
@@ -222,10 +198,25 @@ impl Session {
         self.state.set(Some(session));
         out
     }
-}
 
-#[wasm_bindgen]
-impl Session {
+    /// The text kept for the next update (none before the first).
+    pub fn kept_text(&self) -> Option<String> {
+        let text = self.kept.take();
+        self.kept.set(text.clone());
+        text
+    }
+
+    /// Makes the change a browser editor states (UTF-16 units `from..to`
+    /// replaced with `inserted`) to the text kept for the next update.
+    /// Returns false when no text is kept or the change does not fit it:
+    /// the next update then needs the whole text.
+    pub fn edit(&self, from: u32, to: u32, inserted: &str) -> bool {
+        let Some(mut text) = self.kept.take() else { return false };
+        let fits = super::text::replace_utf16(&mut text, from as usize, to as usize, inserted);
+        self.kept.set(Some(text));
+        fits
+    }
+
     /// Frees the scenes no longer shown (call it after the drawing is on
     /// screen; else they are freed when the next plan arrives).
     pub fn tidy(&self) {

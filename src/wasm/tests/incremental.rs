@@ -311,7 +311,8 @@ fn a_caller_holding_the_last_list_is_sent_its_change() {
 /// The editor's changes made to the kept text (`Session::edit`) plan as the
 /// whole edited text does: a digit typed into the first pass, a line pasted
 /// over a full-width word; a change that does not fit is refused and the
-/// kept text stays as it was; with no text kept an update needs the text.
+/// kept text stays as it was, as it does through a failed update; with no
+/// text kept an update needs the text.
 #[wasm_bindgen_test]
 fn edits_to_the_kept_text_plan_as_the_whole_text() {
     let up = |s: &wasm::Session, t: Option<String>| s.update(t, "gsk980tdc", "", 0, 1, -1.0, None, false, false);
@@ -330,6 +331,8 @@ fn edits_to_the_kept_text_plan_as_the_whole_text() {
     // Refused: inside nothing (past the end) and reversed.
     assert!(!s.edit(1_000_000, 1_000_001, ""));
     assert!(!s.edit(3, 2, ""));
+    // An update that fails keeps the text for the next.
+    assert!(s.update(None, "no-such-controller", "", 0, 1, -1.0, None, false, false).is_err());
     let kept = up(&s, None).unwrap();
     let fresh = wasm::Session::new();
     let whole = up(&fresh, Some(edited.clone())).unwrap();
