@@ -50,12 +50,16 @@ export function createEditor(parent, { doc, onChange, onCursor, words }) {
     parent,
     // The change goes to onChange before the editor updates its own view
     // (its document's lines, decorations, gutters): the engine plans while
-    // the editor draws the typed character.
+    // the editor draws the typed character. The editor takes the change
+    // whatever onChange does.
     dispatchTransactions(trs, v) {
       let changes = null;
       for (const tr of trs) if (tr.docChanged) changes = changes ? changes.compose(tr.changes) : tr.changes;
-      if (changes) onChange(changes, v.state.doc, trs[trs.length - 1].state.doc);
-      v.update(trs);
+      try {
+        if (changes) onChange(changes, v.state.doc, trs[trs.length - 1].state.doc);
+      } finally {
+        v.update(trs);
+      }
     },
     state: EditorState.create({
       doc,
