@@ -36,9 +36,4 @@ impl Changed {
         }
         self.threads_rejoined.and_then(|(new, old)| (i >= new).then(|| i - new + old))
     }
-
-    /// Whether motions `from..to` of the new plan are the last plan's motions `from..to`.
-    pub fn moves_same(&self, from: usize, to: usize) -> bool {
-        to <= self.moves_kept || self.moves_rejoined.is_some_and(|(new, old)| new == old && from >= new)
-    }
 }

@@ -337,14 +337,6 @@ pub fn move_key(m: &Move) -> u64 {
     h.finish()
 }
 
-/// The key of a run of motions.
-pub fn moves_key(moves: &[Move]) -> u64 {
-    let mut h = KeyHasher::default();
-    h.write_usize(moves.len());
-    moves.iter().for_each(|m| hash_move(&mut h, m));
-    h.finish()
-}
-
 /// The key of a packed scene's content (its view, bounds and focus too).
 pub fn packed_key(p: &Packed) -> u64 {
     let mut h = KeyHasher::default();
@@ -371,15 +363,11 @@ pub struct PlanKeys {
     pub all_listed: u64,
     /// The key of the side section's inputs.
     pub side: u64,
-    /// The keys of the motions by blocks of [`MOVES_PER_KEY`], and how many motions there were.
-    moves: (Vec<u64>, usize),
     /// One key per motion ([`move_key`]), in plan order: what the side
-    /// section's pieces are keyed by, without reading the motions again.
+    /// key and the side section's pieces are made of, without reading the
+    /// motions again.
     pub motions: Vec<u64>,
 }
-
-/// Motions per key of [`PlanKeys`]' motions.
-pub const MOVES_PER_KEY: usize = 256;
 
 impl PlanKeys {
     /// The keys of `plan`.
@@ -404,24 +392,11 @@ impl PlanKeys {
                 }
             })
             .unzip();
-        let n = plan.moves.len();
-        let moves: Vec<u64> = (0..n.div_ceil(MOVES_PER_KEY))
-            .map(|b| {
-                let (from, to) = (b * MOVES_PER_KEY, ((b + 1) * MOVES_PER_KEY).min(n));
-                // The last plan's key of the same block, when it held the same motions.
-                let same = |(k, c): (&PlanKeys, &Changed)| {
-                    let (keys, len) = &k.moves;
-                    let was_to = ((b + 1) * MOVES_PER_KEY).min(*len);
-                    (c.moves_same(from, to) && was_to == to).then(|| keys.get(b).copied()).flatten()
-                };
-                last.and_then(same).unwrap_or_else(|| moves_key(&plan.moves[from..to]))
-            })
-            .collect();
-        let all_threads = combine(&threads);
-        let side = combine(&[all_threads, combine(&moves), n as u64]);
-        let all_listed = combine(&listed);
         let motions = motion_keys(last, plan);
-        PlanKeys { threads, all_threads, listed, all_listed, side, moves: (moves, n), motions }
+        let all_threads = combine(&threads);
+        let side = combine(&[all_threads, combine(&motions), motions.len() as u64]);
+        let all_listed = combine(&listed);
+        PlanKeys { threads, all_threads, listed, all_listed, side, motions }
     }
 }
 
