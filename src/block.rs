@@ -18,7 +18,9 @@ pub struct Number {
 impl Number {
     /// The value when it is a whole number without a point (`G32`, `M30`, `P1160`).
     pub fn integer(&self) -> Option<i64> {
-        if self.value.fract() == 0.0 && self.value.abs() < 9.0e15 { Some(self.value as i64) } else { None }
+        // Below 2^63 the cast truncates exactly: a whole number casts back to itself (no `fract`, a library call).
+        let v = self.value;
+        if v.abs() < 9.0e15 && (v as i64) as f64 == v { Some(v as i64) } else { None }
     }
 }
 
@@ -140,5 +142,35 @@ impl Block {
     /// True when the block has no words at all (blank or comment-only).
     pub fn is_empty(&self) -> bool {
         self.words.is_empty()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Number;
+
+    /// `integer` is the value when it is whole and below 9e15 in size, as `fract() == 0` says.
+    #[test]
+    fn integer_is_the_whole_value() {
+        let xs = [
+            0.0f64,
+            -0.0,
+            32.0,
+            -75.0,
+            32.5,
+            0.1,
+            1e-300,
+            8.9e15,
+            9.0e15,
+            1e300,
+            f64::NAN,
+            f64::INFINITY,
+            -f64::INFINITY,
+        ];
+        for x in xs.into_iter().chain(xs.iter().map(|x| x.next_up())) {
+            let n = Number { value: x, has_point: false, int_digits: 1, frac_digits: 0 };
+            let want = if x.fract() == 0.0 && x.abs() < 9.0e15 { Some(x as i64) } else { None };
+            assert_eq!(n.integer(), want, "{x:e}");
+        }
     }
 }

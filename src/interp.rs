@@ -138,7 +138,8 @@ fn g_codes<'b>(r: &mut Reader, ctl: &Controller, b: &'b Block, seen: &mut [Optio
     let mut n = 0;
     for w in b.all(b'G') {
         let v10 = w.value() * 10.0;
-        let code = if v10 >= 0.0 && (v10 - v10.round()).abs() < 1e-9 { (ctl.g_code)(code10(w)) } else { None };
+        let code =
+            if v10 >= 0.0 && (v10 - crate::num::round(v10)).abs() < 1e-9 { (ctl.g_code)(code10(w)) } else { None };
         let Some((group, g)) = code else {
             r.diag(&msg::UNSUPPORTED_G_CODE, w.span, args![word = w, controller = Arg::lit(r.rules.title())]);
             return None;
@@ -158,7 +159,7 @@ fn g_codes<'b>(r: &mut Reader, ctl: &Controller, b: &'b Block, seen: &mut [Optio
 
 /// A G word's code times ten (G33.1 is 331).
 fn code10(w: &Word) -> i64 {
-    (w.value() * 10.0).round() as i64
+    crate::num::round_i64(w.value() * 10.0)
 }
 
 /// Applies the modal settings that take effect before motion (units,

@@ -72,6 +72,29 @@ pub fn ser_round_pair<S: Serializer>(v: &[f64; 2], s: S) -> Result<S::Ok, S::Err
     t.end()
 }
 
+/// `x.round() as i64` (halves away from zero, saturating, NaN as 0) by a
+/// cast and a comparison: natively on a baseline x86-64 `round` is a
+/// library call, and every G code and whole-number word is rounded.
+#[inline]
+pub fn round_i64(x: f64) -> i64 {
+    let t = x as i64; // toward zero, saturating; NaN → 0
+    // Exact: below 2^52 `t` is `x`'s whole part; above, `x` is whole or `t` saturated.
+    let f = x - t as f64;
+    if f >= 0.5 {
+        t.saturating_add(1)
+    } else if f <= -0.5 {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
+}
+
+/// `x.round()` for `x` below 2^52 in size by [`round_i64`], else `x` (whole already, or NaN).
+#[inline]
+pub fn round(x: f64) -> f64 {
+    if x.abs() < 4_503_599_627_370_496.0 { round_i64(x) as f64 } else { x }
+}
+
 /// The lesser of `x` and `y`, the other when one is NaN: `f64::min` by
 /// comparison. In wasm, `f64::min` is a call (wasm's own `min` treats NaN
 /// otherwise), and the side section takes several per thread at every
@@ -115,6 +138,26 @@ mod tests {
                 let same = |a: f64, b: f64| a == b || (a.is_nan() && b.is_nan());
                 assert!(same(min(x, y), x.min(y)) && same(max(x, y), x.max(y)), "{x} {y}");
             }
+        }
+    }
+
+    /// `round_i64`/`round` are `f64::round` (halves away from zero) on halves,
+    /// the numbers next to them, whole numbers, the largest and smallest, and NaN.
+    #[test]
+    fn rounding_by_cast_is_the_standard_one() {
+        let mut xs = vec![0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY, f64::MAX, f64::MIN, 1e-300];
+        for k in
+            [0.5f64, 1.5, 2.5, 320.0, 331.0, 4_503_599_627_370_495.5, 4_503_599_627_370_496.0, 9.0e15, 9.2e18, 1e19]
+        {
+            for x in [k, k.next_up(), k.next_down()] {
+                xs.extend([x, -x]);
+            }
+        }
+        xs.extend([0.49999999999999994, 32.0 * 10.0, 33.1 * 10.0, 76.1 * 10.0, 2f64.powi(63), -(2f64.powi(63))]);
+        for x in xs {
+            assert_eq!(round_i64(x), x.round() as i64, "{x:e}");
+            let (a, b) = (round(x), x.round());
+            assert!(a == b || (a.is_nan() && b.is_nan()), "{x:e}: {a} {b}");
         }
     }
 }

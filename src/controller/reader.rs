@@ -97,7 +97,7 @@ impl Reader<'_> {
 
     /// Says `template` about G word `w` (what it does: `what`) once per code in a program.
     pub fn noted(&mut self, template: &'static Template, w: &Word, what: &'static Phrase) {
-        let code = (w.value() * 10.0).round() as i64;
+        let code = crate::num::round_i64(w.value() * 10.0);
         if !self.m.noted.contains(&code) {
             self.m.noted.push(code);
             self.diag(template, w.span, args![word = w, what]);
