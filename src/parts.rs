@@ -46,6 +46,11 @@ impl<T: Clone> Parts<T> {
         self.parts.iter_mut().flat_map(|p| Arc::make_mut(p).iter_mut())
     }
 
+    /// The parts in order, each with the index of its first item.
+    pub fn parts(&self) -> impl Iterator<Item = (usize, &Arc<Vec<T>>)> {
+        std::iter::once(0).chain(self.ends.iter().copied()).zip(self.parts.iter())
+    }
+
     /// Item `i`.
     pub fn get(&self, i: usize) -> Option<&T> {
         let k = self.ends.partition_point(|&e| e <= i);

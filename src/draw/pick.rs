@@ -1,6 +1,9 @@
 //! What a view's pointer is over, and what a hover or the cursor line marks:
 //! scene items by source line or by pass, the item nearest a page point.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use super::Transform;
 use crate::diagram::scene::{Item, Pt, Scene, Shape};
 
@@ -10,6 +13,49 @@ pub const REACH: f64 = 7.0;
 /// The items drawn from source `line`.
 pub fn items_of_line(scene: &Scene, line: u32) -> Vec<usize> {
     scene.items.iter().enumerate().filter(|(_, it)| it.lines.contains(&line)).map(|(i, _)| i).collect()
+}
+
+/// The lowest and highest source line of each part of a scene's items
+/// (see [`crate::parts`]), kept from one scene to the next: a part the next
+/// scene shares is not read again. The parts are held, so that a kept
+/// part's address is never another part's.
+#[derive(Default)]
+pub struct LineRanges {
+    parts: Vec<(Arc<Vec<Item>>, Lines)>,
+}
+
+/// The lowest and highest line of some items (none: they draw no line).
+type Lines = Option<(u32, u32)>;
+
+impl LineRanges {
+    /// The items drawn from any of `lines`, in order, each once (as
+    /// [`items_of_line`] for each line): only the parts whose lines reach
+    /// one of them are read.
+    pub fn items_of_lines(&mut self, scene: &Scene, lines: &[u32]) -> Vec<usize> {
+        let old = std::mem::take(&mut self.parts);
+        let kept: HashMap<*const Vec<Item>, Lines> = old.iter().map(|(p, r)| (Arc::as_ptr(p), *r)).collect();
+        let mut out = Vec::new();
+        for (start, part) in scene.items.parts() {
+            let range = kept.get(&Arc::as_ptr(part)).copied().unwrap_or_else(|| range_of(part));
+            self.parts.push((part.clone(), range));
+            let Some((lo, hi)) = range else { continue };
+            if !lines.iter().any(|l| (lo..=hi).contains(l)) {
+                continue;
+            }
+            for (j, item) in part.iter().enumerate() {
+                if item.lines.iter().any(|l| lines.contains(l)) {
+                    out.push(start + j);
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The lowest and highest line the items of `part` draw (none: no line).
+fn range_of(part: &[Item]) -> Lines {
+    let all = part.iter().flat_map(|i| i.lines.iter().copied());
+    all.fold(None, |r, l| Some(r.map_or((l, l), |(lo, hi): (u32, u32)| (lo.min(l), hi.max(l)))))
 }
 
 /// The items of pass `pass` of thread `thread`.
@@ -105,5 +151,45 @@ mod tests {
         assert_eq!(items_of_line(&s, 7), vec![1]);
         assert_eq!(items_of_pass(&s, 0, 2), vec![1]);
         assert_eq!(distance(&s.items[0], &xf, [50.0, 95.0]), 5.0);
+    }
+
+    /// The marked lines' items read by parts are those of every line read
+    /// item by item, over scenes that share some parts with the one before
+    /// (as the side section after a keystroke), parts replaced, and own items.
+    #[test]
+    fn items_of_lines_by_parts_are_those_of_each_line() {
+        let mut next = crate::hash::unit_floats(0x2545_f491_4f6c_dd1d);
+        let mut int = |n: u32| (next() * n as f64) as u32;
+        let item = |lines: Vec<u32>| {
+            Item::new(Shape::Polyline { points: vec![[0.0, 0.0], [1.0, 1.0]].into() }, Style::Cut).lines(lines)
+        };
+        let part = |int: &mut dyn FnMut(u32) -> u32| {
+            let base = int(200);
+            let n = 1 + int(6);
+            Arc::new((0..n).map(|_| item((0..int(4)).map(|_| base + int(12)).collect())).collect::<Vec<_>>())
+        };
+        let mut parts: Vec<Arc<Vec<Item>>> = (0..30).map(|_| part(&mut int)).collect();
+        let mut ranges = LineRanges::default();
+        let mut read = 0;
+        for round in 0..200 {
+            // A keystroke: one part is new, the rest are shared with the scene before.
+            let k = int(parts.len() as u32) as usize;
+            parts[k] = part(&mut int);
+            let mut s = Scene::new(ViewKind::Side);
+            for _ in 0..int(3) {
+                s.push(item(vec![int(220)]), false);
+            }
+            for p in &parts {
+                s.items.push_shared(p.clone());
+            }
+            s.push(item(vec![int(220), int(220)]), false);
+            let lines: Vec<u32> = (0..1 + int(3)).map(|_| int(220)).collect();
+            let mut want: Vec<usize> = lines.iter().flat_map(|&l| items_of_line(&s, l)).collect();
+            want.sort_unstable();
+            want.dedup();
+            assert_eq!(ranges.items_of_lines(&s, &lines), want, "round {round}, lines {lines:?}");
+            read += want.len();
+        }
+        assert!(read > 200, "the lines marked some items ({read})");
     }
 }

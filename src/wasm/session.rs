@@ -40,6 +40,8 @@ pub(super) struct State {
     diagnostics: DiagnosticsSent,
     /// Each view's last fit (by [`super::shown::Which`]): kept while typing leaves the focus and labels as they were.
     pub(super) fits: [crate::draw::FitMemo; 3],
+    /// Each view's source lines by part of its items (the cursor line's mark reads only the parts that reach it).
+    pub(super) line_ranges: [crate::draw::pick::LineRanges; 3],
     /// The keys of the planner's last plan and its number (the next plan's
     /// keys take from them what the planner kept).
     keys: Option<(u64, PlanKeys)>,
@@ -144,6 +146,7 @@ impl Session {
                 thread: 0,
                 compare: None,
                 fits: Default::default(),
+                line_ranges: Default::default(),
                 diagnostics: DiagnosticsSent::default(),
                 keys: None,
             },

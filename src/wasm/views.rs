@@ -10,6 +10,7 @@ use super::js::{err, set, to_js};
 use super::session::Session;
 use super::shown::Which;
 use crate::diagram::scene::{Anchor, Scene, Shape};
+use crate::draw::pick::LineRanges;
 use crate::draw::{self, DisplayList, FONT_FAMILY, FONT_SIZE, Mark, Op, Transform, View};
 
 #[wasm_bindgen]
@@ -45,7 +46,8 @@ impl Session {
         let (lang, roughing) = (self.lang(), self.roughing());
         self.with_state_mut(|st| {
             let Some(scene) = st.shown.scene(which) else { return Ok(JsValue::NULL) };
-            let mark = mark_of(scene, mark_thread, mark_pass, &mark_lines, light);
+            let ranges = &mut st.line_ranges[which as usize];
+            let mark = mark_of(scene, ranges, mark_thread, mark_pass, &mark_lines, light);
             let v = View {
                 width,
                 height,
@@ -214,15 +216,12 @@ fn transform(xf: Option<&[f64]>) -> Result<Option<Transform>, JsValue> {
     }
 }
 
-/// The items a mark names: a pass, else source lines.
-fn mark_of(scene: &Scene, thread: i32, pass: i32, lines: &[u32], light: bool) -> Mark {
+/// The items a mark names: a pass, else source lines (at most 64).
+fn mark_of(scene: &Scene, ranges: &mut LineRanges, thread: i32, pass: i32, lines: &[u32], light: bool) -> Mark {
     let items = if thread >= 0 && pass >= 0 {
         draw::pick::items_of_pass(scene, thread as u32, pass as u32)
     } else {
-        let mut v: Vec<usize> = lines.iter().take(64).flat_map(|&l| draw::pick::items_of_line(scene, l)).collect();
-        crate::order::sort(&mut v);
-        v.dedup();
-        v
+        ranges.items_of_lines(scene, &lines[..lines.len().min(64)])
     };
     Mark { items, light }
 }

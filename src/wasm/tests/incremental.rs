@@ -340,3 +340,47 @@ fn edits_to_the_kept_text_plan_as_the_whole_text() {
     let first: Vec<PassInfo> = passes(&kept, "passes");
     assert_eq!(first.first().map(|p| p.from[0]), Some(29.15), "the typed digit is planned");
 }
+
+/// The cursor line's mark drawn after each edit (the side sections share
+/// the pieces that did not change, and the session reads only the pieces
+/// that reach the marked lines) is the one a session planning the text anew
+/// draws at the same transform.
+#[wasm_bindgen_test]
+fn marked_lines_after_edits_are_a_fresh_sessions() {
+    let base = program(30);
+    let typed = wasm::Session::new();
+    let update = |s: &wasm::Session, text: &str| {
+        s.update(Some(text.into()), "gsk980tdc", "", 0, 1, -1.0, None, false, false).unwrap();
+    };
+    update(&typed, &base);
+    let first = typed.draw("side", 640.0, 360.0, None, false, -1, -1, vec![], false).unwrap();
+    let xf = Float64Array::from(get(&first, "transform")).to_vec();
+    let list = |s: &wasm::Session, lines: &[u32]| {
+        let d = s.draw("side", 640.0, 360.0, Some(xf.clone()), false, -1, -1, lines.to_vec(), true).unwrap();
+        (js_sys::Uint32Array::from(get(&d, "ops")).to_vec(), Float64Array::from(get(&d, "nums")).to_vec())
+    };
+    let mut marked = 0;
+    // Line 9 is the first thread's first pass (X29.1), 22 the second's, 300 and 301 a pass in the middle.
+    for (k, text) in [
+        edit_line(&base, 9, |_| "X29.15".into()),
+        edit_line(&base, 9, |_| "X29.1".into()),
+        edit_line(&base, 22, |_| "X30.2".into()),
+        edit_line(&base, 300, |l| format!("{l}\n")),
+        base.clone(),
+    ]
+    .iter()
+    .enumerate()
+    {
+        update(&typed, text);
+        let fresh = wasm::Session::new();
+        update(&fresh, text);
+        let plain = list(&fresh, &[]);
+        assert_eq!(list(&typed, &[]), plain, "edit {k}");
+        for lines in [&[9][..], &[22, 23], &[9, 300, 301]] {
+            let got = list(&typed, lines);
+            assert_eq!(got, list(&fresh, lines), "edit {k}, lines {lines:?}");
+            marked += usize::from(got != plain);
+        }
+    }
+    assert_eq!(marked, 15, "every mark shows");
+}
