@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use super::Transform;
 use crate::diagram::scene::{Item, Pt, Scene, Shape};
+use crate::hash::BuildKeyHasher;
 
 /// How near the pointer an item must be, px.
 pub const REACH: f64 = 7.0;
@@ -33,10 +34,12 @@ impl LineRanges {
     /// one of them are read.
     pub fn items_of_lines(&mut self, scene: &Scene, lines: &[u32]) -> Vec<usize> {
         let old = std::mem::take(&mut self.parts);
-        let kept: HashMap<*const Vec<Item>, Lines> = old.iter().map(|(p, r)| (Arc::as_ptr(p), *r)).collect();
+        // A part kept from the last scene is known by its address.
+        let by_ptr: HashMap<usize, Lines, BuildKeyHasher> =
+            old.iter().map(|(p, r)| (Arc::as_ptr(p) as usize, *r)).collect();
         let mut out = Vec::new();
         for (start, part) in scene.items.parts() {
-            let range = kept.get(&Arc::as_ptr(part)).copied().unwrap_or_else(|| range_of(part));
+            let range = by_ptr.get(&(Arc::as_ptr(part) as usize)).copied().unwrap_or_else(|| range_of(part));
             self.parts.push((part.clone(), range));
             let Some((lo, hi)) = range else { continue };
             if !lines.iter().any(|l| (lo..=hi).contains(l)) {
