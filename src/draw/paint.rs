@@ -88,6 +88,9 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Pl
     }
     p.paths(scene, view.roughing);
     for (i, item) in scene.items.iter().enumerate() {
+        if matches!(item.shape, Shape::Polyline { .. } | Shape::Polygon { .. }) {
+            continue; // drawn with their pens by `paths`, their halos by `halos`
+        }
         let halo = match mark {
             Some((set, light)) if set.contains(&i) => HIGHLIGHT_HALO[usize::from(light)],
             _ => HALO,
