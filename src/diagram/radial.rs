@@ -81,7 +81,7 @@ impl Break {
 pub fn extent<'a>(items: impl IntoIterator<Item = &'a Item>) -> (f64, f64) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for item in items.into_iter().filter(|i| !matches!(i.style, Style::Axis | Style::Diameter)) {
-        item.each_point(|p| (lo, hi) = (lo.min(p[1]), hi.max(p[1])));
+        item.each_point(|p| (lo, hi) = (crate::num::min(lo, p[1]), crate::num::max(hi, p[1])));
     }
     (lo, hi)
 }

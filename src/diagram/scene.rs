@@ -68,11 +68,13 @@ impl Rect {
 
     /// Grows to include `p` (non-finite points are ignored).
     pub fn add(&mut self, p: Pt) {
+        use crate::num::{max, min};
+        // By comparison: wasm calls `fmin`/`fmax` for `f64::min`/`max` (every point of a scene comes here).
         if p[0].is_finite() && p[1].is_finite() {
-            self.x0 = self.x0.min(p[0]);
-            self.y0 = self.y0.min(p[1]);
-            self.x1 = self.x1.max(p[0]);
-            self.y1 = self.y1.max(p[1]);
+            self.x0 = min(self.x0, p[0]);
+            self.y0 = min(self.y0, p[1]);
+            self.x1 = max(self.x1, p[0]);
+            self.y1 = max(self.y1, p[1]);
         }
     }
 

@@ -276,7 +276,7 @@ impl SideMemo {
         crate::diagram::section::apply(&mut scene, plan);
         let mut extent = radial::extent(scene.items.iter());
         for e in b.order.iter().map(|&i| self.chunks[i].extent) {
-            extent = (extent.0.min(e.0), extent.1.max(e.1));
+            extent = (crate::num::min(extent.0, e.0), crate::num::max(extent.1, e.1));
         }
         let list = radial::breaks(plan, extent);
         scene.items.iter_mut().for_each(|i| radial::map_item(&list, i));
