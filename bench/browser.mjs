@@ -8,7 +8,8 @@
 //   and in the body of its common threading macro O9010;
 // - the app's marks: keystroke to the committed drawing that includes it
 //   (`performance.mark('screwcut:frame', {detail: {input}})`);
-// - long tasks on the page's thread while typing; the worker's re-plan time;
+// - long tasks on the page's thread while typing; the worker's re-plan and
+//   its drawing of the views (display lists and canvas calls);
 // - the 3-line L99 program (334,125 motions) opened from a link: the page
 //   ready, a click answered, a keystroke's Event Timing;
 // - one block-by-block thread of many passes put into the editor at 0.5, 1,
@@ -291,7 +292,7 @@ async function typing({ text, dialect, line, keys, tag, what }) {
       events: self.__events.filter((e) => e.start > t0),
       long: self.__long.filter((e) => e.start > t0),
       marks: marks.map((e) => e.startTime - e.detail.input),
-      plans: window.__screwcut.updates.filter((u) => u.sent > t0).map((u) => ({ plan: u.plan, views: u.views })),
+      plans: window.__screwcut.updates.filter((u) => u.sent > t0).map((u) => ({ plan: u.plan, views: u.views, draw: u.draw })),
     };
   }, t0);
   await page.close();
@@ -312,8 +313,11 @@ async function typing({ text, dialect, line, keys, tag, what }) {
       `keystroke to the committed drawing (marks, ${m.marks.length}) p50 ${quantile(m.marks, 0.5).toFixed(1)} ms, p95 ${quantile(m.marks, 0.95).toFixed(1)} ms; ` +
       `page long tasks: ${m.long.length} (${longSum.toFixed(0)} ms in all, longest ${longMax.toFixed(0)} ms); ` +
       `in the worker (${m.plans.length} plans) re-plan p50 ${quantile(m.plans.map((u) => u.plan), 0.5).toFixed(1)} ms, ` +
-      `drawing p50 ${quantile(m.plans.map((u) => u.views), 0.5).toFixed(1)} ms`,
+      `the answer given to the views p50 ${quantile(m.plans.map((u) => u.views), 0.5).toFixed(1)} ms, ` +
+      `the views drawn (display lists and canvas calls) p50 ${quantile(m.plans.map((u) => u.draw), 0.5).toFixed(1)} ms`,
   );
+  fig(`${tag}_replan_p50`, quantile(m.plans.map((u) => u.plan), 0.5));
+  fig(`${tag}_draw_p50`, quantile(m.plans.map((u) => u.draw), 0.5));
   fig(`${tag}_event_p50`, p50);
   fig(`${tag}_event_p95`, p95);
   fig(`${tag}_mark_p50`, quantile(m.marks, 0.5));

@@ -132,6 +132,20 @@ const FIGURES: &[Figure] = &[
         key: "v5_ratio_p95", what: "… ratio to the floor, p95", before: "2.5–3", target: "≤ 1.25", unit: "×"
     },
     Figure {
+        key: "k50_replan_p50",
+        what: "50,000 lines: the worker's re-plan after a keystroke, p50",
+        before: "10.6–16.7 (2026-11-26)",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
+        key: "k50_draw_p50",
+        what: "… the worker's drawing of the views (display lists, canvas calls), p50",
+        before: "8.2–11.8 (2026-11-26)",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
         key: "v50_ratio_p50",
         what: "50,000 lines: the same ratio, p50",
         before: "—",
