@@ -187,7 +187,7 @@ fn cut_span(p: &Pass, moves: &[Move], spans: &dyn Fn(u32) -> Span) -> Span {
 /// How far apart two phases are, either way round (turns, 0 … 0.5).
 fn phase_gap(a: f64, b: f64) -> f64 {
     let d = turns(a - b);
-    d.min(1.0 - d)
+    crate::num::min(d, 1.0 - d)
 }
 
 /// `a − b` in turns, in −0.5 … 0.5.

@@ -11,11 +11,6 @@ use crate::hash::BuildKeyHasher;
 /// How near the pointer an item must be, px.
 pub const REACH: f64 = 7.0;
 
-/// The items drawn from source `line`.
-pub fn items_of_line(scene: &Scene, line: u32) -> Vec<usize> {
-    scene.items.iter().enumerate().filter(|(_, it)| it.lines.contains(&line)).map(|(i, _)| i).collect()
-}
-
 /// The lowest and highest source line of each part of a scene's items
 /// (see [`crate::parts`]), kept from one scene to the next: a part the next
 /// scene shares is not read again. The parts are held, so that a kept
@@ -29,9 +24,8 @@ pub struct LineRanges {
 type Lines = Option<(u32, u32)>;
 
 impl LineRanges {
-    /// The items drawn from any of `lines`, in order, each once (as
-    /// [`items_of_line`] for each line): only the parts whose lines reach
-    /// one of them are read.
+    /// The items drawn from any of `lines`, in order, each once: only the
+    /// parts whose lines reach one of them are read.
     pub fn items_of_lines(&mut self, scene: &Scene, lines: &[u32]) -> Vec<usize> {
         let old = std::mem::take(&mut self.parts);
         // A part kept from the last scene is known by its address.
@@ -136,6 +130,11 @@ fn segment_distance(p: Pt, a: Pt, b: Pt) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The items drawn from source `line`, read item by item (what the parts' ranges must give).
+    fn items_of_line(scene: &Scene, line: u32) -> Vec<usize> {
+        scene.items.iter().enumerate().filter(|(_, it)| it.lines.contains(&line)).map(|(i, _)| i).collect()
+    }
     use crate::diagram::scene::{Style, ViewKind};
 
     #[test]

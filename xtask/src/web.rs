@@ -131,6 +131,8 @@ fn crate_version(manifest: &str) -> Result<String> {
 
 /// The package.json of the element folder.
 fn element_package_json(version: &str) -> String {
+    // The app's files as APP_FILES lists them (copied beside the element by `write_element_package`).
+    let app = APP_FILES.map(|f| format!("\"{f}\"")).join(", ");
     format!(
         r#"{{
   "name": "screwcut-preview",
@@ -150,7 +152,7 @@ fn element_package_json(version: &str) -> String {
     "./app": "./index.html",
     "./package.json": "./package.json"
   }},
-  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", "index.html", "app.js", "worker.js", "style.css", "favicon.svg", "screwcut_tools_bg.wasm", "screwcut_tools.js", "wizard.js", "page-engine.js", "examples/"],
+  "files": ["screwcut-preview.js", "screwcut-preview.d.ts", "screwcut_bg.wasm", "README.md", "LICENSE-MIT", "LICENSE-APACHE", {app}, "examples/"],
   "sideEffects": true,
   "keywords": ["cnc", "lathe", "g-code", "thread", "web-component", "custom-element", "wasm"]
 }}
