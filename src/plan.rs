@@ -19,7 +19,7 @@ use crate::exec::index::{At, Index};
 use crate::exec::reads::Reads;
 use crate::exec::{Ctx, Cycle, Exec, Flow};
 use crate::interp::Interp;
-use crate::lexer::{LexLimits, Lexer};
+use crate::lexer::{Blocks, LexLimits, Lexer};
 use crate::motion::{Move, MoveKind};
 use crate::num::ser_round_opt;
 use crate::settings::{P, Settings};
@@ -67,8 +67,25 @@ impl Plan {
 
 /// Plans `text` with `settings` (which also carry the dialect).
 pub fn plan(text: &str, settings: &Settings) -> Plan {
+    plan_from(text, settings, text.len() >= AHEAD_FROM && two_cores())
+}
+
+/// Plans `text` with its blocks lexed on a second thread whatever its size
+/// (what [`plan`] does natively from 64 KiB on a machine with two cores):
+/// the same plan as a reading on one thread. In wasm, [`plan`].
+pub fn plan_lexed_ahead(text: &str, settings: &Settings) -> Plan {
+    plan_from(text, settings, true)
+}
+
+/// The size from which a native plan lexes ahead on a second core (when
+/// the machine has one): below it a thread costs more than it saves.
+pub(crate) const AHEAD_FROM: usize = 64 << 10;
+
+/// Plans `text`, lexing ahead on a second thread (natively) when `ahead`.
+fn plan_from(text: &str, settings: &Settings, ahead: bool) -> Plan {
     let mut r = Reading::new(settings, text.len());
     let starts = match lexer_for(text, settings, &mut r.diags) {
+        Some(lexer) if ahead => read_ahead(&mut r, lexer),
         Some(mut lexer) => {
             r.run(&mut lexer, usize::MAX, |_, _, _, _| true);
             lexer.take_line_starts()
@@ -76,6 +93,34 @@ pub fn plan(text: &str, settings: &Settings) -> Plan {
         None => Vec::new(),
     };
     finish(text, settings, r.outputs(), starts)
+}
+
+/// Whether the machine runs two threads at once (never in wasm, which runs one).
+fn two_cores() -> bool {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        std::thread::available_parallelism().is_ok_and(|n| n.get() > 1)
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        false
+    }
+}
+
+/// Reads the whole program with its blocks lexed ahead on a second thread;
+/// the line starts recorded.
+#[cfg(not(target_arch = "wasm32"))]
+fn read_ahead(r: &mut Reading, lexer: Lexer) -> Vec<u32> {
+    let ((), mut lexer) = crate::lexer::ahead::with(lexer, |blocks| {
+        r.run(blocks, usize::MAX, |_, _, _, _| true);
+    });
+    lexer.take_line_starts()
+}
+
+#[cfg(target_arch = "wasm32")]
+fn read_ahead(r: &mut Reading, mut lexer: Lexer) -> Vec<u32> {
+    r.run(&mut lexer, usize::MAX, |_, _, _, _| true);
+    lexer.take_line_starts()
 }
 
 /// A program being read: the interpreter, the plan being assembled and
@@ -334,9 +379,9 @@ impl Reading {
     /// read; `due` every `every`-th block), then closes what is still open. A checkpoint that answers `false`
     /// stops the reading there, nothing closed (the caller keeps the rest
     /// of an earlier reading); `run` then answers `false`.
-    pub fn run(
+    pub fn run<'t>(
         &mut self,
-        lexer: &mut Lexer,
+        lexer: &mut impl Blocks<'t>,
         every: usize,
         mut checkpoint: impl FnMut(usize, u32, bool, &mut Reading) -> bool,
     ) -> bool {

@@ -24,7 +24,9 @@
 //!   in subprograms, counters in variables) cuts the same passes and makes
 //!   the same motions as the program written out by the generator: each
 //!   call replaced by its body `n` times, each counter by its value; with
-//!   each subprogram called once, no block counts against `limits.blocks`.
+//!   each subprogram called once, no block counts against `limits.blocks`;
+//! - any such program, short or long, whole or broken, read with its blocks
+//!   lexed ahead on a second thread plans exactly as read on one thread.
 
 mod common;
 #[path = "common/props.rs"]
@@ -369,6 +371,41 @@ proptest! {
         spoil(&mut o, LCNC_FAULTS, &breaks);
         let text = o.text();
         check(&text, &s, &screwcut::plan(&text, &s));
+    }
+}
+
+/// The plan of `text` read with its blocks lexed ahead on a second thread
+/// (what `plan` does natively from 64 KiB) is the plan read on one thread.
+fn ahead_matches(text: &str, s: &Settings) -> Result<(), TestCaseError> {
+    prop_assume!(text.len() < 64 << 10, "plan reads it on one thread");
+    prop_assert_eq!(screwcut::plan::plan_lexed_ahead(text, s), screwcut::plan(text, s), "{}", text);
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Fanuc-form programs, whole or broken, long and short, any limits:
+    /// the jumps of calls and loops over the lines lexed ahead.
+    #[test]
+    fn fanuc_lexed_ahead_plans_the_same(
+        p in prop_oneof![prog(0..4), prog(250..600)], breaks in vec((0.0f64..1.0, 0u8..48), 0..4),
+        s in prop_oneof![limits(Dialect::Fanuc0i), limits(Dialect::Gsk980tdc), limits(Dialect::Renhe)],
+    ) {
+        let mut o = write(&p, s.dialect());
+        spoil(&mut o, FANUC_FAULTS, &breaks);
+        ahead_matches(&o.text(), &s)?;
+    }
+
+    /// The same for LinuxCNC programs with o-words.
+    #[test]
+    fn linuxcnc_lexed_ahead_plans_the_same(
+        p in prop_oneof![prog(0..4), prog(250..600)], breaks in vec((0.0f64..1.0, 0u8..32), 0..4),
+        s in limits(Dialect::LinuxCnc),
+    ) {
+        let mut o = write(&p, Dialect::LinuxCnc);
+        spoil(&mut o, LCNC_FAULTS, &breaks);
+        ahead_matches(&o.text(), &s)?;
     }
 }
 

@@ -4,9 +4,13 @@
 //! diagnostic positioned at the offending characters, and the block that has
 //! it is marked so the interpreter skips it.
 
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) mod ahead;
+mod blocks;
 mod number;
 mod source;
 
+pub(crate) use blocks::Blocks;
 use number::{NumAcc, NumError};
 use source::{Ascii, Ch, OTHER, Src, fold};
 
@@ -38,6 +42,7 @@ impl Default for LexLimits {
 }
 
 /// Reads program text block by block.
+#[derive(Clone)]
 pub struct Lexer<'a> {
     text: &'a str,
     pos: usize,
@@ -108,21 +113,27 @@ impl<'a> Lexer<'a> {
         let start = self.pos;
         let bytes = text.as_bytes();
         let rel = memchr::memchr2(b'\n', b'\r', &bytes[start..]);
-        let in_order = start == self.frontier;
         let end = rel.map_or(bytes.len(), |r| start + r);
-        self.pos = match rel {
+        let next = match rel {
             None => bytes.len() + 1,
             Some(_) if bytes[end] == b'\r' && bytes.get(end + 1) == Some(&b'\n') => end + 2,
             Some(_) => end + 1,
         };
-        if in_order && self.starts.len() < u32::MAX as usize {
-            self.starts.push(start as u32);
-            self.frontier = self.pos;
-        }
-        self.line += 1;
+        self.passed(start, next);
         block.reset(self.line, Span::new(start, end));
         self.lex_line(&text[start..end], start, block, diags);
         true
+    }
+
+    /// The line at `start` is read (by this lexer or ahead of it) and the
+    /// next begins at `next`: where the lexer is, and the line starts it records.
+    pub(crate) fn passed(&mut self, start: usize, next: usize) {
+        self.pos = next;
+        if start == self.frontier && self.starts.len() < u32::MAX as usize {
+            self.starts.push(start as u32);
+            self.frontier = next;
+        }
+        self.line += 1;
     }
 
     fn lex_line(&mut self, line: &str, base: usize, block: &mut Block, diags: &mut Diagnostics) {
