@@ -162,6 +162,11 @@ impl Diagnostics {
         self.first_dropped
     }
 
+    /// Moves every diagnostic kept so far to the end of `out` (this collector keeps its room).
+    pub fn move_into(&mut self, out: &mut Vec<Item>) {
+        out.append(&mut self.items);
+    }
+
     /// Takes the diagnostics from the `len`-th on out of the collector (none were dropped).
     pub fn split_off(&mut self, len: usize) -> Vec<Item> {
         self.items.split_off(len.min(self.items.len()))

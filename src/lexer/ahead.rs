@@ -94,7 +94,7 @@ fn lex_ahead(lexer: &mut Lexer, full: &SyncSender<Chunk>, empty: &Receiver<Chunk
             }
             line.next = lexer.offset();
             line.from = chunk.diags.len();
-            chunk.diags.extend(diags.split_off(0));
+            diags.move_into(&mut chunk.diags);
             line.to = chunk.diags.len();
             chunk.filled += 1;
         }

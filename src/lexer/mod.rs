@@ -287,7 +287,10 @@ impl<'c, S: Src> LineLexer<'c, S> {
                 }
                 b'a'..=b'z' | b'A'..=b'Z' => {
                     let letter = c.to_ascii_uppercase();
-                    if self.macro_start(letter, seen_code) {
+                    // A letter followed at once by a digit is a word (`X45.1`),
+                    // never macro syntax, unless it is a LinuxCNC o-word (`o100`).
+                    let word = self.src.b(self.i + 1).is_ascii_digit() && (letter != b'O' || seen_code);
+                    if !word && self.macro_start(letter, seen_code) {
                         block.macro_line();
                         return;
                     }
