@@ -65,7 +65,11 @@ pub(crate) fn with<'a, T>(lexer: Lexer<'a>, read: impl FnOnce(&mut Ahead<'a>) ->
     let (empty, empty_rx) = channel();
     let mut producer = lexer.clone();
     std::thread::scope(|scope| {
-        scope.spawn(move || lex_ahead(&mut producer, &full_tx, &empty_rx));
+        // Where no thread can be started, the sender goes with the closure
+        // and the reading lexes every line itself.
+        let _ = std::thread::Builder::new()
+            .name("screwcut-lexer".into())
+            .spawn_scoped(scope, move || lex_ahead(&mut producer, &full_tx, &empty_rx));
         let mut ahead = Ahead { lexer, full, empty, chunk: Chunk::default(), k: 0 };
         let out = read(&mut ahead);
         // Dropping the receiver stops the lexer ahead at its next chunk.
@@ -232,6 +236,25 @@ mod tests {
         lcnc.push_str("o<pass> call\n#1=[#1+1]\no1 endwhile\nM2\n");
         let p = both(&lcnc, &Settings::new(Dialect::LinuxCnc));
         assert_eq!(p.threads.iter().map(|t| t.passes.len()).sum::<usize>(), 2);
+    }
+
+    /// Where no thread could be started, the reading lexes every line itself.
+    #[test]
+    fn without_the_thread_the_reading_lexes_every_line() {
+        use crate::plan::{Reading, finish, lexer_for};
+        use std::sync::mpsc::{channel, sync_channel};
+        let text = "G00 X50 Z5\nX47.1\nG32 Z-20 F2\nG00 X55 @\nZ5\n".repeat(200);
+        let s = Settings::new(Dialect::Gsk980tdc);
+        let mut r = Reading::new(&s, text.len());
+        let lexer = lexer_for(&text, &s, &mut r.diags).unwrap();
+        let (gone, full) = sync_channel(1);
+        drop(gone);
+        let (empty, _kept) = channel();
+        let mut ahead = super::Ahead { lexer, full, empty, chunk: super::Chunk::default(), k: 0 };
+        r.run(&mut ahead, usize::MAX, |_, _, _, _| true);
+        let p = finish(&text, &s, r.outputs(), ahead.lexer.take_line_starts());
+        assert_eq!(count(&p, "unexpected-character"), 200);
+        assert_eq!(p, plan(&text, &s));
     }
 
     /// Line ends of every kind, a byte-order mark, a last line without its
