@@ -109,6 +109,9 @@ pub fn find_back<T>(
     // The lines from `stop` to `first`, read from the last back (one slice, split at line ends).
     let (from, to) = (spans(stop).start as usize, spans(first).end as usize);
     let region = text.get(from..to.max(from)).unwrap_or("");
+    // A comment needs `(` or `;` or their full-width forms (which begin with
+    // byte EF): where none is, no line is read (most threads of a program).
+    memchr::memchr3(b'(', b';', 0xEF, region.as_bytes())?;
     for (back, line_text) in split_lines(region).into_iter().rev().enumerate() {
         let line = first.saturating_sub(back as u32);
         if may_comment(line_text) {
@@ -184,6 +187,25 @@ mod tests {
         assert_eq!(comments("（Ｍ４８×２－６ｇ）"), vec!["M48×2-6g"]);
         assert!(comments("G00 X10").is_empty());
         assert_eq!(comments("(open").len(), 0);
+    }
+
+    /// Comments of every form are found from the line of a thread back, the
+    /// nearest first, and not past the start of its program.
+    #[test]
+    fn comments_found_back() {
+        let text = "O1\nG00 X58 ; M30x2\nG00 X60\nG32 Z-20 F2\nO2\n（Ｍ４８×２）\nG00 X60\n(M20x1.5)\nG32 Z-9 F1.5\n";
+        let index = crate::span::LineIndex::new(text);
+        let spans = |line: u32| {
+            let start = index.line_start(line);
+            Span::new(start, text[start..].find('\n').map_or(text.len(), |e| start + e))
+        };
+        let found = |stop, first| find_back(text, &spans, stop, first, |line, c| Some((line, c.trim().to_string())));
+        assert_eq!(found(1, 4), Some((2, "M30x2".to_string())));
+        assert_eq!(found(1, 9), Some((8, "M20x1.5".to_string())));
+        assert_eq!(found(1, 7), Some((6, "M48×2".to_string())));
+        assert_eq!(found(6, 7), Some((6, "M48×2".to_string())));
+        assert_eq!(found(3, 4), None);
+        assert_eq!(found(5, 5), None);
     }
 
     #[test]
