@@ -79,12 +79,15 @@ pub fn plan_lexed_ahead(text: &str, settings: &Settings) -> Plan {
 
 /// The size from which a native plan lexes ahead on a second core (when
 /// the machine has one): below it a thread costs more than it saves.
-pub(crate) const AHEAD_FROM: usize = 64 << 10;
+pub const AHEAD_FROM: usize = 64 << 10;
 
 /// Plans `text`, lexing ahead on a second thread (natively) when `ahead`.
 fn plan_from(text: &str, settings: &Settings, ahead: bool) -> Plan {
     let mut r = Reading::new(settings, text.len());
+    #[cfg(target_arch = "wasm32")]
+    let _ = ahead; // one thread in wasm
     let starts = match lexer_for(text, settings, &mut r.diags) {
+        #[cfg(not(target_arch = "wasm32"))]
         Some(lexer) if ahead => read_ahead(&mut r, lexer),
         Some(mut lexer) => {
             r.run(&mut lexer, usize::MAX, |_, _, _, _| true);
@@ -95,11 +98,13 @@ fn plan_from(text: &str, settings: &Settings, ahead: bool) -> Plan {
     finish(text, settings, r.outputs(), starts)
 }
 
-/// Whether the machine runs two threads at once (never in wasm, which runs one).
+/// Whether the machine runs two threads at once (never in wasm, which runs
+/// one); asked of the system once (it reads the process's CPU limits).
 fn two_cores() -> bool {
     #[cfg(not(target_arch = "wasm32"))]
     {
-        std::thread::available_parallelism().is_ok_and(|n| n.get() > 1)
+        static TWO: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        *TWO.get_or_init(|| std::thread::available_parallelism().is_ok_and(|n| n.get() > 1))
     }
     #[cfg(target_arch = "wasm32")]
     {
@@ -114,12 +119,6 @@ fn read_ahead(r: &mut Reading, lexer: Lexer) -> Vec<u32> {
     let ((), mut lexer) = crate::lexer::ahead::with(lexer, |blocks| {
         r.run(blocks, usize::MAX, |_, _, _, _| true);
     });
-    lexer.take_line_starts()
-}
-
-#[cfg(target_arch = "wasm32")]
-fn read_ahead(r: &mut Reading, mut lexer: Lexer) -> Vec<u32> {
-    r.run(&mut lexer, usize::MAX, |_, _, _, _| true);
     lexer.take_line_starts()
 }
 

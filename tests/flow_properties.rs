@@ -375,9 +375,9 @@ proptest! {
 }
 
 /// The plan of `text` read with its blocks lexed ahead on a second thread
-/// (what `plan` does natively from 64 KiB) is the plan read on one thread.
+/// (what `plan` does natively from `AHEAD_FROM` bytes) is the plan read on one thread.
 fn ahead_matches(text: &str, s: &Settings) -> Result<(), TestCaseError> {
-    prop_assume!(text.len() < 64 << 10, "plan reads it on one thread");
+    prop_assume!(text.len() < screwcut::plan::AHEAD_FROM, "plan reads it on one thread");
     prop_assert_eq!(screwcut::plan::plan_lexed_ahead(text, s), screwcut::plan(text, s), "{}", text);
     Ok(())
 }

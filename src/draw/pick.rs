@@ -130,12 +130,12 @@ fn segment_distance(p: Pt, a: Pt, b: Pt) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagram::scene::{Style, ViewKind};
 
     /// The items drawn from source `line`, read item by item (what the parts' ranges must give).
     fn items_of_line(scene: &Scene, line: u32) -> Vec<usize> {
         scene.items.iter().enumerate().filter(|(_, it)| it.lines.contains(&line)).map(|(i, _)| i).collect()
     }
-    use crate::diagram::scene::{Style, ViewKind};
 
     #[test]
     fn the_nearest_pass_item_is_picked_before_a_nearer_other() {
