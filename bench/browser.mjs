@@ -45,10 +45,20 @@ const alone = {
   js: execFileSync(path.join(www, 'node_modules', '.bin', 'esbuild'), [path.join(here, 'editor-alone.js'), '--bundle', '--format=esm', '--target=es2022', '--minify'], { cwd: www, maxBuffer: 1 << 26 }),
   texts: new Map(),
 };
-/** A page with one embedded diagram, as the element's README shows it. */
-const embedPage =
+/** The embedded diagram's program. */
+const embedProgram = 'G00 X58 Z70\nG92 X47.1 Z13 F2\nX46.5\nX45.9\nX45.5\nX45.4\nG00 X100 Z100\nM30\n';
+/** A page with one embedded diagram, as the element's README shows it; with `inside`, the static drawing in it. */
+const embedPageWith = (inside) =>
   '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>one diagram</title><script type="module" src="screwcut-preview.js"></script></head><body>' +
-  '<screwcut-preview dialect="gsk980tdc" view="side">G00 X58 Z70\nG92 X47.1 Z13 F2\nX46.5\nX45.9\nX45.5\nX45.4\nG00 X100 Z100\nM30\n</screwcut-preview></body></html>';
+  `<screwcut-preview dialect="gsk980tdc" view="side">${embedProgram}${inside}</screwcut-preview></body></html>`;
+/** The static side section of the element's canvas (its 320 px less the caption), as mdbook-screwcut writes it: the command line's `svg`. */
+const staticSide = execFileSync('cargo', ['run', '--release', '--quiet', '--bin', 'screwcut', '--', 'svg', '-', '--width', '800', '--height', '303', '--stretch'], {
+  cwd: path.join(here, '..'),
+  input: embedProgram,
+  maxBuffer: 1 << 24,
+})
+  .toString()
+  .replace(/^<\?xml[^>]*>\n/, '');
 const encodings = [['br', '.br'], ['gzip', '.gz']];
 /** The site's files served, with the bytes sent (a first load reads it). */
 const served = [];
@@ -57,8 +67,16 @@ const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'applic
 const server = http.createServer((req, res) => {
   const url = decodeURIComponent(req.url.split('?')[0]);
   let file;
-  const page = { '/blank.html': '<!doctype html><title>screwcut bench</title>', '/editor-alone.html': alone.html, '/embed-bench.html': embedPage }[url];
+  const page = { '/blank.html': '<!doctype html><title>screwcut bench</title>', '/editor-alone.html': alone.html, '/embed-bench.html': embedPageWith(''), '/embed-static-bench.html': embedPageWith(staticSide) }[url];
   if (page) {
+    // An embed page is sent compressed, as a host would send it, and counted in its first load
+    // (the static drawing inside is part of what the page costs).
+    if (url.startsWith('/embed') && String(req.headers['accept-encoding'] || '').includes('br')) {
+      const packed = zlib.brotliCompressSync(page, { params: { [zlib.constants.BROTLI_PARAM_QUALITY]: 11 } });
+      res.writeHead(200, { 'content-type': 'text/html', 'content-encoding': 'br' });
+      served.push({ name: url.slice(1), bytes: packed.length, encoding: 'br' });
+      return res.end(packed);
+    }
     res.writeHead(200, { 'content-type': 'text/html' });
     return res.end(page);
   }
@@ -254,7 +272,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
  * accepted it; headers not counted): the page at `where`, once `ready`
  * holds, with a cold cache.
  */
-async function firstLoad(where, ready, tag, what) {
+async function firstLoad(where, ready, tag, what, then = null) {
   const fresh = fs.mkdtempSync(path.join(os.tmpdir(), 'screwcut-load-'));
   const cold = await chromium.launchPersistentContext(fresh, { executablePath: '/usr/bin/chromium', headless: true, args: LAUNCH, viewport: { width: 1400, height: 900 } });
   try {
@@ -268,6 +286,7 @@ async function firstLoad(where, ready, tag, what) {
     const by = files.sort((a, b) => b.bytes - a.bytes).map((f) => `${f.name} ${(f.bytes / 1024).toFixed(1)} (${f.encoding})`);
     console.log(`  ${what}, first load transferred: ${(sum / 1024).toFixed(1)} KiB in all — KiB by file (encoding): ${by.join(', ')}`);
     fig(`${tag}_kib`, sum / 1024);
+    if (then) await then(page);
   } finally {
     await cold.close();
     fs.rmSync(fresh, { recursive: true, force: true });
@@ -448,6 +467,22 @@ const steps = {
   load: async () => {
     await firstLoad('', () => document.body.dataset.ready === 'true', 'load_app', 'the app with its example');
     await firstLoad('embed-bench.html', () => document.querySelector('screwcut-preview')?.result?.threads?.length > 0, 'load_embed', 'a page with one embedded diagram');
+    // The same with its static drawing: it waits for the reader; then the pointer comes.
+    const shown = () => {
+      const el = document.querySelector('screwcut-preview');
+      return el?.dataset.state === 'idle' && el.querySelector('svg')?.getBoundingClientRect().height > 100;
+    };
+    await firstLoad('embed-static-bench.html', shown, 'load_embed_static', 'a page with one embedded diagram and its static drawing', async (page) => {
+      served.length = 0;
+      const t0 = Date.now();
+      await page.hover('screwcut-preview');
+      await page.waitForFunction(() => document.querySelector('screwcut-preview')?.result?.threads?.length > 0, null, { timeout: 120_000 });
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      const ms = Date.now() - t0;
+      const kib = served.reduce((s, f) => s + f.bytes, 0) / 1024;
+      console.log(`  … pointed at: the live drawing on screen after ${ms} ms, ${kib.toFixed(1)} KiB more (${served.map((f) => f.name).join(', ')})`);
+      fig('embed_pointed_ms', ms);
+    });
   },
 };
 try {

@@ -109,8 +109,9 @@ fn drawing(plan: &Plan, view: &str, o: &Options, width: f64) -> Option<String> {
     Some(body.join("\n"))
 }
 
-/// The element's opening tag with the block's options as attributes.
-fn open_tag(o: &Options) -> String {
+/// The element's opening tag with the block's options as attributes; `live`
+/// also when the static drawings cannot show the plan's warnings and alarms.
+fn open_tag(o: &Options, live: bool) -> String {
     let mut tag = format!(
         "<screwcut-preview dialect=\"{}\" view=\"{}\" height=\"{}\"",
         o.dialect.name(),
@@ -132,6 +133,9 @@ fn open_tag(o: &Options) -> String {
     if o.hide_code {
         tag += " hide-code";
     }
+    if o.live || live {
+        tag += " live";
+    }
     if let Some(app) = &o.app {
         tag += &format!(" app=\"{}\"", escape(app));
     }
@@ -142,8 +146,12 @@ fn open_tag(o: &Options) -> String {
 pub fn render(block: &str, o: &Options, width: f64) -> Rendered {
     let (program, leading) = dedent(block);
     let plan = screwcut::plan(&program, &o.planner_settings());
-    // The tag alone on its line: so Markdown takes what follows as HTML.
-    let mut html = open_tag(o) + "\n";
+    let diagnostics: Vec<Diagnostic> =
+        plan.diagnostics.iter().filter(|d| d.severity != Severity::Info).cloned().collect();
+    // The tag alone on its line: so Markdown takes what follows as HTML. An
+    // element that would list warnings or alarms under its drawing plans
+    // when scrolled near (the static drawing does not list them).
+    let mut html = open_tag(o, !diagnostics.is_empty()) + "\n";
     // The drawings first, side by side as the element lays them out (no
     // text between them: without script the element's text is preformatted).
     let svgs: Vec<String> = widths(&o.views, width).into_iter().filter_map(|(v, w)| drawing(&plan, v, o, w)).collect();
@@ -151,7 +159,6 @@ pub fn render(block: &str, o: &Options, width: f64) -> Rendered {
     html.push('\n');
     html += &program_text(&program);
     html += "</screwcut-preview>\n";
-    let diagnostics = plan.diagnostics.into_iter().filter(|d| d.severity != Severity::Info).collect();
     Rendered { html, diagnostics, leading }
 }
 
@@ -207,6 +214,18 @@ mod tests {
         let r = render("\nG00 X58 Z70\nX47.1\nG32 Z13\n", &o, 748.0);
         let alarm = r.diagnostics.iter().find(|d| d.severity == Severity::Error).expect("an alarm");
         assert_eq!((alarm.line, r.leading), (3, 1));
+        // The alarm is listed under the live drawing only: the element plans when scrolled near.
+        assert!(r.html.starts_with("<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"320\" live>\n<svg "));
+    }
+
+    #[test]
+    fn a_clean_program_waits_for_the_reader_unless_live_is_asked() {
+        let quiet = render(TWO_PASSES, &parse("view=side,tooth").unwrap(), 748.0);
+        assert!(
+            quiet.html.starts_with("<screwcut-preview dialect=\"gsk980tdc\" view=\"side tooth\" height=\"320\">\n")
+        );
+        let asked = render(TWO_PASSES, &parse("view=side live").unwrap(), 748.0);
+        assert!(asked.html.starts_with("<screwcut-preview dialect=\"gsk980tdc\" view=\"side\" height=\"320\" live>\n"));
     }
 
     #[test]

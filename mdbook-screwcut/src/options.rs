@@ -11,8 +11,8 @@ pub const VIEWS: [&str; 4] = ["side", "tooth", "starts", "table"];
 
 /// The options a block may carry (the element's attributes, less `src`: the
 /// program is the block).
-pub const KNOWN: [&str; 9] =
-    ["dialect", "view", "height", "thread", "settings", "lang", "editable", "hide-code", "app"];
+pub const KNOWN: [&str; 10] =
+    ["dialect", "view", "height", "thread", "settings", "lang", "editable", "hide-code", "live", "app"];
 
 /// A block's options, checked.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,6 +33,9 @@ pub struct Options {
     pub editable: bool,
     /// The element's `hide-code` flag.
     pub hide_code: bool,
+    /// The element's `live` flag: plan when scrolled near, not only when the
+    /// reader points at the static drawing.
+    pub live: bool,
     /// The app the "Open in editor" link opens (http(s) or relative).
     pub app: Option<String>,
 }
@@ -98,6 +101,7 @@ pub fn parse(info: &str) -> Result<Options, String> {
         lang: Lang::En,
         editable: false,
         hide_code: false,
+        live: false,
         app: None,
     };
     let mut seen: Vec<String> = Vec::new();
@@ -109,7 +113,7 @@ pub fn parse(info: &str) -> Result<Options, String> {
             return Err(format!("option '{key}' is given twice"));
         }
         seen.push(key.clone());
-        let flag = matches!(key.as_str(), "editable" | "hide-code");
+        let flag = matches!(key.as_str(), "editable" | "hide-code" | "live");
         let value = match (flag, value) {
             (true, None) => String::new(),
             (true, Some(_)) => return Err(format!("'{key}' is a flag: write it without a value")),
@@ -157,6 +161,7 @@ fn apply(o: &mut Options, key: &str, value: &str) -> Result<(), String> {
         }
         "editable" => o.editable = true,
         "hide-code" => o.hide_code = true,
+        "live" => o.live = true,
         "app" => o.app = Some(app(value)?),
         "src" => return Err("'src' is not an option here: the program is the block's content".into()),
         _ => return Err(format!("unknown option '{key}' (known: {})", KNOWN.join(", "))),

@@ -272,14 +272,23 @@ try {
   }
 
   // ---- a static drawing inside an element (screwcut svg's output) shows until the live one ----
+  // It shows every view of the element (one side section): the element waits for the reader.
   await page.evaluate(() => {
-    const el = document.createElement('screwcut-preview');
-    el.id = 'with-fallback';
-    el.setAttribute('view', 'side');
-    el.innerHTML =
-      'G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n' +
+    const svg =
       '<svg xmlns="http://www.w3.org/2000/svg" width="300" height="120" viewBox="0 0 300 120"><title>screwcut: side section</title><rect width="300" height="120" fill="#eee"/><text x="10" y="60">static</text></svg>';
-    document.body.append(el);
+    const program = 'G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n';
+    for (const [id, attrs] of [
+      ['with-fallback', {}],
+      ['with-fallback-live', { live: '' }],
+      ['with-fallback-table', { view: 'side table' }],
+    ]) {
+      const el = document.createElement('screwcut-preview');
+      el.id = id;
+      el.setAttribute('view', 'side');
+      for (const [k, v] of Object.entries(attrs)) el.setAttribute(k, v);
+      el.innerHTML = program + svg;
+      document.body.append(el);
+    }
   });
   const staticBefore = await page.evaluate(() => {
     const el = document.getElementById('with-fallback');
@@ -287,12 +296,45 @@ try {
   });
   check('before it starts, the static drawing placed inside shows', staticBefore.state === 'idle' && staticBefore.h > 100, JSON.stringify(staticBefore));
   check('… and is not read as G-code', staticBefore.program === 'G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\nZ70\nX46.5\nG32 Z13\nG00 X58\n', JSON.stringify(staticBefore.program));
+  const staticState = (id) =>
+    page.evaluate((id) => {
+      const el = document.getElementById(id);
+      return { state: el.dataset.state, svgH: el.querySelector('svg').getBoundingClientRect().height, sum: el.shadowRoot.querySelector('.sum').textContent };
+    }, id);
+  for (const id of ['with-fallback-live', 'with-fallback-table']) {
+    await page.locator(`#${id}`).scrollIntoViewIfNeeded();
+    await waitReady(id).catch(() => {});
+    check(`${id}: an element with \`live\`, or a view the static drawing lacks (the table), plans once scrolled near`, (await staticState(id)).state === 'ready', JSON.stringify(await staticState(id)));
+  }
   await page.locator('#with-fallback').scrollIntoViewIfNeeded();
+  await page.mouse.move(2, 2);
+  await page.waitForTimeout(600);
+  await frames();
+  const waiting = await staticState('with-fallback');
+  check(
+    'scrolled to, an element whose static drawing shows all its views waits for the reader, and says so',
+    waiting.state === 'idle' && waiting.svgH > 100 && waiting.sum === 'Static drawing · point at it for the live one',
+    JSON.stringify(waiting),
+  );
+  await page.locator('#with-fallback').screenshot({ path: path.join(shots, 'docs-static-waiting.png') });
+  await page.locator('#with-fallback').hover();
   await waitReady('with-fallback').catch(() => {});
   await frames();
   const staticAfter = await inspect('with-fallback');
   const hidden = await page.evaluate(() => document.getElementById('with-fallback').querySelector('svg').getBoundingClientRect().height);
-  check('once drawn, the live drawing takes its place', staticAfter.state === 'ready' && staticAfter.canvases[0].n > 400 && hidden === 0, JSON.stringify({ state: staticAfter.state, px: staticAfter.canvases[0].n, hidden }));
+  check('pointed at, it plans: the live drawing takes its place', staticAfter.state === 'ready' && staticAfter.canvases[0].n > 400 && hidden === 0, JSON.stringify({ state: staticAfter.state, px: staticAfter.canvases[0].n, hidden }));
+  await page.evaluate(() => {
+    const el = document.createElement('screwcut-preview');
+    el.id = 'with-fallback-focus';
+    el.innerHTML = 'G00 X58 Z70\nX47.1\nG32 Z13 F2\nG00 X58\n<svg xmlns="http://www.w3.org/2000/svg" width="300" height="120" viewBox="0 0 300 120"><rect width="300" height="120" fill="#eee"/></svg>';
+    document.body.append(el);
+  });
+  await page.locator('#with-fallback-focus').scrollIntoViewIfNeeded();
+  await page.waitForTimeout(300);
+  const beforeFocus = (await staticState('with-fallback-focus')).state;
+  await page.locator('#with-fallback-focus').evaluate((el) => el.shadowRoot.querySelector('a.open').focus());
+  await waitReady('with-fallback-focus').catch(() => {});
+  check('… and so does one reached with the keyboard (focus on its link)', beforeFocus === 'idle' && (await staticState('with-fallback-focus')).state === 'ready', beforeFocus);
 
   // ---- the element's documentation exists once: the page links to its README ----
   const readme = await page.evaluate(() => document.getElementById('element-readme').href);

@@ -25,6 +25,8 @@ export interface ScrewcutPreviewAttributes {
   editable?: boolean | '';
   /** Without `editable`: leave the program's listing out (a flag). */
   'hide-code'?: boolean | '';
+  /** With static `<svg>` drawings inside: plan when scrolled near, not only when the reader points at it or focuses it (a flag). */
+  live?: boolean | '';
   /** The app the "Open in editor" link opens (http(s) or relative). */
   app?: string;
   /** The labels' language: `en` (default) or `zh`. */
@@ -149,7 +151,7 @@ export declare class ScrewcutPreview extends HTMLElement {
   readonly result: ScrewcutResult | null;
   /** What the element could not use (also listed under the drawing). */
   readonly problems: ScrewcutProblem[];
-  /** Plans now, without waiting to be scrolled into view. */
+  /** Plans now, without waiting to be scrolled into view or pointed at. */
   start(): void;
   addEventListener<K extends keyof ScrewcutPreviewEventMap>(
     type: K,

@@ -26,6 +26,7 @@ fn usage() -> ExitCode {
          dist               write the deployable static site to dist/\n  \
          book [--port N]    build the example book (docs/book) with mdbook-screwcut and serve it\n  \
          test               run every test: fmt, clippy, native, wasm (Node and Chromium), browser\n  \
+         test browser [F…]  only the browser tests (tests/browser/F, or all), on the site built as for test\n  \
          bench              print the performance figures: native throughput and memory, gcode-toolpath\n                     side by side, edit-to-frame and wasm plan time in Chromium, wasm size\n"
     );
     ExitCode::from(2)
@@ -58,8 +59,13 @@ pub type Result<T = ()> = std::result::Result<T, String>;
 /// Every test, in the order that fails fastest: formatting and lints (Rust
 /// and JavaScript), the native tests, the wasm tests (Node and headless Chromium), the browser test.
 fn test(args: &[String]) -> Result {
+    // `cargo xtask test browser [FILE…]`: only the browser tests (of
+    // tests/browser/, all or those named), on a site built as for the whole run.
+    if args.first().map(String::as_str) == Some("browser") {
+        return web::browser_tests(&args[1..]);
+    }
     if let Some(a) = args.first() {
-        return Err(format!("test: unknown option '{a}' (usage: cargo xtask test)"));
+        return Err(format!("test: unknown option '{a}' (usage: cargo xtask test [browser [FILE…]])"));
     }
     let started = std::time::Instant::now();
     let step = |name: &str| eprintln!("\n== {name} ({:.0} s)", started.elapsed().as_secs_f64());
@@ -80,7 +86,7 @@ fn test(args: &[String]) -> Result {
     step("wasm tests in Node and Chromium");
     web::wasm_tests()?;
     step("browser test");
-    web::browser_tests()?;
+    web::browser_tests(&[])?;
     step("all tests passed");
     Ok(())
 }

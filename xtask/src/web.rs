@@ -253,7 +253,25 @@ fn passed_count(line: &str) -> Option<u32> {
 /// (`book.test.mjs`), and the element installed from its npm package
 /// (`package.test.mjs`);
 /// fails when any fails.
-pub fn browser_tests() -> Result {
+pub fn browser_tests(only: &[String]) -> Result {
+    let all = [
+        "test.mjs",
+        "engine.test.mjs",
+        "docs.test.mjs",
+        "safety.test.mjs",
+        "access.test.mjs",
+        "labels.test.mjs",
+        "tools.test.mjs",
+        "calls.test.mjs",
+        "newuser.test.mjs",
+        "compare.test.mjs",
+        "book.test.mjs",
+        "package.test.mjs",
+    ];
+    if let Some(unknown) = only.iter().find(|o| !all.contains(&o.as_str())) {
+        return Err(format!("test browser: no test file '{unknown}' (known: {})", all.join(", ")));
+    }
+    let chosen: Vec<&str> = all.into_iter().filter(|t| only.is_empty() || only.iter().any(|o| o == t)).collect();
     ensure_chromium()?;
     let out = target_dir()?.join("site-test");
     if let WasmOpt::Skipped(why) = build_site(true, &out)? {
@@ -275,22 +293,18 @@ pub fn browser_tests() -> Result {
     // The app's SVG export is compared with the command line's.
     run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
     let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
-    let app = run("node", &["test.mjs", &url, &cli], Some(&dir));
-    let rest = [
-        "engine.test.mjs",
-        "docs.test.mjs",
-        "safety.test.mjs",
-        "access.test.mjs",
-        "labels.test.mjs",
-        "tools.test.mjs",
-        "calls.test.mjs",
-        "newuser.test.mjs",
-        "compare.test.mjs",
-        "book.test.mjs",
-        "package.test.mjs",
-    ]
-    .map(|t| run("node", &[t, &url], Some(&dir)));
-    rest.into_iter().fold(app, |all, r| all.and(r))
+    // Each file runs even when one before it failed; the first failure is returned.
+    let runs: Vec<Result> = chosen
+        .into_iter()
+        .map(|t| {
+            if t == "test.mjs" {
+                run("node", &[t, &url, &cli], Some(&dir))
+            } else {
+                run("node", &[t, &url], Some(&dir))
+            }
+        })
+        .collect();
+    runs.into_iter().collect::<Result<Vec<()>>>().map(|_| ())
 }
 
 /// Builds the site into `out` (emptied first): the two wasm modules

@@ -11,7 +11,7 @@ import init, { dialects as dialectsOf, Session } from '../../pkg/screwcut.js';
  */
 export const HERE = new URL('./', import.meta.url);
 
-/** Most bytes a `src` program may have: 1 MiB (documented in docs/embed.md and the element's README). */
+/** Most bytes a `src` program may have: 1 MiB (documented in the element's README). */
 export const SRC_MAX_BYTES = 1024 * 1024;
 /** How long a `src` fetch may take: 15 s. */
 export const SRC_TIMEOUT_MS = 15_000;

@@ -20,7 +20,11 @@
 // refuses, an app URL that is not http(s)) is listed under the drawing and
 // in `problems`. Every element on a page shares one wasm
 // instance, loaded when the first element comes into view, and plans in a
-// session of its own; each element plans and draws when it is scrolled near. Properties: `program` (get/set),
+// session of its own; each element plans and draws when it is scrolled near.
+// An element whose static drawings (`<svg>` inside, as mdbook-screwcut
+// writes them) show each of its views waits for the reader instead: it
+// loads the planner when pointed at, touched or focused (`live` makes it
+// start when scrolled near all the same). Properties: `program` (get/set),
 // `result` (the planner's last answer), `start()`. Event `screwcut-plan`
 // after every plan, with counts in `detail`.
 
@@ -38,11 +42,14 @@ import { STYLE } from './style.js';
 /** Most diagnostics listed under an embedded drawing. */
 const MAX_LISTED = 6;
 
+/** What the reader does to an element waiting with its static drawings that makes it live. */
+const READER_EVENTS = ['pointerenter', 'focusin', 'touchstart'];
+
 /** Attributes that change the layout (the rest only re-plan). */
 const LAYOUT = new Set(['view', 'height', 'editable', 'hide-code', 'lang']);
 
 export class ScrewcutPreview extends HTMLElement {
-  static observedAttributes = ['dialect', 'view', 'height', 'editable', 'hide-code', 'src', 'app', 'settings', 'thread', 'lang'];
+  static observedAttributes = ['dialect', 'view', 'height', 'editable', 'hide-code', 'src', 'app', 'settings', 'thread', 'lang', 'live'];
 
   constructor() {
     super();
@@ -68,7 +75,7 @@ export class ScrewcutPreview extends HTMLElement {
     if (!this._built) this._build();
     if (this._state === 'idle') {
       this.dataset.state = 'idle';
-      startWhenVisible(this);
+      this._arm();
     }
   }
 
@@ -76,14 +83,55 @@ export class ScrewcutPreview extends HTMLElement {
     if (this._state === 'idle') forget(this);
   }
 
+  /**
+   * Whether the element waits for the reader before it loads the planner:
+   * its static drawings show every view it has (no pass table, one drawing
+   * per view), the program is its text, not being edited, and no `live`.
+   */
+  _waitsForReader() {
+    if (this._staticOld || this._text !== null || ['live', 'editable', 'src'].some((a) => this.hasAttribute(a))) return false;
+    const views = this._viewNames || parseViews(this.getAttribute('view'));
+    if (views.includes('table')) return false;
+    return this.querySelectorAll(':scope > svg').length >= views.length;
+  }
+
+  /**
+   * An idle element starts when scrolled near, or — when its static
+   * drawings show it all — at the reader's first pointer, touch or focus
+   * on it (the static drawing until then says so).
+   */
+  _arm() {
+    if (this._state !== 'idle') return;
+    if (!this._waitsForReader()) {
+      this._unlistenReader();
+      if (this.isConnected) startWhenVisible(this);
+      return;
+    }
+    forget(this);
+    if (this._sum) this._sum.textContent = this._t('static_hint');
+    if (this._wake) return;
+    this._wake = () => this.start();
+    for (const type of READER_EVENTS) this.addEventListener(type, this._wake, { passive: true });
+  }
+
+  _unlistenReader() {
+    if (!this._wake) return;
+    for (const type of READER_EVENTS) this.removeEventListener(type, this._wake);
+    this._wake = null;
+  }
+
   attributeChangedCallback(name, old, value) {
     if (!this._built || old === value) return;
-    if (name !== 'app' && name !== 'lang') this._edited();
-    if (LAYOUT.has(name)) {
+    if (!['app', 'lang', 'live'].includes(name)) this._edited();
+    if (name === 'live') {
+      this._arm();
+    } else if (LAYOUT.has(name)) {
       this._build();
       if (this._state === 'ready') this._plan();
+      else this._arm();
     } else if (name === 'src') {
       if (this._state !== 'idle') this._load();
+      else this._arm();
     } else if (name === 'app') {
       this._updateLink();
     } else if (name === 'thread') {
@@ -91,6 +139,8 @@ export class ScrewcutPreview extends HTMLElement {
       this._schedule();
     } else if (this._state === 'ready') {
       this._schedule();
+    } else {
+      this._arm();
     }
   }
 
@@ -124,6 +174,7 @@ export class ScrewcutPreview extends HTMLElement {
     if (this._editor && this._editor.value !== this._text) this._editor.value = this._text;
     this._renderListing();
     if (this._state === 'ready') this._schedule();
+    else this._arm();
   }
 
   /** The planner's last answer (see `update` in src/wasm.rs), or null. */
@@ -150,6 +201,7 @@ export class ScrewcutPreview extends HTMLElement {
   start() {
     if (this._state !== 'idle') return this._started;
     forget(this);
+    this._unlistenReader();
     this._started = this._load();
     return this._started;
   }
@@ -185,7 +237,7 @@ export class ScrewcutPreview extends HTMLElement {
       `<style>${STYLE}</style><div class="box${this._boxClasses()}" part="box" style="--h:${h}px">` +
       `<div class="fallback" part="fallback"><slot name="fallback"></slot></div><div class="views">${panes}</div>` +
       (editable ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>` : this.hasAttribute('hide-code') ? '' : `<pre class="code" part="code"></pre>`) +
-      `<div class="bar"><span class="sum">${esc(this._t('loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
+      `<div class="bar"><span class="sum">${esc(this._t(this._state === 'idle' && this._waitsForReader() ? 'static_hint' : 'loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
       `<a class="open" target="_blank" rel="noopener" part="open">${esc(this._t('open_in_editor'))} ↗</a></div>` +
       `<ul class="diags"${editable ? ' data-editable' : ''}></ul><div class="tip" hidden></div></div>`;
     const $ = (sel) => this.shadowRoot.querySelector(sel);
@@ -262,6 +314,7 @@ export class ScrewcutPreview extends HTMLElement {
 
   async _load() {
     this._setState('loading');
+    this._sum.textContent = this._t('loading');
     try {
       const src = this.getAttribute('src');
       let fetched = null;

@@ -177,6 +177,7 @@ const EN = {
   embed_summary: '{threads#thread|threads} · {passes#pass|passes} · {alarms#alarm|alarms} · {warnings#warning|warnings}',
   open_in_editor: 'Open in editor',
   loading: 'Loading…',
+  static_hint: 'Static drawing · point at it for the live one',
   more: '… {n} more',
   more_rows: '… {n} more: scroll or click to show them',
 };
@@ -354,6 +355,7 @@ const ZH = {
   embed_summary: '{threads} 条螺纹 · {passes} 次走刀 · {alarms} 报警 · {warnings} 警告',
   open_in_editor: '在编辑器中打开',
   loading: '加载中…',
+  static_hint: '静态图 · 指向它即载入实时图',
   more: '… 另有 {n} 条',
   more_rows: '… 另有 {n} 条：滚动或点击显示',
 };
