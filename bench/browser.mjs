@@ -47,18 +47,18 @@ const alone = {
 };
 /** The embedded diagram's program. */
 const embedProgram = 'G00 X58 Z70\nG92 X47.1 Z13 F2\nX46.5\nX45.9\nX45.5\nX45.4\nG00 X100 Z100\nM30\n';
-/** A page with one embedded diagram, as the element's README shows it; with `inside`, the static drawing in it. */
-const embedPageWith = (inside) =>
+/** A page with one embedded diagram: `element` in its body. */
+const embedPageWith = (element) =>
   '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>one diagram</title><script type="module" src="screwcut-preview.js"></script></head><body>' +
-  `<screwcut-preview dialect="gsk980tdc" view="side">${embedProgram}${inside}</screwcut-preview></body></html>`;
-/** The static side section of the element's canvas (its 320 px less the caption), as mdbook-screwcut writes it: the command line's `svg`. */
-const staticSide = execFileSync('cargo', ['run', '--release', '--quiet', '--bin', 'screwcut', '--', 'svg', '-', '--width', '800', '--height', '303', '--stretch'], {
+  `${element}</body></html>`;
+/** The element as the element's README shows it. */
+const liveElement = `<screwcut-preview dialect="gsk980tdc" view="side">${embedProgram}</screwcut-preview>`;
+/** The same element with its static drawing inside, as `screwcut embed` (and mdbook-screwcut) writes it. */
+const staticElement = execFileSync('cargo', ['run', '--release', '--quiet', '--bin', 'screwcut', '--', 'embed', '-', '--width', '800'], {
   cwd: path.join(here, '..'),
   input: embedProgram,
   maxBuffer: 1 << 24,
-})
-  .toString()
-  .replace(/^<\?xml[^>]*>\n/, '');
+}).toString();
 const encodings = [['br', '.br'], ['gzip', '.gz']];
 /** The site's files served, with the bytes sent (a first load reads it). */
 const served = [];
@@ -67,7 +67,7 @@ const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'applic
 const server = http.createServer((req, res) => {
   const url = decodeURIComponent(req.url.split('?')[0]);
   let file;
-  const page = { '/blank.html': '<!doctype html><title>screwcut bench</title>', '/editor-alone.html': alone.html, '/embed-bench.html': embedPageWith(''), '/embed-static-bench.html': embedPageWith(staticSide) }[url];
+  const page = { '/blank.html': '<!doctype html><title>screwcut bench</title>', '/editor-alone.html': alone.html, '/embed-bench.html': embedPageWith(liveElement), '/embed-static-bench.html': embedPageWith(staticElement) }[url];
   if (page) {
     // An embed page is sent compressed, as a host would send it, and counted in its first load
     // (the static drawing inside is part of what the page costs).
@@ -467,7 +467,7 @@ const steps = {
   load: async () => {
     await firstLoad('', () => document.body.dataset.ready === 'true', 'load_app', 'the app with its example');
     await firstLoad('embed-bench.html', () => document.querySelector('screwcut-preview')?.result?.threads?.length > 0, 'load_embed', 'a page with one embedded diagram');
-    // The same with its static drawing: it waits for the reader; then the pointer comes.
+    // The same written by `screwcut embed`, its static drawing inside: it waits for the reader; then the pointer comes.
     const shown = () => {
       const el = document.querySelector('screwcut-preview');
       return el?.dataset.state === 'idle' && el.querySelector('svg')?.getBoundingClientRect().height > 100;

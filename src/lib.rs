@@ -31,6 +31,7 @@ pub mod diagnostic;
 pub mod diagram;
 pub mod dialect;
 pub mod draw;
+pub mod element;
 pub mod event;
 pub mod exec;
 pub mod expand;

@@ -6,7 +6,6 @@
 use pulldown_cmark::{CodeBlockKind, Event, Options as Md, Parser, Tag, TagEnd};
 use screwcut::Severity;
 
-use crate::block;
 use crate::options;
 
 /// A diagnostic of a block's program at its place in the chapter.
@@ -89,6 +88,7 @@ fn loader(assets: &str, fallback_root: &str) -> String {
          <style>\n\
          screwcut-preview:not(:defined) {{ display: block; margin: 1em 0; padding: 6px; border: 1px solid #d1d5db; border-radius: 6px; white-space: pre; overflow-x: auto; font: 12px/1.4 monospace; }}\n\
          screwcut-preview:not(:defined) > svg {{ display: inline-block; vertical-align: top; max-width: 100%; height: auto; white-space: normal; }}\n\
+         screwcut-preview:not(:defined) > table {{ display: block; max-height: 24em; overflow: auto; margin: 4px 0; white-space: nowrap; font: 12px/1.5 system-ui, sans-serif; }}\n\
          </style>\n"
     )
 }
@@ -108,7 +108,7 @@ pub fn process(md: &str, root: &str, assets: &str, width: f64) -> Result<Done, S
     let mut at = 0;
     for f in &found {
         let o = options::parse(&f.info).map_err(|e| format!("line {}: ```screwcut block: {e}", f.line))?;
-        let r = block::render(&f.text, &o, width);
+        let r = screwcut::element::render(&f.text, &o, width);
         let prefix = continuation(md, f.range.start);
         content.push_str(&md[at..f.range.start]);
         let lines: Vec<&str> = r.html.lines().collect();

@@ -8,9 +8,10 @@
 //! ````
 //!
 //! becomes a live `<screwcut-preview>` with the static SVG of the same
-//! drawings inside it (the core's display list, as the element draws it),
-//! so the page shows the diagram before its script loads, without
-//! JavaScript and in print. Each block's alarms and warnings are printed at
+//! drawings and the pass table inside it (the core's `element::render`,
+//! which `screwcut embed` writes too), so the page shows the diagram before
+//! its script loads, without JavaScript and in print, and the element loads
+//! the planner when the reader points at it. Each block's alarms and warnings are printed at
 //! build time with the chapter's file and line; `fail-on` can make them
 //! fail the build. A bad option always fails it, naming the file and line.
 //!
@@ -25,7 +26,6 @@
 //! ```
 
 mod assets;
-mod block;
 mod chapter;
 mod options;
 

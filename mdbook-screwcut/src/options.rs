@@ -6,51 +6,12 @@
 use screwcut::message::Lang;
 use screwcut::{Dialect, Settings};
 
-/// The views of `<screwcut-preview>`, in the order it lays them out.
-pub const VIEWS: [&str; 4] = ["side", "tooth", "starts", "table"];
-
 /// The options a block may carry (the element's attributes, less `src`: the
 /// program is the block).
 pub const KNOWN: [&str; 10] =
     ["dialect", "view", "height", "thread", "settings", "lang", "editable", "hide-code", "live", "app"];
 
-/// A block's options, checked.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Options {
-    /// The controller the program is read as.
-    pub dialect: Dialect,
-    /// The views, in the element's order, without repeats.
-    pub views: Vec<&'static str>,
-    /// Height of each drawing, CSS px (120–1200).
-    pub height: u32,
-    /// The thread (1-based) the tooth, starts and table views show.
-    pub thread: usize,
-    /// `NAME=VALUE` entries, each accepted by the planner's settings.
-    pub settings: Vec<String>,
-    /// The labels' language.
-    pub lang: Lang,
-    /// The element's `editable` flag.
-    pub editable: bool,
-    /// The element's `hide-code` flag.
-    pub hide_code: bool,
-    /// The element's `live` flag: plan when scrolled near, not only when the
-    /// reader points at the static drawing.
-    pub live: bool,
-    /// The app the "Open in editor" link opens (http(s) or relative).
-    pub app: Option<String>,
-}
-
-impl Options {
-    /// The settings the planner reads the block with.
-    pub fn planner_settings(&self) -> Settings {
-        let mut s = Settings::new(self.dialect);
-        for e in &self.settings {
-            // Checked when the options were read.
-            let _ = s.assign(e);
-        }
-        s
-    }
-}
+pub use screwcut::element::{Options, VIEWS};
 
 /// The words of an info string after the language: `key`, `key=value`,
 /// `key="value with spaces"` or `key='…'`.
@@ -92,18 +53,7 @@ fn words(info: &str) -> Result<Vec<(String, Option<String>)>, String> {
 /// Reads the options of a block from its info string without the leading
 /// `screwcut`; `Err` says which option is wrong and why.
 pub fn parse(info: &str) -> Result<Options, String> {
-    let mut o = Options {
-        dialect: Dialect::Gsk980tdc,
-        views: vec!["side"],
-        height: 320,
-        thread: 1,
-        settings: Vec::new(),
-        lang: Lang::En,
-        editable: false,
-        hide_code: false,
-        live: false,
-        app: None,
-    };
+    let mut o = Options::default();
     let mut seen: Vec<String> = Vec::new();
     let mut words = words(info)?;
     // The dialect first: the settings are checked against it.
@@ -162,7 +112,7 @@ fn apply(o: &mut Options, key: &str, value: &str) -> Result<(), String> {
         "editable" => o.editable = true,
         "hide-code" => o.hide_code = true,
         "live" => o.live = true,
-        "app" => o.app = Some(app(value)?),
+        "app" => o.app = Some(screwcut::element::app_url(value)?),
         "src" => return Err("'src' is not an option here: the program is the block's content".into()),
         _ => return Err(format!("unknown option '{key}' (known: {})", KNOWN.join(", "))),
     }
@@ -179,21 +129,6 @@ fn views(value: &str) -> Result<Vec<&'static str>, String> {
         return Err(format!("unknown view '{bad}' (known: {})", VIEWS.join(", ")));
     }
     Ok(VIEWS.into_iter().filter(|v| asked.iter().any(|a| a.eq_ignore_ascii_case(v))).collect())
-}
-
-/// An `app` URL: http(s) or relative, as the element follows it.
-fn app(value: &str) -> Result<String, String> {
-    let scheme = value.split_once(':').map(|(s, _)| s).filter(|s| {
-        s.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
-            && s.chars().all(|c| c.is_ascii_alphanumeric() || "+.-".contains(c))
-    });
-    match scheme {
-        Some(s) if !s.eq_ignore_ascii_case("http") && !s.eq_ignore_ascii_case("https") => {
-            Err(format!("app '{value}' is not an http(s) or relative URL"))
-        }
-        _ if value.trim().is_empty() => Err("app needs a URL".into()),
-        _ => Ok(value.to_string()),
-    }
 }
 
 #[cfg(test)]

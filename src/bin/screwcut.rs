@@ -12,6 +12,8 @@ use screwcut::{Code, Dialect};
 
 #[path = "screwcut/compare.rs"]
 mod compare;
+#[path = "screwcut/embed.rs"]
+mod embed;
 #[path = "screwcut/summary.rs"]
 mod summary;
 
@@ -91,6 +93,11 @@ enum Command {
     /// Write a threading program: a designation (or --major and --lead), its
     /// length (or --end-z), a controller and a form.
     Generate(GenerateArgs),
+    /// Write a program as the HTML of a `<screwcut-preview>` element with its
+    /// static drawings and pass table inside (the page shows them until the
+    /// reader points at the element, and without JavaScript); alarms and
+    /// warnings go to standard error.
+    Embed(embed::EmbedArgs),
     /// Draw a program as a standalone SVG: the side section, one thread's
     /// tooth section or its starts.
     Svg {
@@ -250,6 +257,7 @@ fn main() -> ExitCode {
         Command::Plan { file, dialect, set, json, lang } => plan(&file, dialect, &set, json, lang),
         Command::Expand { file, dialect, to, set, lang } => expand(&file, dialect, to.unwrap_or(dialect), &set, lang),
         Command::Generate(a) => generate(a),
+        Command::Embed(a) => embed::embed(a),
         Command::Compare { a, b, dialect, dialect_b, set, json } => {
             compare_files(&a, &b, dialect, dialect_b.unwrap_or(dialect), &set, json)
         }

@@ -44,6 +44,19 @@ phrases! {
     COL_EVEN: "even", "等面积";
     COL_TIME: "time s", "时间 s";
     COL_LINES: "lines", "程序行";
+    // The element's pass table (the live one's headers: www/src/shared/i18n.js `col_*`).
+    TABLE_PASS: "Pass", "次";
+    TABLE_START: "Start", "头";
+    TABLE_X: "X", "X";
+    TABLE_Z_START: "Z start", "Z 起点";
+    TABLE_Z_END: "Z end", "Z 终点";
+    TABLE_DEPTH: "Depth", "切深";
+    TABLE_INCREMENT: "Increment", "进刀量";
+    TABLE_AREA: "Area", "面积";
+    TABLE_EVEN: "Even area", "等面积";
+    TABLE_TIME: "Time", "时间";
+    TABLE_ROLE: "Role", "类型";
+    TABLE_LINES: "Lines", "行";
     TIME_LINE: "time: {cut} s cutting, {total} s with rapids; {n} rev/min, thread feed {feed} {u}/min (machine.max_thread_feed allows up to S{limit})",
         "时间：切削 {cut} s，含快速移动 {total} s；{n} r/min，螺纹进给 {feed} {u}/min（machine.max_thread_feed 允许最高 S{limit}）";
     TIME_UNKNOWN: "time: not known (no spindle speed S before the thread)", "时间：未知（螺纹之前没有主轴转速 S）";

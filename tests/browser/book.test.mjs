@@ -38,7 +38,14 @@ const elements = (page) =>
         const r = s.getBoundingClientRect();
         return { w: Math.round(r.width), h: Math.round(r.height), paths: s.querySelectorAll('path').length, texts: s.querySelectorAll('text').length };
       });
-      return { state: el.dataset.state || null, view: el.getAttribute('view'), canvases, svgs, alarms: el.result ? el.result.alarms : null };
+      const table = el.querySelector(':scope > table');
+      const rows = table ? table.tBodies[0].rows.length : 0;
+      const tableH = table ? Math.round(table.getBoundingClientRect().height) : 0;
+      const shownTable = el.shadowRoot?.querySelector('.fallback-table');
+      const shownTableH = shownTable ? Math.round(shownTable.getBoundingClientRect().height) : 0;
+      const liveTable = el.shadowRoot?.querySelector('.view.table');
+      const liveTableH = liveTable ? Math.round(liveTable.getBoundingClientRect().height) : 0;
+      return { state: el.dataset.state || null, view: el.getAttribute('view'), canvases, svgs, rows, tableH, shownTableH, liveTableH, alarms: el.result ? el.result.alarms : null };
     }),
   );
 
@@ -55,34 +62,49 @@ try {
     await page.goto(`${base}${chapter}.html`);
     await page.evaluate(() => customElements.whenDefined('screwcut-preview'));
     const count = await page.locator('screwcut-preview').count();
-    if (chapter === 'gsk980tdc' || chapter === 'renhe') {
-      // Their blocks draw only (no pass table). One gsk980tdc block plans with a warning (a shim):
-      // the book marks it `live` and it plans once scrolled near, to list the warning; the
-      // others wait for the reader. The renhe chapter loads no wasm until then.
+    {
+      // Every block has static drawings and, with a pass table, a static table (screwcut embed's):
+      // it waits for the reader, unless the book marked it \`live\` because its program plans with
+      // warnings (one gsk980tdc block: a shim). A chapter with no live block loads no wasm.
       for (let i = 0; i < count; i++) await page.locator('screwcut-preview').nth(i).scrollIntoViewIfNeeded();
       await page.mouse.move(1270, 5);
-      await page.waitForTimeout(1500);
+      await page.waitForTimeout(1200);
       const waiting = await elements(page);
       const live = await page.evaluate(() => [...document.querySelectorAll('screwcut-preview')].map((e) => e.hasAttribute('live')));
       const wasm = await page.evaluate(() => performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.wasm')).length);
-      const want = chapter === 'gsk980tdc' ? [true, false, false] : [false];
+      const want = chapter === 'gsk980tdc' ? [true, false, false] : Array(n).fill(false);
       check(
-        chapter === 'renhe'
-          ? 'renhe: its block, whose static drawing shows all its views, waits for the reader, and no wasm is fetched'
-          : 'gsk980tdc: its block with a warning is live; the two others wait for the reader',
+        `${chapter}: ${want.includes(true) ? 'the block with a warning is live; the others wait' : 'every block waits for the reader, and no wasm is fetched'}`,
         JSON.stringify(live) === JSON.stringify(want) &&
           waiting.every((e, i) => (live[i] ? e.state === 'ready' : e.state === 'idle' && e.svgs.length > 0 && e.svgs.every((s) => s.h > 100))) &&
-          (chapter !== 'renhe' || wasm === 0),
-        JSON.stringify({ wasm, live, states: waiting.map((e) => e.state) }),
+          waiting.every((e, i) => live[i] || !e.view.includes('table') || (e.rows > 0 && e.shownTableH > 60)) &&
+          (want.includes(true) || wasm === 0),
+        JSON.stringify({ wasm, live, states: waiting.map((e) => e.state), rows: waiting.map((e) => e.rows) }),
       );
-      const quiet = live.indexOf(false);
-      await page.locator('screwcut-preview').nth(quiet).scrollIntoViewIfNeeded();
-      if (chapter === 'renhe') await page.screenshot({ path: path.join(shots, 'book-renhe-static.png') });
-      await page.locator('screwcut-preview').nth(quiet).hover();
-      await page.waitForFunction((i) => document.querySelectorAll('screwcut-preview')[i].dataset.state === 'ready', quiet, { timeout: 20_000 }).catch(() => {});
-      const pointed = (await elements(page))[quiet];
-      check(`${chapter}: … pointed at, a waiting block plans and draws live`, pointed.state === 'ready' && pointed.canvases.every((c) => c.n > 300), JSON.stringify(pointed));
-      if (chapter === 'renhe') await page.screenshot({ path: path.join(shots, 'book-renhe-pointed.png') });
+      if (chapter === 'o1006') {
+        await page.locator('screwcut-preview').first().scrollIntoViewIfNeeded();
+        await page.screenshot({ path: path.join(shots, 'book-o1006-static.png') });
+        check('o1006: its static table lists the five passes', waiting[0].rows === 5, JSON.stringify(waiting[0].rows));
+      }
+      if (chapter === 'renhe' || chapter === 'o1006') {
+        await page.locator('screwcut-preview').first().hover();
+        await page.waitForFunction(() => document.querySelector('screwcut-preview').dataset.state === 'ready', null, { timeout: 20_000 }).catch(() => {});
+        const pointed = (await elements(page))[0];
+        check(`${chapter}: … pointed at, it plans and draws live`, pointed.state === 'ready' && pointed.canvases.every((c) => c.n > 300) && pointed.shownTableH === 0, JSON.stringify(pointed));
+        if (chapter === 'o1006') {
+          // The static table is the live one: the same headers, the same cells, row by row.
+          const same = await page.evaluate(() => {
+            const root = document.querySelector('screwcut-preview').shadowRoot;
+            const rows = (sel) => [...root.querySelectorAll(`${sel} tbody tr`)].filter((r) => !r.classList.contains('spacer')).map((r) => [...r.cells].map((c) => c.textContent));
+            return {
+              head: ['.fallback-table', '.view.table'].map((sel) => [...root.querySelectorAll(`${sel} thead th`)].map((c) => c.textContent).join(' | ')),
+              rows: [rows('.fallback-table'), rows('.view.table')],
+            };
+          });
+          check('o1006: the static pass table has the live table\'s headers and cells', same.head[0] === same.head[1] && JSON.stringify(same.rows[0]) === JSON.stringify(same.rows[1]), JSON.stringify(same));
+        }
+        await page.screenshot({ path: path.join(shots, `book-${chapter}-pointed.png`) });
+      }
     }
     for (let i = 0; i < count; i++) {
       const el = page.locator('screwcut-preview').nth(i);
@@ -103,8 +125,8 @@ try {
       const printed = await elements(page);
       const p = printed[0];
       check(
-        'in print, the static drawings show and the canvases do not',
-        p.svgs.length === 2 && p.svgs.every((s) => s.h > 100) && p.canvases.every((c) => c.shownH === 0),
+        'in print, the static drawings and pass table show and the canvases and live table do not',
+        p.svgs.length === 2 && p.svgs.every((s) => s.h > 100) && p.canvases.every((c) => c.shownH === 0) && p.shownTableH > 100 && p.liveTableH === 0,
         JSON.stringify(p),
       );
       await page.screenshot({ path: path.join(shots, 'book-o1006-print.png') });
@@ -125,7 +147,8 @@ try {
     await p2.goto(`${base}${chapter}.html`);
     const els = await elements(p2);
     const drawn = els.every((e) => e.svgs.length > 0 && e.svgs.every((s) => s.w > 300 && s.h > 100 && s.paths > 5 && s.texts > 2));
-    check(`${chapter} without JavaScript: ${n} static drawing(s) shown`, els.length === n && drawn, JSON.stringify(els.map((e) => e.svgs)));
+    const tables = els.every((e) => !e.view.includes('table') || (e.rows > 0 && e.tableH > 40));
+    check(`${chapter} without JavaScript: ${n} static drawing(s) shown, and the pass tables`, els.length === n && drawn && tables, JSON.stringify(els.map((e) => [e.svgs, e.rows, e.tableH])));
   }
   await p2.goto(`${base}o1006.html`);
   const text = await p2.locator('screwcut-preview').first().innerText();

@@ -175,7 +175,7 @@ const FIGURES: &[Figure] = &[
     },
     Figure {
         key: "load_embed_static_kib",
-        what: "the same with its static drawing inside, as mdbook-screwcut writes it (the wasm when pointed at)",
+        what: "the same with its static drawing inside, as `screwcut embed` writes it (the wasm when pointed at)",
         before: "≈ 360",
         target: "≤ 195 (200 KB)",
         unit: "KiB",

@@ -70,7 +70,9 @@ export class ScrewcutPreview extends HTMLElement {
   }
 
   connectedCallback() {
-    // A static drawing inside (an <svg>, as `screwcut svg` writes it) is the fallback shown until the live one.
+    // Static drawings inside (an <svg>, as `screwcut svg` writes it) are the fallback shown
+    // until the live ones; a static pass table (a <table>, as `screwcut embed` writes it) is
+    // copied into the element (_build), where it takes the live table's style.
     for (const svg of this.querySelectorAll(':scope > svg')) svg.slot = 'fallback';
     if (!this._built) this._build();
     if (this._state === 'idle') {
@@ -85,14 +87,16 @@ export class ScrewcutPreview extends HTMLElement {
 
   /**
    * Whether the element waits for the reader before it loads the planner:
-   * its static drawings show every view it has (no pass table, one drawing
-   * per view), the program is its text, not being edited, and no `live`.
+   * its static parts show every view it has (one drawing per drawn view, a
+   * table for the pass table), the program is its text, not being edited,
+   * and no `live`.
    */
   _waitsForReader() {
     if (this._staticOld || this._text !== null || ['live', 'editable', 'src'].some((a) => this.hasAttribute(a))) return false;
     const views = this._viewNames || parseViews(this.getAttribute('view'));
-    if (views.includes('table')) return false;
-    return this.querySelectorAll(':scope > svg').length >= views.length;
+    const drawn = views.filter((v) => v !== 'table').length;
+    if (views.includes('table') && !this.querySelector(':scope > table')) return false;
+    return this.querySelectorAll(':scope > svg').length >= drawn;
   }
 
   /**
@@ -150,8 +154,9 @@ export class ScrewcutPreview extends HTMLElement {
    * the program and attributes shown (print uses it, crisp at any scale).
    */
   _boxClasses() {
-    if (!this.querySelector(':scope > svg')) return '';
-    return (this._drawn ? '' : ' static') + (this._staticOld ? '' : ' printable');
+    if (!this.querySelector(':scope > svg, :scope > table')) return '';
+    const table = this.querySelector(':scope > table') ? ' static-table' : '';
+    return (this._drawn ? '' : ' static') + (this._staticOld ? '' : ' printable') + table;
   }
 
   /** The program or an attribute it was drawn with changed: the static drawing no longer shows it. */
@@ -160,11 +165,11 @@ export class ScrewcutPreview extends HTMLElement {
     this._box?.classList.remove('printable');
   }
 
-  /** The G-code shown (the text content, without a static drawing inside, or `src` until set). */
+  /** The G-code shown (the text content, without the static drawings and table inside, or `src` until set). */
   get program() {
     if (this._text !== null) return this._text;
     let text = '';
-    for (const n of this.childNodes) if (!(n.nodeType === 1 && n.localName === 'svg')) text += n.textContent;
+    for (const n of this.childNodes) if (!(n.nodeType === 1 && (n.localName === 'svg' || n.localName === 'table'))) text += n.textContent;
     return dedent(text);
   }
 
@@ -226,6 +231,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._viewNames = views;
     const h = parseHeight(this.getAttribute('height'));
     const editable = this.hasAttribute('editable');
+    const staticTable = this.querySelector(':scope > table');
     const panes = views
       .map((v) =>
         v === 'table'
@@ -235,7 +241,9 @@ export class ScrewcutPreview extends HTMLElement {
       .join('');
     this.shadowRoot.innerHTML =
       `<style>${STYLE}</style><div class="box${this._boxClasses()}" part="box" style="--h:${h}px">` +
-      `<div class="fallback" part="fallback"><slot name="fallback"></slot></div><div class="views">${panes}</div>` +
+      `<div class="fallback" part="fallback"><slot name="fallback"></slot></div>` +
+      (staticTable ? `<div class="fallback-table" part="fallback-table"><span class="cap">${esc(this._t('passes'))}</span></div>` : '') +
+      `<div class="views">${panes}</div>` +
       (editable ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>` : this.hasAttribute('hide-code') ? '' : `<pre class="code" part="code"></pre>`) +
       `<div class="bar"><span class="sum">${esc(this._t(this._state === 'idle' && this._waitsForReader() ? 'static_hint' : 'loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
       `<a class="open" target="_blank" rel="noopener" part="open">${esc(this._t('open_in_editor'))} ↗</a></div>` +
@@ -250,6 +258,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._table = $('.view.table table');
     this._editor = $('textarea');
     this._listing = $('pre.code');
+    if (staticTable) $('.fallback-table').append(staticTable.cloneNode(true));
     this._renderListing();
     this._select.addEventListener('change', () => {
       this._thread = Number(this._select.value);

@@ -7,7 +7,8 @@
 //
 // Parts: ::part(box) the frame, ::part(code) the listing, ::part(open) the
 // link, ::part(fallback) the static drawing shown until the live one is ready
-// (and in print, while it shows the element's program).
+// (and in print, while it shows the element's program), ::part(fallback-table)
+// the static pass table, likewise.
 
 export const STYLE = `
 :host { display: block; margin: 1em 0; color: #111827; font: 13px/1.4 system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif; }
@@ -30,10 +31,17 @@ export const STYLE = `
 .box.static .fallback { display: block; line-height: 0; }
 .box.static .fallback ::slotted(svg) { max-width: 100%; height: auto; }
 .box.static .views { visibility: hidden; height: 0; overflow: hidden; }
+/* A static pass table (screwcut embed's, copied in) shows under the static drawings as the live one would. */
+.fallback-table { display: none; position: relative; overflow: auto; padding-top: 20px; max-height: var(--h, 320px); border-top: 1px solid var(--screwcut-border, #d1d5db); background: var(--screwcut-bg, #fff); }
+.fallback-table .cap { position: absolute; left: 6px; top: 4px; line-height: 14px; font-size: 11px; color: #6b7280; }
+.box.static .fallback-table { display: block; }
+.fallback-table table { font: inherit !important; font-size: 12px !important; }
 /* In print the static drawing stands for the live one while it shows the same program. */
 @media print {
   .box.printable .fallback { display: block; line-height: 0; }
   .box.printable .views > .view:not(.table) { display: none; }
+  .box.printable .fallback-table { display: block; max-height: none; }
+  .box.printable.static-table .views > .view.table { display: none; }
 }
 .view { position: relative; background: var(--screwcut-bg, #fff); min-width: 0; height: var(--h, 320px); display: flex; flex-direction: column; }
 /* A drawing's caption is a line above its canvas, so that no label goes under it. */
