@@ -87,8 +87,14 @@ try {
         check('o1006: its static table lists the five passes', waiting[0].rows === 5, JSON.stringify(waiting[0].rows));
       }
       if (chapter === 'renhe' || chapter === 'o1006') {
+        const height = () => page.evaluate(() => document.querySelector('screwcut-preview').getBoundingClientRect().height);
+        const before = await height();
         await page.locator('screwcut-preview').first().hover();
         await page.waitForFunction(() => document.querySelector('screwcut-preview').dataset.state === 'ready', null, { timeout: 20_000 }).catch(() => {});
+        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+        const after = await height();
+        // What is under the reader's pointer does not move: the live element takes the static one's room.
+        check(`${chapter}: going live, the element keeps its height (${before.toFixed(1)} → ${after.toFixed(1)} px)`, Math.abs(after - before) <= 2, `${before} → ${after}`);
         const pointed = (await elements(page))[0];
         check(`${chapter}: … pointed at, it plans and draws live`, pointed.state === 'ready' && pointed.canvases.every((c) => c.n > 300) && pointed.shownTableH === 0, JSON.stringify(pointed));
         if (chapter === 'o1006') {

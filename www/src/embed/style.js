@@ -28,8 +28,9 @@ export const STYLE = `
 /* A static drawing placed inside the element (screwcut svg's output) shows
    until the live drawing is ready; without script the page shows it as is. */
 .fallback { display: none; }
+/* The static drawings stand where the canvases will be, under their caption lines' room (17 px a row), so nothing moves when the live ones come. */
 .box.static .fallback { display: block; line-height: 0; }
-.box.static .fallback ::slotted(svg) { max-width: 100%; height: auto; }
+.box.static .fallback ::slotted(svg) { max-width: 100%; height: auto; margin-top: 17px; }
 .box.static .views { visibility: hidden; height: 0; overflow: hidden; }
 /* A static pass table (screwcut embed's, copied in) shows under the static drawings as the live one would. */
 .fallback-table { display: none; position: relative; overflow: auto; padding-top: 20px; max-height: var(--h, 320px); border-top: 1px solid var(--screwcut-border, #d1d5db); background: var(--screwcut-bg, #fff); }
