@@ -14,7 +14,7 @@ use crate::draw::View;
 use crate::message::{Lang, words as w};
 use crate::num::fmt;
 use crate::settings::Settings;
-use crate::thread::Role;
+use crate::thread::{Role, Thread};
 use crate::{Plan, diagram};
 
 /// The views of `<screwcut-preview>`, in the order it lays them out.
@@ -191,10 +191,14 @@ fn drawing(plan: &Plan, view: &str, o: &Options, width: f64) -> Option<String> {
     Some(body.join("\n"))
 }
 
+/// Most rows of a static pass table: the live table lists them all.
+pub const STATIC_ROWS: usize = 200;
+
 /// The static pass table of the element's thread, on one line: the live
 /// table's headers and cells (www/src/shared/lists.js `passHead`,
-/// `passRow`), styled inline for a page without the element's script;
-/// `None` when the plan has no such thread.
+/// `passRow`), styled inline for a page without the element's script, its
+/// first [`STATIC_ROWS`] passes and a row that says how many more; `None`
+/// when the plan has no such thread.
 fn pass_table(plan: &Plan, o: &Options) -> Option<String> {
     let t = plan.threads.get(o.thread - 1)?;
     let lang = o.lang;
@@ -223,43 +227,53 @@ fn pass_table(plan: &Plan, o: &Options) -> Option<String> {
         let _ = write!(html, "<th class=\"role\" style=\"text-align:left\">{}</th>", escape(h.text(lang)));
     }
     html.push_str("</tr></thead><tbody>");
-    let opt = |v: Option<f64>| v.map_or_else(String::new, fmt);
-    for (k, p) in t.passes.iter().enumerate() {
-        let chip = t.shop.chip.get(k);
-        let role = match p.role {
-            Role::Rough => (&w::ROUGH, "rough"),
-            Role::Finish => (&w::FINISH, "finish"),
-            Role::Spring => (&w::SPRING, "spring"),
-        };
-        let mut lines = p.lines.iter().map(u32::to_string).collect::<Vec<_>>().join(",");
-        if !p.via.is_empty() {
-            lines += " ← ";
-            lines += &p.via.iter().map(u32::to_string).collect::<Vec<_>>().join(" ← ");
-        }
-        let cells = [
-            p.index.to_string(),
-            p.start.to_string(),
-            fmt(p.from.x),
-            fmt(p.from.z),
-            fmt(p.to.z),
-            fmt(p.depth),
-            fmt(p.infeed),
-            opt(chip.and_then(|c| c.area)),
-            opt(chip.and_then(|c| c.even_area)),
-            opt(t.shop.pass_time_s.get(k).copied()),
-        ];
-        let _ = write!(html, "<tr class=\"{}\">", role.1);
-        for c in cells {
-            let _ = write!(html, "<td>{c}</td>");
-        }
-        let _ = write!(
-            html,
-            "<td class=\"role\" style=\"text-align:left\">{}</td><td class=\"lines\" style=\"text-align:left\">{lines}</td></tr>",
-            escape(role.0.text(lang))
-        );
+    for k in 0..t.passes.len().min(STATIC_ROWS) {
+        pass_row(&mut html, t, k, lang);
+    }
+    if t.passes.len() > STATIC_ROWS {
+        let more = w::TABLE_MORE.render(&crate::args![n = t.passes.len() - STATIC_ROWS], lang);
+        let _ = write!(html, "<tr><td colspan=\"12\" style=\"text-align:left\">{}</td></tr>", escape(&more));
     }
     html.push_str("</tbody></table>");
     Some(html)
+}
+
+/// Row `k` of thread `t`'s static pass table.
+fn pass_row(html: &mut String, t: &Thread, k: usize, lang: Lang) {
+    let p = &t.passes[k];
+    let chip = t.shop.chip.get(k);
+    let opt = |v: Option<f64>| v.map_or_else(String::new, fmt);
+    let role = match p.role {
+        Role::Rough => (&w::ROUGH, "rough"),
+        Role::Finish => (&w::FINISH, "finish"),
+        Role::Spring => (&w::SPRING, "spring"),
+    };
+    let mut lines = p.lines.iter().map(u32::to_string).collect::<Vec<_>>().join(",");
+    if !p.via.is_empty() {
+        lines += " ← ";
+        lines += &p.via.iter().map(u32::to_string).collect::<Vec<_>>().join(" ← ");
+    }
+    let cells = [
+        p.index.to_string(),
+        p.start.to_string(),
+        fmt(p.from.x),
+        fmt(p.from.z),
+        fmt(p.to.z),
+        fmt(p.depth),
+        fmt(p.infeed),
+        opt(chip.and_then(|c| c.area)),
+        opt(chip.and_then(|c| c.even_area)),
+        opt(t.shop.pass_time_s.get(k).copied()),
+    ];
+    let _ = write!(html, "<tr class=\"{}\">", role.1);
+    for c in cells {
+        let _ = write!(html, "<td>{c}</td>");
+    }
+    let _ = write!(
+        html,
+        "<td class=\"role\" style=\"text-align:left\">{}</td><td class=\"lines\" style=\"text-align:left\">{lines}</td></tr>",
+        escape(role.0.text(lang))
+    );
 }
 
 /// The element's opening tag with the options as attributes; `live` also

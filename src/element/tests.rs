@@ -131,3 +131,16 @@ fn the_app_is_http_or_relative() {
     );
     assert_eq!(app_url(" "), Err("app needs a URL".into()));
 }
+
+#[test]
+fn a_long_table_is_cut_and_says_how_much_more() {
+    // 250 block-by-block passes of one G32 thread (M48×2 from X47.9 down by 0.004 mm each).
+    let mut text = String::from("G00 X58. Z70.\n");
+    for k in 0..250 {
+        text += &format!("X{}\nG32 Z13. F2.\nG00 X58.\nZ70.\n", fmt(47.9 - 0.004 * f64::from(k)));
+    }
+    let r = render(&text, &options(&["table"]), 748.0);
+    assert_eq!(r.html.matches("<tr class=").count(), STATIC_ROWS);
+    assert!(r.html.contains("<td>200</td><td>1</td><td>47.104</td>"), "the 200th pass at X47.9 − 199 × 0.004");
+    assert!(r.html.contains(">… 50 more passes: point at the diagram to list them all</td></tr></tbody>"));
+}
