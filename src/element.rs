@@ -121,7 +121,9 @@ pub fn dedent(text: &str) -> (String, usize) {
     (out.join("\n") + "\n", first)
 }
 
-/// `s` with `&`, `<`, `>` and `"` written as HTML entities.
+/// `s` with `&`, `<`, `>` and `"` written as HTML entities; unlike
+/// [`crate::svg::escape`] (XML), every other character is kept as it is:
+/// the element's text is the program, which reads the same.
 pub fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
