@@ -41,9 +41,9 @@ const elements = (page) =>
       const table = el.querySelector(':scope > table');
       const rows = table ? table.tBodies[0].rows.length : 0;
       const tableH = table ? Math.round(table.getBoundingClientRect().height) : 0;
-      const shownTable = el.shadowRoot?.querySelector('.fallback-table');
+      const shownTable = el.shadowRoot?.querySelector('.views.fallback .view.table');
       const shownTableH = shownTable ? Math.round(shownTable.getBoundingClientRect().height) : 0;
-      const liveTable = el.shadowRoot?.querySelector('.view.table');
+      const liveTable = el.shadowRoot?.querySelector('.views.live .view.table');
       const liveTableH = liveTable ? Math.round(liveTable.getBoundingClientRect().height) : 0;
       return { state: el.dataset.state || null, view: el.getAttribute('view'), canvases, svgs, rows, tableH, shownTableH, liveTableH, alarms: el.result ? el.result.alarms : null };
     }),
@@ -103,8 +103,8 @@ try {
             const root = document.querySelector('screwcut-preview').shadowRoot;
             const rows = (sel) => [...root.querySelectorAll(`${sel} tbody tr`)].filter((r) => !r.classList.contains('spacer')).map((r) => [...r.cells].map((c) => c.textContent));
             return {
-              head: ['.fallback-table', '.view.table'].map((sel) => [...root.querySelectorAll(`${sel} thead th`)].map((c) => c.textContent).join(' | ')),
-              rows: [rows('.fallback-table'), rows('.view.table')],
+              head: ['.views.fallback .view.table', '.views.live .view.table'].map((sel) => [...root.querySelectorAll(`${sel} thead th`)].map((c) => c.textContent).join(' | ')),
+              rows: [rows('.views.fallback .view.table'), rows('.views.live .view.table')],
             };
           });
           check('o1006: the static pass table has the live table\'s headers and cells', same.head[0] === same.head[1] && JSON.stringify(same.rows[0]) === JSON.stringify(same.rows[1]), JSON.stringify(same));

@@ -70,10 +70,13 @@ export class ScrewcutPreview extends HTMLElement {
   }
 
   connectedCallback() {
-    // Static drawings inside (an <svg>, as `screwcut svg` writes it) are the fallback shown
-    // until the live ones; a static pass table (a <table>, as `screwcut embed` writes it) is
-    // copied into the element (_build), where it takes the live table's style.
-    for (const svg of this.querySelectorAll(':scope > svg')) svg.slot = 'fallback';
+    // Static drawings inside (an <svg> per drawn view, as `screwcut svg` writes it) are the
+    // fallback shown until the live ones, each in its view's place; a static pass table (a
+    // <table>, as `screwcut embed` writes it) is copied into the element (_build), where it
+    // takes the live table's style.
+    this.querySelectorAll(':scope > svg').forEach((svg, i) => {
+      svg.slot = `fallback-${i}`;
+    });
     if (!this._built) this._build();
     if (this._state === 'idle') {
       this.dataset.state = 'idle';
@@ -241,9 +244,7 @@ export class ScrewcutPreview extends HTMLElement {
       .join('');
     this.shadowRoot.innerHTML =
       `<style>${STYLE}</style><div class="box${this._boxClasses()}" part="box" style="--h:${h}px">` +
-      `<div class="fallback" part="fallback"><slot name="fallback"></slot></div>` +
-      (staticTable ? `<div class="fallback-table" part="fallback-table"><span class="cap">${esc(this._t('passes'))}</span></div>` : '') +
-      `<div class="views">${panes}</div>` +
+      `<div class="views live">${panes}</div>${this._fallbackHtml(views, staticTable)}` +
       (editable ? `<textarea spellcheck="false" autocapitalize="off" autocomplete="off" aria-label="G-code"></textarea>` : this.hasAttribute('hide-code') ? '' : `<pre class="code" part="code"></pre>`) +
       `<div class="bar"><span class="sum">${esc(this._t(this._state === 'idle' && this._waitsForReader() ? 'static_hint' : 'loading'))}</span><select class="thread" hidden aria-label="${esc(this._t('thread'))}"></select>` +
       `<a class="open" target="_blank" rel="noopener" part="open">${esc(this._t('open_in_editor'))} ↗</a></div>` +
@@ -255,10 +256,10 @@ export class ScrewcutPreview extends HTMLElement {
     this._diags = $('.diags');
     this._tip = $('.tip');
     this._box = $('.box');
-    this._table = $('.view.table table');
+    this._table = $('.views.live .view.table table');
     this._editor = $('textarea');
     this._listing = $('pre.code');
-    if (staticTable) $('.fallback-table').append(staticTable.cloneNode(true));
+    if (staticTable) $('.views.fallback .view.table').append(staticTable.cloneNode(true));
     this._renderListing();
     this._select.addEventListener('change', () => {
       this._thread = Number(this._select.value);
@@ -281,10 +282,28 @@ export class ScrewcutPreview extends HTMLElement {
     if (this._state === 'ready') this._makeViews();
   }
 
+  /**
+   * The static parts inside the element — its `<svg>` drawings (slotted one
+   * per drawn view, in view order) and a copy of its `<table>` — laid out as
+   * the live views are, with their captions: shown until the live views are
+   * drawn, and in print while they are of the program shown. Empty without
+   * static parts.
+   */
+  _fallbackHtml(views, staticTable) {
+    if (!staticTable && !this.querySelector(':scope > svg')) return '';
+    let i = 0;
+    const cap = (key) => `<span class="cap">${esc(this._t(key))}</span>`;
+    const panes = views.map((v) => {
+      if (v !== 'table') return `<div class="view" data-view="${v}"><slot name="fallback-${i++}"></slot>${cap(v)}</div>`;
+      return staticTable ? `<div class="view table" data-view="table">${cap('passes')}</div>` : '';
+    });
+    return `<div class="views fallback" part="fallback">${panes.join('')}</div>`;
+  }
+
   _makeViews() {
     for (const name of this._viewNames) {
       if (name === 'table') continue;
-      const canvas = this.shadowRoot.querySelector(`.view[data-view="${name}"] canvas`);
+      const canvas = this.shadowRoot.querySelector(`.views.live .view[data-view="${name}"] canvas`);
       const view = new SceneView(canvas, { session: this._session, name, stretch: name === 'side' });
       this._views[name] = view;
       const binding = bindCanvas(

@@ -6,9 +6,8 @@
 //   --screwcut-accent   link and focus colour (default #1d4ed8)
 //
 // Parts: ::part(box) the frame, ::part(code) the listing, ::part(open) the
-// link, ::part(fallback) the static drawing shown until the live one is ready
-// (and in print, while it shows the element's program), ::part(fallback-table)
-// the static pass table, likewise.
+// link, ::part(fallback) the static drawings and table shown until the live
+// ones are ready (and in print, while they show the element's program).
 
 export const STYLE = `
 :host { display: block; margin: 1em 0; color: #111827; font: 13px/1.4 system-ui, -apple-system, "Segoe UI", "Noto Sans CJK SC", "Microsoft YaHei", sans-serif; }
@@ -25,24 +24,20 @@ export const STYLE = `
 .views:not(:has(> .view:not(.table) ~ .view:not(.table))) > .view,
 .views:has(> [data-view="tooth"]):has(> [data-view="starts"]) > [data-view="side"] { grid-column: 1 / -1; }
 @container (max-width: 560px) { .views { grid-template-columns: minmax(0, 1fr); } }
-/* A static drawing placed inside the element (screwcut svg's output) shows
-   until the live drawing is ready; without script the page shows it as is. */
-.fallback { display: none; }
-/* The static drawings stand where the canvases will be, under their caption lines' room (17 px a row), so nothing moves when the live ones come. */
-.box.static .fallback { display: block; line-height: 0; }
-.box.static .fallback ::slotted(svg) { max-width: 100%; height: auto; margin-top: 17px; }
-.box.static .views { visibility: hidden; height: 0; overflow: hidden; }
-/* A static pass table (screwcut embed's, copied in) shows under the static drawings as the live one would. */
-.fallback-table { display: none; position: relative; overflow: auto; padding-top: 20px; max-height: var(--h, 320px); border-top: 1px solid var(--screwcut-border, #d1d5db); background: var(--screwcut-bg, #fff); }
-.fallback-table .cap { position: absolute; left: 6px; top: 4px; line-height: 14px; font-size: 11px; color: #6b7280; }
-.box.static .fallback-table { display: block; }
-.fallback-table table { font: inherit !important; font-size: 12px !important; }
+/* The static drawings placed inside the element (screwcut embed's) and its
+   static pass table show, each in its view's place with its caption, until
+   the live views are drawn: nothing moves when they come. Without script
+   the page shows them as they are. */
+.box:not(.static) > .views.fallback { display: none; }
+.box.static > .views.live { visibility: hidden; height: 0; overflow: hidden; }
+.views.fallback ::slotted(svg) { display: block; flex: 1 1 0; min-height: 0; width: 100%; height: auto; }
+.views.fallback .view.table table { font: inherit !important; font-size: 12px !important; }
 /* In print the static drawing stands for the live one while it shows the same program. */
 @media print {
-  .box.printable .fallback { display: block; line-height: 0; }
-  .box.printable .views > .view:not(.table) { display: none; }
-  .box.printable .fallback-table { display: block; max-height: none; }
-  .box.printable.static-table .views > .view.table { display: none; }
+  .box.printable > .views.fallback { display: grid; }
+  .box.printable > .views.fallback > .view.table { max-height: none; }
+  .box.printable > .views.live > .view:not(.table) { display: none; }
+  .box.printable.static-table > .views.live > .view.table { display: none; }
 }
 .view { position: relative; background: var(--screwcut-bg, #fff); min-width: 0; height: var(--h, 320px); display: flex; flex-direction: column; }
 /* A drawing's caption is a line above its canvas, so that no label goes under it. */
