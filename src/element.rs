@@ -278,9 +278,38 @@ fn pass_row(html: &mut String, t: &Thread, k: usize, lang: Lang) {
     );
 }
 
-/// The element's opening tag with the options as attributes; `live` also
-/// when the static parts cannot show the plan's warnings and alarms.
-fn open_tag(o: &Options, live: bool) -> String {
+/// Most diagnostics listed under the element (its script's `MAX_LISTED`).
+const LISTED: usize = 6;
+
+/// The plan's alarms and warnings `diags` as the element lists them under
+/// its drawing (www/src/embed/element.js `_renderDiagnostics`): the first
+/// [`LISTED`] and how many more; empty without any.
+fn diagnostics_list(diags: &[Diagnostic], lang: Lang) -> String {
+    if diags.is_empty() {
+        return String::new();
+    }
+    let mut html = String::from("<ul data-screwcut=\"diagnostics\">");
+    for d in diags.iter().take(LISTED) {
+        let (class, word) = if d.severity == Severity::Error { ("error", &w::ALARM) } else { ("warning", &w::WARNING) };
+        let _ = write!(
+            html,
+            "<li class=\"{class}\" data-line=\"{0}\"><b>{0}:{1} {2}</b> <code>[{3}]</code> {4}</li>",
+            d.line,
+            d.column,
+            word.text(lang),
+            escape(&d.code.to_string()),
+            escape(&d.render(lang))
+        );
+    }
+    if diags.len() > LISTED {
+        let more = w::LIST_MORE.render(&crate::args![n = diags.len() - LISTED], lang);
+        let _ = write!(html, "<li>{}</li>", escape(&more));
+    }
+    html + "</ul>"
+}
+
+/// The element's opening tag with the options as attributes.
+fn open_tag(o: &Options) -> String {
     let mut tag = format!(
         "<screwcut-preview dialect=\"{}\" view=\"{}\" height=\"{}\"",
         o.dialect.name(),
@@ -302,7 +331,7 @@ fn open_tag(o: &Options, live: bool) -> String {
     if o.hide_code {
         tag += " hide-code";
     }
-    if o.live || live {
+    if o.live {
         tag += " live";
     }
     if let Some(app) = &o.app {
@@ -318,18 +347,17 @@ pub fn render(text: &str, o: &Options, width: f64) -> Rendered {
     let plan = crate::plan(&program, &o.planner_settings());
     let diagnostics: Vec<Diagnostic> =
         plan.diagnostics.iter().filter(|d| d.severity != Severity::Info).cloned().collect();
-    // The tag alone on its line: so Markdown takes what follows as HTML. An
-    // element that would list warnings or alarms under its drawing plans
-    // when scrolled near (the static parts do not list them).
-    let mut html = open_tag(o, !diagnostics.is_empty()) + "\n";
+    // The tag alone on its line: so Markdown takes what follows as HTML.
+    let mut html = open_tag(o) + "\n";
     // The drawings first, side by side as the element lays them out (no
     // text between them: without script the element's text is preformatted),
-    // then the pass table.
+    // then the pass table and the alarms and warnings.
     let svgs: Vec<String> = widths(&o.views, width).into_iter().filter_map(|(v, w)| drawing(&plan, v, o, w)).collect();
     html += &svgs.join("");
     if o.views.contains(&"table") {
         html += &pass_table(&plan, o).unwrap_or_default();
     }
+    html += &diagnostics_list(&diagnostics, o.lang);
     html.push('\n');
     html += &program_text(&program);
     html += "</screwcut-preview>\n";

@@ -43,13 +43,18 @@ fn the_example_as_an_element_with_its_drawings_and_passes() {
 }
 
 #[test]
-fn alarms_go_to_standard_error_with_the_files_line_and_make_it_live() {
+fn alarms_go_to_standard_error_with_the_files_line_and_into_the_element() {
     // Fanuc 0i: G32 with no lead yet is an alarm (on line 4 of the text: the
     // blank line before the program is dropped from the element but counted here).
     let (html, err, code) = embed(&["-", "-d", "fanuc0i", "--lang", "zh"], "\nG00 X58. Z70.\nX47.1\nG32 Z13.\n");
     assert_eq!(code, 0, "a program with alarms is drawn too");
     assert!(
-        html.starts_with("<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"320\" lang=\"zh\" live>\n"),
+        html.starts_with("<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"320\" lang=\"zh\">\n"),
+        "{html}"
+    );
+    // In the element, on the program's line 3.
+    assert!(
+        html.contains("<li class=\"error\" data-line=\"3\"><b>3:1 报警</b> <code>[missing-lead]</code> "),
         "{html}"
     );
     assert!(err.starts_with("-:4:1: 报警 [missing-lead] "), "{err}");

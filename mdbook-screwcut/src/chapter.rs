@@ -88,6 +88,7 @@ fn loader(assets: &str, fallback_root: &str) -> String {
          <style>\n\
          screwcut-preview:not(:defined) {{ display: block; margin: 1em 0; padding: 6px; border: 1px solid #d1d5db; border-radius: 6px; white-space: pre; overflow-x: auto; font: 12px/1.4 monospace; }}\n\
          screwcut-preview:not(:defined) > svg {{ display: inline-block; vertical-align: top; max-width: 100%; height: auto; white-space: normal; }}\n\
+         screwcut-preview:not(:defined) > ul {{ white-space: normal; margin: 4px 0; padding-left: 1.5em; font: 12px/1.4 system-ui, sans-serif; }}\n\
          screwcut-preview:not(:defined) > table {{ display: block; max-height: 24em; overflow: auto; margin: 4px 0; white-space: nowrap; font: 12px/1.5 system-ui, sans-serif; }}\n\
          </style>\n"
     )
@@ -150,11 +151,12 @@ mod tests {
     fn a_block_becomes_the_element_and_other_code_stays() {
         let d = process(CHAPTER, "../", "screwcut", 748.0).unwrap();
         assert_eq!(d.blocks, 1);
-        // G32 with no feed yet is a Fanuc alarm: the element plans when scrolled near, to list it.
         assert!(d.content.starts_with(
-            "# Fanuc\n\nText.\n\n<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"200\" live>\n<svg "
+            "# Fanuc\n\nText.\n\n<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"200\">\n<svg "
         ));
-        assert!(d.content.contains("</svg>\nG00 X58 Z70\n"));
+        // G32 with no feed yet is a Fanuc alarm: listed inside the element, under its drawing.
+        assert!(d.content.contains("<li class=\"error\" data-line=\"3\"><b>3:1 alarm</b> <code>[missing-lead]</code>"));
+        assert!(d.content.contains("</li></ul>\nG00 X58 Z70\n"), "the list after the drawing, then the program");
         assert!(d.content.contains("```gcode\nG32 Z13 F2\n```"));
         assert_eq!(
             d.content.matches("import(new URL(root + 'screwcut/screwcut-preview.js', document.baseURI).href)").count(),

@@ -96,14 +96,34 @@ fn three_drawings_put_the_side_section_on_its_own_row() {
 }
 
 #[test]
-fn a_program_that_alarms_reports_the_line_and_is_live() {
+fn a_program_that_alarms_reports_the_line_and_lists_it_inside() {
     // Fanuc 0i: G32 without F before any feed is an alarm on that block.
     let o = Options { dialect: Dialect::Fanuc0i, ..Options::default() };
     let r = render("\nG00 X58 Z70\nX47.1\nG32 Z13\n", &o, 748.0);
     let alarm = r.diagnostics.iter().find(|d| d.severity == Severity::Error).expect("an alarm");
     assert_eq!((alarm.line, r.leading), (3, 1));
-    // The alarm is listed under the live drawing only: the element plans when scrolled near.
-    assert!(r.html.starts_with("<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"320\" live>\n<svg "));
+    // Listed inside the element as it lists it under the live drawing, with the
+    // program's line (the element drops the blank line before it); and the two
+    // lengths with no decimal point, warnings in Fanuc 0i.
+    assert!(r.html.starts_with("<screwcut-preview dialect=\"fanuc0i\" view=\"side\" height=\"320\">\n<svg "));
+    assert!(r.html.contains("<ul data-screwcut=\"diagnostics\"><li class=\"warning\" data-line=\"1\"><b>1:5 warning</b> <code>[no-decimal-point]</code> X58 has no decimal point"), "{}", r.html);
+    assert!(
+        r.html.contains(
+            "<li class=\"error\" data-line=\"3\"><b>3:1 alarm</b> <code>[missing-lead]</code> G32 without a lead"
+        ),
+        "{}",
+        r.html
+    );
+}
+
+#[test]
+fn at_most_six_diagnostics_are_listed_and_the_rest_counted() {
+    // Eight lengths with no decimal point: eight Fanuc 0i warnings.
+    let o = Options { dialect: Dialect::Fanuc0i, lang: Lang::Zh, ..Options::default() };
+    let r = render("G00 X58 Z70\nX57 Z69\nX56 Z68\nX55 Z67\n", &o, 748.0);
+    assert_eq!(r.diagnostics.len(), 8);
+    assert_eq!(r.html.matches("<li class=\"warning\"").count(), 6);
+    assert!(r.html.contains("<li>… 另有 2 条</li></ul>"), "{}", r.html);
 }
 
 #[test]

@@ -57,6 +57,7 @@ phrases! {
     TABLE_TIME: "Time", "时间";
     TABLE_ROLE: "Role", "类型";
     TABLE_LINES: "Lines", "行";
+    LIST_MORE: "… {n} more", "… 另有 {n} 条";
     TABLE_MORE: "… {n} more passes: point at the diagram to list them all", "… 另有 {n} 次走刀：指向图即可全部列出";
     TIME_LINE: "time: {cut} s cutting, {total} s with rapids; {n} rev/min, thread feed {feed} {u}/min (machine.max_thread_feed allows up to S{limit})",
         "时间：切削 {cut} s，含快速移动 {total} s；{n} r/min，螺纹进给 {feed} {u}/min（machine.max_thread_feed 允许最高 S{limit}）";

@@ -42,6 +42,9 @@ import { STYLE } from './style.js';
 /** Most diagnostics listed under an embedded drawing. */
 const MAX_LISTED = 6;
 
+/** The elements inside a `<screwcut-preview>` that are its static parts, not its program. */
+const STATIC_PARTS = new Set(['svg', 'table', 'ul']);
+
 /** What the reader does to an element waiting with its static drawings that makes it live. */
 const READER_EVENTS = ['pointerenter', 'focusin', 'touchstart'];
 
@@ -168,11 +171,11 @@ export class ScrewcutPreview extends HTMLElement {
     this._box?.classList.remove('printable');
   }
 
-  /** The G-code shown (the text content, without the static drawings and table inside, or `src` until set). */
+  /** The G-code shown (the text content, without the static parts inside — drawings, table, list — or `src` until set). */
   get program() {
     if (this._text !== null) return this._text;
     let text = '';
-    for (const n of this.childNodes) if (!(n.nodeType === 1 && (n.localName === 'svg' || n.localName === 'table'))) text += n.textContent;
+    for (const n of this.childNodes) if (!(n.nodeType === 1 && STATIC_PARTS.has(n.localName))) text += n.textContent;
     return dedent(text);
   }
 
@@ -504,7 +507,13 @@ export class ScrewcutPreview extends HTMLElement {
     const items = shown.slice(0, MAX_LISTED).map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}</li>`);
     if (shown.length > MAX_LISTED) items.push(`<li>${esc(this._t('more', { n: shown.length - MAX_LISTED }))}</li>`);
     const html = problems.concat(items).join('');
-    if (this._diags.dataset.html !== html) {
+    // Until the live plan, the alarms and warnings listed inside the element (`screwcut embed`'s).
+    const listed = this._drawn ? null : this.querySelector(':scope > ul[data-screwcut="diagnostics"]');
+    if (listed) {
+      this._diags.innerHTML = html;
+      for (const li of listed.children) this._diags.append(li.cloneNode(true));
+      this._diags.dataset.html = '(static)';
+    } else if (this._diags.dataset.html !== html) {
       this._diags.innerHTML = html;
       this._diags.dataset.html = html;
     }
