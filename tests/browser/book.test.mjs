@@ -89,6 +89,8 @@ try {
       }
       if (chapter === 'gsk980tdc') {
         // The first block plans with a warning: a 1° shim for a 2.38° helix. It is listed while the block waits.
+        await page.locator('screwcut-preview').first().scrollIntoViewIfNeeded();
+        await page.screenshot({ path: path.join(shots, 'book-gsk980tdc-static.png') });
         const shim = waiting[0].diags;
         check('gsk980tdc: the warning of the waiting block is listed under its static drawing', shim.length === 1 && shim[0].includes('[shim-rub]') && shim[0].startsWith('2:1 warning'), JSON.stringify(shim));
       }
