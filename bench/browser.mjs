@@ -51,14 +51,13 @@ const embedProgram = 'G00 X58 Z70\nG92 X47.1 Z13 F2\nX46.5\nX45.9\nX45.5\nX45.4\
 const embedPageWith = (element) =>
   '<!doctype html><html lang="en"><head><meta charset="utf-8"><title>one diagram</title><script type="module" src="screwcut-preview.js"></script></head><body>' +
   `${element}</body></html>`;
-/** The element as the element's README shows it. */
-const liveElement = `<screwcut-preview dialect="gsk980tdc" view="side">${embedProgram}</screwcut-preview>`;
-/** The same element with its static drawing inside, as `screwcut embed` (and mdbook-screwcut) writes it. */
-const staticElement = execFileSync('cargo', ['run', '--release', '--quiet', '--bin', 'screwcut', '--', 'embed', '-', '--width', '800'], {
-  cwd: path.join(here, '..'),
-  input: embedProgram,
-  maxBuffer: 1 << 24,
-}).toString();
+/** The pages the bench serves itself, by path: the embed pages are added by the step that loads them. */
+const pages = {
+  '/blank.html': '<!doctype html><title>screwcut bench</title>',
+  '/editor-alone.html': alone.html,
+  // The element as the element's README shows it.
+  '/embed-bench.html': embedPageWith(`<screwcut-preview dialect="gsk980tdc" view="side">${embedProgram}</screwcut-preview>`),
+};
 const encodings = [['br', '.br'], ['gzip', '.gz']];
 /** The site's files served, with the bytes sent (a first load reads it). */
 const served = [];
@@ -67,7 +66,7 @@ const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'applic
 const server = http.createServer((req, res) => {
   const url = decodeURIComponent(req.url.split('?')[0]);
   let file;
-  const page = { '/blank.html': '<!doctype html><title>screwcut bench</title>', '/editor-alone.html': alone.html, '/embed-bench.html': embedPageWith(liveElement), '/embed-static-bench.html': embedPageWith(staticElement) }[url];
+  const page = pages[url];
   if (page) {
     // An embed page is sent compressed, as a host would send it, and counted in its first load
     // (the static drawing inside is part of what the page costs).
@@ -467,7 +466,14 @@ const steps = {
   load: async () => {
     await firstLoad('', () => document.body.dataset.ready === 'true', 'load_app', 'the app with its example');
     await firstLoad('embed-bench.html', () => document.querySelector('screwcut-preview')?.result?.threads?.length > 0, 'load_embed', 'a page with one embedded diagram');
-    // The same written by `screwcut embed`, its static drawing inside: it waits for the reader; then the pointer comes.
+    // The same written by `screwcut embed` (a release build of the command line, made here),
+    // its static drawing inside: it waits for the reader; then the pointer comes.
+    const element = execFileSync('cargo', ['run', '--release', '--quiet', '--bin', 'screwcut', '--', 'embed', '-', '--width', '800'], {
+      cwd: path.join(here, '..'),
+      input: embedProgram,
+      maxBuffer: 1 << 24,
+    }).toString();
+    pages['/embed-static-bench.html'] = embedPageWith(element);
     const shown = () => {
       const el = document.querySelector('screwcut-preview');
       return el?.dataset.state === 'idle' && el.querySelector('svg')?.getBoundingClientRect().height > 100;

@@ -16,6 +16,17 @@ pub enum Severity {
     Error,
 }
 
+impl Severity {
+    /// Its name as the JSON writes it: `error`, `warning` or `info`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info => "info",
+        }
+    }
+}
+
 macro_rules! codes {
     ($( $(#[$doc:meta])* $name:ident = $text:literal, $sev:ident; )*) => {
         /// Every diagnostic screwcut emits. The string form is stable and is

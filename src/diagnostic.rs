@@ -8,6 +8,19 @@ use crate::span::{LineCol, LineIndex, Span};
 
 pub use crate::code::{Code, Severity};
 
+impl Severity {
+    /// The word a reader sees for it (the command line's summary, an
+    /// element's list): alarm, warning or note.
+    pub fn word(self) -> &'static crate::message::Phrase {
+        use crate::message::words as w;
+        match self {
+            Severity::Error => &w::ALARM,
+            Severity::Warning => &w::WARNING,
+            Severity::Info => &w::NOTE,
+        }
+    }
+}
+
 /// A finding before it is placed at a span: its template (with the code)
 /// and arguments. Pure planning steps return these; the caller knows where
 /// they belong.
@@ -309,6 +322,15 @@ mod tests {
         let mut d = Diagnostics::with_limit(10);
         d.push(&MORE_DIAGNOSTICS, Span::new(at, at + 2), crate::args![n = n]);
         d
+    }
+
+    #[test]
+    fn a_severity_is_named_as_the_json_names_it_and_read_as_its_word() {
+        for (s, word) in [(Severity::Error, "alarm"), (Severity::Warning, "warning"), (Severity::Info, "note")] {
+            assert_eq!(serde_json::to_string(&s).unwrap(), format!("\"{}\"", s.name()));
+            assert_eq!(s.word().text(Lang::En), word);
+        }
+        assert_eq!(Severity::Error.word().text(Lang::Zh), "报警");
     }
 
     #[test]

@@ -20,6 +20,20 @@ use crate::{Plan, diagram};
 /// The views of `<screwcut-preview>`, in the order it lays them out.
 pub const VIEWS: [&str; 4] = ["side", "tooth", "starts", "table"];
 
+/// `side,tooth` (commas, spaces or bars, any case) → the views in the
+/// element's order, as the element reads its `view` attribute; `Err` says
+/// which view is unknown.
+pub fn views(value: &str) -> Result<Vec<&'static str>, String> {
+    let asked: Vec<&str> = value.split([',', ' ', '|']).filter(|v| !v.is_empty()).collect();
+    if asked.is_empty() {
+        return Err(format!("view needs one or more of {}", VIEWS.join(", ")));
+    }
+    if let Some(bad) = asked.iter().find(|v| !VIEWS.contains(&v.to_ascii_lowercase().as_str())) {
+        return Err(format!("unknown view '{bad}' (known: {})", VIEWS.join(", ")));
+    }
+    Ok(VIEWS.into_iter().filter(|v| asked.iter().any(|a| a.eq_ignore_ascii_case(v))).collect())
+}
+
 /// The element's attributes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
@@ -290,13 +304,13 @@ fn diagnostics_list(diags: &[Diagnostic], lang: Lang) -> String {
     }
     let mut html = String::from("<ul data-screwcut=\"diagnostics\">");
     for d in diags.iter().take(LISTED) {
-        let (class, word) = if d.severity == Severity::Error { ("error", &w::ALARM) } else { ("warning", &w::WARNING) };
         let _ = write!(
             html,
-            "<li class=\"{class}\" data-line=\"{0}\"><b>{0}:{1} {2}</b> <code>[{3}]</code> {4}</li>",
+            "<li class=\"{2}\" data-line=\"{0}\"><b>{0}:{1} {3}</b> <code>[{4}]</code> {5}</li>",
             d.line,
             d.column,
-            word.text(lang),
+            d.severity.name(),
+            d.severity.word().text(lang),
             escape(&d.code.to_string()),
             escape(&d.render(lang))
         );

@@ -11,7 +11,7 @@ use screwcut::{Dialect, Settings};
 pub const KNOWN: [&str; 10] =
     ["dialect", "view", "height", "thread", "settings", "lang", "editable", "hide-code", "live", "app"];
 
-pub use screwcut::element::{Options, VIEWS};
+pub use screwcut::element::Options;
 
 /// The words of an info string after the language: `key`, `key=value`,
 /// `key="value with spaces"` or `key='…'`.
@@ -84,7 +84,7 @@ fn apply(o: &mut Options, key: &str, value: &str) -> Result<(), String> {
             o.dialect = Dialect::parse(value)
                 .ok_or_else(|| format!("unknown dialect '{value}' (known: {})", Dialect::names()))?;
         }
-        "view" => o.views = views(value)?,
+        "view" => o.views = screwcut::element::views(value)?,
         "height" => {
             o.height = value
                 .parse::<u32>()
@@ -117,18 +117,6 @@ fn apply(o: &mut Options, key: &str, value: &str) -> Result<(), String> {
         _ => return Err(format!("unknown option '{key}' (known: {})", KNOWN.join(", "))),
     }
     Ok(())
-}
-
-/// `side,tooth` (commas, spaces or bars) → the views in the element's order.
-fn views(value: &str) -> Result<Vec<&'static str>, String> {
-    let asked: Vec<&str> = value.split([',', ' ', '|']).filter(|v| !v.is_empty()).collect();
-    if asked.is_empty() {
-        return Err(format!("view needs one or more of {}", VIEWS.join(", ")));
-    }
-    if let Some(bad) = asked.iter().find(|v| !VIEWS.contains(&v.to_ascii_lowercase().as_str())) {
-        return Err(format!("unknown view '{bad}' (known: {})", VIEWS.join(", ")));
-    }
-    Ok(VIEWS.into_iter().filter(|v| asked.iter().any(|a| a.eq_ignore_ascii_case(v))).collect())
 }
 
 #[cfg(test)]

@@ -317,12 +317,7 @@ fn main() -> ExitCode {
         Command::Codes => {
             let mut out = String::new();
             for c in Code::ALL {
-                let sev = match c.severity() {
-                    Severity::Error => "error",
-                    Severity::Warning => "warning",
-                    Severity::Info => "info",
-                };
-                out += &format!("{:<28} {sev}\n", c.as_str());
+                out += &format!("{:<28} {}\n", c.as_str(), c.severity().name());
             }
             emit(&out);
             ExitCode::SUCCESS

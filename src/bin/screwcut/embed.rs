@@ -6,9 +6,8 @@ use std::process::ExitCode;
 
 use clap::Args;
 use screwcut::Dialect;
-use screwcut::diagnostic::Severity;
-use screwcut::element::{Options, VIEWS, render};
-use screwcut::message::{Lang, words as w};
+use screwcut::element::{Options, render, views};
+use screwcut::message::Lang;
 
 /// The options of `screwcut embed`: the element's attributes.
 #[derive(Args)]
@@ -22,7 +21,7 @@ pub struct EmbedArgs {
     #[arg(long = "set", short = 's', value_name = "NAME=VALUE")]
     set: Vec<String>,
     /// The views, separated by commas: side, tooth, starts, table.
-    #[arg(long, default_value = "side", value_parser = parse_views)]
+    #[arg(long, default_value = "side", value_parser = |s: &str| views(s).map(Views))]
     view: Views,
     /// Height of each drawing in CSS px (120–1200).
     #[arg(long, default_value_t = 320, value_parser = clap::value_parser!(u32).range(120..=1200))]
@@ -50,18 +49,9 @@ pub struct EmbedArgs {
     app: Option<String>,
 }
 
-/// Views as the element lays them out.
+/// Views as the element lays them out (clap wants one type for the value).
 #[derive(Clone)]
 struct Views(Vec<&'static str>);
-
-fn parse_views(s: &str) -> Result<Views, String> {
-    let asked: Vec<&str> = s.split([',', ' ']).filter(|v| !v.is_empty()).collect();
-    if let Some(bad) = asked.iter().find(|v| !VIEWS.contains(v)) {
-        return Err(format!("unknown view '{bad}' (known: {})", VIEWS.join(", ")));
-    }
-    let views: Vec<&'static str> = VIEWS.into_iter().filter(|v| asked.contains(v)).collect();
-    if views.is_empty() { Err(format!("one or more of {}", VIEWS.join(", "))) } else { Ok(Views(views)) }
-}
 
 /// Writes the element to standard output and the program's alarms and
 /// warnings to standard error (exit 0: a program with alarms is drawn too).
@@ -87,13 +77,18 @@ pub fn embed(a: EmbedArgs) -> ExitCode {
         app: a.app,
     };
     let r = render(&text, &o, a.width);
-    let o = &o;
     super::emit(&r.html);
     // The element drops the blank lines before the program: the file's lines are `leading` further.
     for d in &r.diagnostics {
-        let sev = if d.severity == Severity::Error { &w::ALARM } else { &w::WARNING };
         let line = d.line as usize + r.leading;
-        eprintln!("{}:{line}:{}: {} [{}] {}", a.file, d.column, sev.text(o.lang), d.code, d.render(o.lang));
+        eprintln!(
+            "{}:{line}:{}: {} [{}] {}",
+            a.file,
+            d.column,
+            d.severity.word().text(o.lang),
+            d.code,
+            d.render(o.lang)
+        );
     }
     ExitCode::SUCCESS
 }

@@ -47,12 +47,15 @@ pub fn summary(plan: &Plan, file: &str, lang: Lang) -> String {
     if !plan.diagnostics.is_empty() {
         let _ = writeln!(out, "\n{}", w::DIAGNOSTICS_HEADING.text(lang));
         for d in &plan.diagnostics {
-            let sev = match d.severity {
-                Severity::Error => &w::ALARM,
-                Severity::Warning => &w::WARNING,
-                Severity::Info => &w::NOTE,
-            };
-            let _ = write!(out, "  {}:{}: {} [{}] {}", d.line, d.column, sev.text(lang), d.code, d.render(lang));
+            let _ = write!(
+                out,
+                "  {}:{}: {} [{}] {}",
+                d.line,
+                d.column,
+                d.severity.word().text(lang),
+                d.code,
+                d.render(lang)
+            );
             if !d.via.is_empty() {
                 let lines: Vec<String> = d.via.iter().map(u32::to_string).collect();
                 let (from, after) = (w::CALLED_FROM.text(lang), w::CALLED_FROM_AFTER.text(lang));
