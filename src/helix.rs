@@ -33,6 +33,16 @@ struct Helix<'a> {
     start: f64,
 }
 
+impl<'a> Helix<'a> {
+    /// Pass `p` of thread `t` as a helix, along the axis of frame `f`.
+    fn of(f: Frame, t: &Thread, p: &'a Pass) -> Helix<'a> {
+        let start = f.long(p.from);
+        // A cycle's flank infeed moves each pass along the axis on purpose (its shift).
+        let phase = phase(p.angle, start, f.long(p.to), p.shift, t.lead);
+        Helix { pass: p, lead: t.lead, phase, start }
+    }
+}
+
 /// Adds a `cross-thread` warning to each pass of `threads` that cuts
 /// another helix than most passes on its surface. `max_infeed` (leads) is
 /// how far apart two passes may start across the axis and still be on the
@@ -76,21 +86,19 @@ fn same_surface(a: &Thread, b: &Thread, max_infeed: f64) -> bool {
 /// Warns about the passes of one surface that cut a minority helix.
 fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diags: &mut Diagnostics) {
     let f = Frame::along(threads[0].long_axis);
-    let helices: Vec<Helix> = threads
-        .iter()
-        .flat_map(|t| {
-            t.passes.iter().map(move |p| {
-                let start = f.long(p.from);
-                // A cycle's flank infeed moves each pass along the axis on purpose (its shift).
-                let phase = phase(p.angle, start, f.long(p.to), p.shift, t.lead);
-                Helix { pass: p, lead: t.lead, phase, start }
-            })
-        })
-        .collect();
+    let all = || threads.iter().flat_map(move |t| t.passes.iter().map(move |p| Helix::of(f, t, p)));
+    let same = |a: &Helix, b: &Helix| same_lead(a.lead, b.lead) && same_phase(a.phase, b.phase);
+    // Most surfaces cut one helix: nothing to warn about, and nothing to
+    // collect (every plan checks every surface again).
+    let mut each = all();
+    match each.next() {
+        Some(first) if !each.all(|h| same(&first, &h)) => {}
+        _ => return,
+    }
+    let helices: Vec<Helix> = all().collect();
     if helices.len() < 3 {
         return;
     }
-    let same = |a: &Helix, b: &Helix| same_lead(a.lead, b.lead) && same_phase(a.phase, b.phase);
     // Each helix with how many passes cut it.
     let mut kinds: Vec<(usize, usize)> = Vec::new(); // (first pass index, count)
     for (k, h) in helices.iter().enumerate() {

@@ -34,6 +34,7 @@ use crate::exec::reads::Reads;
 use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
 use crate::span::Shift;
+use crate::thread::Thread;
 use edit::Edit;
 use tail::{Join, Tail, joinable_from};
 
@@ -402,11 +403,22 @@ impl Planner {
         } else {
             (r.asm.moves.split_off(at_m), false)
         };
+        // The threads before the resume point, when fewer than the rest, are
+        // moved out (empty threads left in their places); the rest stay where they are.
+        let (total, at_t) = (r.asm.threads.len(), at.1.min(r.asm.threads.len()));
+        let (threads, whole_threads) = if at_t < total - at_t {
+            let mut all = std::mem::take(&mut r.asm.threads);
+            r.asm.threads = all[..at_t].iter_mut().map(std::mem::take).collect();
+            (all, true)
+        } else {
+            (r.asm.threads.split_off(at_t), false)
+        };
         Some(Tail {
             checkpoints: later,
             moves,
             whole_moves,
-            threads: r.asm.threads.split_off(at.1.min(r.asm.threads.len())),
+            threads,
+            whole_threads,
             diags: r.diags.split_off(at.2),
             at,
             line_starts: self.line_starts.clone(),
@@ -450,14 +462,26 @@ impl Planner {
                 m
             }));
         }
-        let rest = t.threads.drain(skip_t.min(t.threads.len())..);
-        r.asm.threads.extend(rest.map(|mut th| {
+        let shift_thread = |th: &mut Thread| {
             if dm != 0 {
                 th.first_move = th.first_move.saturating_add_signed(dm);
                 th.passes.iter_mut().for_each(|p| p.moves = p.moves.shifted(dm));
             }
-            th
-        }));
+        };
+        if t.whole_threads {
+            // As the motions: the new reading's threads replace the last one's up to the join.
+            let keep = (t.at.1 + skip_t).min(t.threads.len());
+            let mut all = std::mem::take(&mut t.threads);
+            all[keep..].iter_mut().for_each(shift_thread);
+            all.splice(..keep, std::mem::take(&mut r.asm.threads));
+            r.asm.threads = all;
+        } else {
+            let rest = t.threads.drain(skip_t.min(t.threads.len())..);
+            r.asm.threads.extend(rest.map(|mut th| {
+                shift_thread(&mut th);
+                th
+            }));
+        }
         let diags = t.diags.split_off(skip_d.min(t.diags.len()));
         r.diags.extend_shifted(diags, s);
         let line = t.checkpoints[k].line;

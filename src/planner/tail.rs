@@ -21,7 +21,11 @@ pub(super) struct Tail {
     /// before the resume point were fewer than the rest: they were copied
     /// for the new reading, and the rest stay where they are).
     pub(super) whole_moves: bool,
+    /// Threads from the resume point on: all of the last reading's when
+    /// `whole_threads` (those before the resume point moved out for the new
+    /// reading, empty threads left in their places).
     pub(super) threads: Vec<Thread>,
+    pub(super) whole_threads: bool,
     pub(super) diags: Vec<Item>,
     /// Their counts at the resume point.
     pub(super) at: (usize, usize, usize),
