@@ -86,16 +86,14 @@ fn same_surface(a: &Thread, b: &Thread, max_infeed: f64) -> bool {
 /// Warns about the passes of one surface that cut a minority helix.
 fn surface(threads: &[Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, diags: &mut Diagnostics) {
     let f = Frame::along(threads[0].long_axis);
-    let all = || threads.iter().flat_map(move |t| t.passes.iter().map(move |p| Helix::of(f, t, p)));
     let same = |a: &Helix, b: &Helix| same_lead(a.lead, b.lead) && same_phase(a.phase, b.phase);
     // Most surfaces cut one helix: nothing to warn about, and nothing to
     // collect (every plan checks every surface again).
-    let mut each = all();
-    match each.next() {
-        Some(first) if !each.all(|h| same(&first, &h)) => {}
-        _ => return,
+    let Some(first) = threads.iter().find_map(|t| t.passes.first().map(|p| Helix::of(f, t, p))) else { return };
+    if threads.iter().all(|t| t.passes.iter().all(|p| same(&first, &Helix::of(f, t, p)))) {
+        return;
     }
-    let helices: Vec<Helix> = all().collect();
+    let helices: Vec<Helix> = threads.iter().flat_map(|t| t.passes.iter().map(move |p| Helix::of(f, t, p))).collect();
     if helices.len() < 3 {
         return;
     }

@@ -408,7 +408,10 @@ impl Planner {
         let (total, at_t) = (r.asm.threads.len(), at.1.min(r.asm.threads.len()));
         let (threads, whole_threads) = if at_t < total - at_t {
             let mut all = std::mem::take(&mut r.asm.threads);
-            r.asm.threads = all[..at_t].iter_mut().map(std::mem::take).collect();
+            r.asm.threads.reserve(at_t);
+            for th in &mut all[..at_t] {
+                r.asm.threads.push(std::mem::take(th));
+            }
             (all, true)
         } else {
             (r.asm.threads.split_off(at_t), false)
@@ -473,8 +476,15 @@ impl Planner {
             let keep = (t.at.1 + skip_t).min(t.threads.len());
             let mut all = std::mem::take(&mut t.threads);
             all[keep..].iter_mut().for_each(shift_thread);
-            all.splice(..keep, std::mem::take(&mut r.asm.threads));
-            r.asm.threads = all;
+            let mut new = std::mem::take(&mut r.asm.threads);
+            if new.len() == keep {
+                // As many threads as before the join (an edit of a number): in place.
+                all[..keep].iter_mut().zip(new).for_each(|(old, th)| *old = th);
+                r.asm.threads = all;
+            } else {
+                new.extend(all.drain(keep..));
+                r.asm.threads = new;
+            }
         } else {
             let rest = t.threads.drain(skip_t.min(t.threads.len())..);
             r.asm.threads.extend(rest.map(|mut th| {

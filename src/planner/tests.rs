@@ -85,6 +85,26 @@ fn early_edit_keeps_the_unchanged_tail() {
     assert_eq!(p.stopped_at(), None);
 }
 
+/// An early edit that makes one more thread (the first pass cut at another
+/// lead) joins the last reading's threads after it, renumbered, and still
+/// gives the full plan; so does the edit back.
+#[test]
+fn early_edit_that_adds_a_thread_keeps_the_rest() {
+    let s = Settings::new(Dialect::Gsk980tdc);
+    let job = |d: u32| format!("G00 X{} Z70\nX{d}.1\nG32 Z13 F2\nG00 X58\nZ70\n", d + 10);
+    let text: String =
+        std::iter::once("G50 X100 Z100 (top)\n".to_string()).chain((0..300).map(|k| job(40 + k % 8))).collect();
+    let mut p = Planner::new(s.clone());
+    let threads = p.plan(&text).threads.len();
+    let edited = text.replacen("G32 Z13 F2", "G32 Z13 F3", 1);
+    let inc = p.plan(&edited).clone();
+    assert_eq!(p.resumed_at(), 1);
+    assert!(p.stopped_at().is_some());
+    assert_eq!(inc.threads.len(), threads + 1);
+    assert_eq!(inc, crate::plan(&edited, &s));
+    assert_eq!(p.plan(&text).clone(), crate::plan(&text, &s));
+}
+
 /// A LinuxCNC `repeat` open at a checkpoint kept from the last reading
 /// (the edit before it kept the lines) goes back to its body where the
 /// edit moved it.
