@@ -211,7 +211,9 @@ async function typeDigits(page, keys) {
  * typed and deleted, 150 ms apart). On the bare editor a keystroke counts to
  * its next paint; in the app to the diagram on screen: the later of its next
  * paint and the first committed drawing that includes it (the app's mark). Prints
- * p50/p95 of both and their ratio; long tasks in the app while typing.
+ * p50/p95 of both and their ratio; long tasks in the app while typing; and
+ * the page alone: the app with its edits not planned (`hold`), to its next
+ * paint, against the same floor.
  */
 async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const app = await openPlanned(text, dialect);
@@ -228,15 +230,19 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   await cursorTo(bare, text, line, `${tag} bare`);
   const floor = [];
   const screen = [];
+  const held = [];
   const long = [];
   for (let r = 0; r < rounds; r++) {
-    for (const [page, into] of [[bare, floor], [app, screen]]) {
+    for (const [page, into] of [[bare, floor], [app, screen], [app, held]]) {
       await page.bringToFront();
+      // The page alone: the app with its edits held (not planned), to its next paint.
+      if (into === held) await app.evaluate(() => (window.__screwcut.hold = true));
       await page.waitForTimeout(600);
       const t0 = await typeDigits(page, keys);
+      if (into === held) await app.evaluate(() => (window.__screwcut.hold = false));
       const m = await page.evaluate((t0) => ({ keys: self.__keys.filter((k) => k.t > t0), drawn: self.__drawn, long: self.__long.filter((e) => e.start > t0) }), t0);
       for (const k of m.keys) {
-        if (page === bare) into.push(k.paint - k.t);
+        if (page === bare || into === held) into.push(k.paint - k.t);
         else {
           const shown = Math.min(...m.drawn.filter((d) => d.input >= k.t).map((d) => d.shown));
           into.push(Math.max(k.paint, shown) - k.t);
@@ -254,8 +260,13 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
     `  ${what}: the editor alone and the app typed into alternately (${rounds} rounds of ${keys} keystrokes each, code pane ${pane.w}×${pane.h}): ` +
       `bare editor keystroke → next paint p50 ${q(floor, 0.5).toFixed(1)} ms, p95 ${q(floor, 0.95).toFixed(1)} ms (${floor.length}); ` +
       `app keystroke → diagram on screen p50 ${q(screen, 0.5).toFixed(1)} ms, p95 ${q(screen, 0.95).toFixed(1)} ms (${screen.filter(Number.isFinite).length} of ${screen.length} drawn); ` +
-      `ratio p50 ${ratio(0.5).toFixed(2)}×, p95 ${ratio(0.95).toFixed(2)}×; app long tasks ${long.length} (longest ${Math.max(0, ...long.map((e) => e.d)).toFixed(0)} ms)`,
+      `ratio p50 ${ratio(0.5).toFixed(2)}×, p95 ${ratio(0.95).toFixed(2)}×; app long tasks ${long.length} (longest ${Math.max(0, ...long.map((e) => e.d)).toFixed(0)} ms); ` +
+      `the page alone (the app with its edits not planned) keystroke → next paint p50 ${q(held, 0.5).toFixed(1)} ms, p95 ${q(held, 0.95).toFixed(1)} ms, ` +
+      `ratio p50 ${(q(held, 0.5) / q(floor, 0.5)).toFixed(2)}×, p95 ${(q(held, 0.95) / q(floor, 0.95)).toFixed(2)}×`,
   );
+  fig(`${tag}_alone_p50`, q(held, 0.5));
+  fig(`${tag}_alone_ratio_p50`, q(held, 0.5) / q(floor, 0.5));
+  fig(`${tag}_alone_ratio_p95`, q(held, 0.95) / q(floor, 0.95));
   fig(`${tag}_bare_p50`, q(floor, 0.5));
   fig(`${tag}_bare_p95`, q(floor, 0.95));
   fig(`${tag}_screen_p50`, q(screen, 0.5));

@@ -132,6 +132,13 @@ const FIGURES: &[Figure] = &[
         key: "v5_ratio_p95", what: "… ratio to the floor, p95", before: "2.5–3", target: "≤ 1.25", unit: "×"
     },
     Figure {
+        key: "v5_alone_ratio_p50",
+        what: "… the page alone (the app, its edits not planned) to its next paint, ratio to the floor, p50",
+        before: "1.25–1.28 (2026-11-27)",
+        target: "—",
+        unit: "×",
+    },
+    Figure {
         key: "k50_replan_p50",
         what: "50,000 lines: the worker's re-plan after a keystroke, p50",
         before: "10.6–16.7 (2026-11-26)",

@@ -30,8 +30,12 @@ const setText = (el, text) => {
   if (el.textContent !== text) el.textContent = text;
 };
 
-/** What the tests and the curious can look at: timings and state. */
-const probe = { ready: false, updates: [], frames: [], errors: [], result: null, mode: null };
+/**
+ * What the tests and the curious can look at: timings and state. `hold`:
+ * while true, edits are not planned (the bench measures the page alone;
+ * the next edit after it sends them).
+ */
+const probe = { ready: false, updates: [], frames: [], errors: [], result: null, mode: null, hold: false };
 window.__screwcut = probe;
 
 const state = {
@@ -126,7 +130,8 @@ function makeEditor(doc) {
     // The program is the editor's from now on.
     programSet = null;
     sync.changed(changes, before, after);
-    replan(after);
+    if (probe.hold) persist();
+    else replan(after);
   };
   editor = createEditor($('editor'), { doc, onChange, onCursor, words: editorWords() });
   editor.view.dom.addEventListener('keydown', (e) => planning.input(e.timeStamp), true);
