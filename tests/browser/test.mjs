@@ -160,8 +160,27 @@ try {
   const pos = errors.length ? await page.locator('#diagnostics li.error .pos').first().textContent() : '';
   check('the alarm gives line:column 25:13', pos === '25:13', pos);
   // The editor's underlines follow the drawings' frame.
-  await page.waitForSelector('.cm-lintRange-error', { timeout: 5_000 }).catch(() => {});
-  check('the editor underlines it', (await page.locator('.cm-lintRange-error').count()) > 0);
+  await page.waitForSelector('.cm-diag-error', { timeout: 5_000 }).catch(() => {});
+  check('the editor underlines it', (await page.locator('.cm-diag-error').count()) > 0);
+  // Its message on hover and as its line's gutter marker's title, as the list says it; F8 goes to it.
+  const code = errors.length ? (await page.locator('#diagnostics li.error .code').first().textContent()).slice(1, -1) : '?';
+  await page.locator('.cm-diag-error').first().hover();
+  const tip = await page.waitForSelector('.cm-diag-tip', { timeout: 3_000 }).then((e) => e.textContent()).catch(() => '');
+  const said = tip.replace(/ \([^)]*\)$/, '');
+  check('hovering the underline shows the alarm\'s message and code', tip.endsWith(`(${code})`) && said.length > 5 && errors[0].includes(said), JSON.stringify([tip, errors[0]]));
+  const marker = (await page.locator('.cm-diag-marker-error').first().getAttribute('title').catch(() => '')) || '';
+  check('the gutter marks its line with the message as the title', marker.includes(tip), JSON.stringify(marker));
+  await page.evaluate(() => window.__screwcut.editor().goto(25, 1));
+  await page.keyboard.press('F8');
+  const f8 = await page.evaluate(() => {
+    const v = window.__screwcut.editor().view;
+    const head = v.state.selection.main.head;
+    const line = v.state.doc.lineAt(head);
+    return `${line.number}:${head - line.from + 1}`;
+  });
+  check('F8 goes to the next diagnostic: the alarm at 25:13', f8 === '25:13', f8);
+  await page.keyboard.press('End');
+  await page.keyboard.press('ArrowLeft');
   // A key typed at the end of an underlined word and deleted before its plan's underlines come
   // changes that line's DOM only: the highlighter's marks sit inside the diagnostics' marks (with
   // them outside, CodeMirror redrew every line in view on the Backspace: 14 DOM changes here, some

@@ -5,10 +5,10 @@
 // a hint in an empty program.
 
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
-import { lintGutter, lintKeymap, setDiagnostics } from '@codemirror/lint';
 import { highlightSelectionMatches, search, searchKeymap } from '@codemirror/search';
 import { Compartment, EditorState, RangeSetBuilder, StateEffect, StateField } from '@codemirror/state';
 import { Decoration, drawSelection, EditorView, highlightActiveLine, highlightActiveLineGutter, keymap, lineNumbers, placeholder } from '@codemirror/view';
+import { diagnostics, showDiagnostics } from './diagnostics.js';
 import { gcode } from './gcode.js';
 
 const setMarked = StateEffect.define();
@@ -70,12 +70,12 @@ export function createEditor(parent, { doc, onChange, onCursor, words }) {
         drawSelection(),
         highlightActiveLine(),
         gcode(),
-        lintGutter(),
+        diagnostics(),
         marked,
         search({ top: true }),
         highlightSelectionMatches(),
         language.of(wordsOf(words)),
-        keymap.of([...defaultKeymap, ...historyKeymap, ...searchKeymap, ...lintKeymap]),
+        keymap.of([...defaultKeymap, ...historyKeymap, ...searchKeymap]),
         EditorView.updateListener.of((u) => {
           if (u.docChanged) {
             if (pending) pending.changes = pending.changes ? pending.changes.compose(u.changes) : u.changes;
@@ -106,13 +106,7 @@ export function createEditor(parent, { doc, onChange, onCursor, words }) {
   }
 
   function show(list) {
-    const len = view.state.doc.length;
-    const diags = list.map((d) => {
-      const from = Math.min(d.from, len);
-      const to = Math.min(Math.max(d.to, from), len);
-      return { from, to, severity: d.severity === 'error' ? 'error' : d.severity, message: d.message, source: d.code };
-    });
-    view.dispatch(setDiagnostics(view.state, diags));
+    view.dispatch(showDiagnostics(list));
   }
 
   return {
