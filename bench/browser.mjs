@@ -211,9 +211,10 @@ async function typeDigits(page, keys) {
  * typed and deleted, 150 ms apart). On the bare editor a keystroke counts to
  * its next paint; in the app to the diagram on screen: the later of its next
  * paint and the first committed drawing that includes it (the app's mark). Prints
- * p50/p95 of both and their ratio; long tasks in the app while typing; and
- * the page alone: the app with its edits not planned (`hold`), to its next
- * paint, against the same floor.
+ * p50/p95 of both and their ratio; long tasks in the app while typing; of
+ * the app's, its own next paint and its drawing apart (which one the figure
+ * waited for); and the page alone: the app with its edits not planned
+ * (`hold`), to its next paint, against the same floor.
  */
 async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const app = await openPlanned(text, dialect);
@@ -231,6 +232,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const floor = [];
   const screen = [];
   const held = [];
+  const split = []; // the app's keystrokes: its own next paint and its drawing
   const long = [];
   for (let r = 0; r < rounds; r++) {
     for (const [page, into] of [[bare, floor], [app, screen], [app, held]]) {
@@ -246,6 +248,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
         else {
           const shown = Math.min(...m.drawn.filter((d) => d.input >= k.t).map((d) => d.shown));
           into.push(Math.max(k.paint, shown) - k.t);
+          split.push({ paint: k.paint - k.t, drawn: shown - k.t });
         }
       }
       if (page === app) long.push(...m.long);
@@ -264,6 +267,15 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
       `the page alone (the app with its edits not planned) keystroke → next paint p50 ${q(held, 0.5).toFixed(1)} ms, p95 ${q(held, 0.95).toFixed(1)} ms, ` +
       `ratio p50 ${(q(held, 0.5) / q(floor, 0.5)).toFixed(2)}×, p95 ${(q(held, 0.95) / q(floor, 0.95)).toFixed(2)}×`,
   );
+  // Which of the two the figure waited for: the page's own paint, or the worker's drawing.
+  const later = split.filter((x) => x.drawn > x.paint + 1).length;
+  console.log(
+    `    … of which the app's own next paint p50 ${q(split.map((x) => x.paint), 0.5).toFixed(1)} ms, its drawing committed p50 ${q(split.map((x) => x.drawn), 0.5).toFixed(1)} ms; ` +
+      `the drawing after the paint in ${later} of ${split.length}`,
+  );
+  fig(`${tag}_apppaint_p50`, q(split.map((x) => x.paint), 0.5));
+  fig(`${tag}_drawn_p50`, q(split.map((x) => x.drawn), 0.5));
+  fig(`${tag}_drawn_later`, later / Math.max(1, split.length));
   fig(`${tag}_alone_p50`, q(held, 0.5));
   fig(`${tag}_alone_ratio_p50`, q(held, 0.5) / q(floor, 0.5));
   fig(`${tag}_alone_ratio_p95`, q(held, 0.95) / q(floor, 0.95));
@@ -474,8 +486,8 @@ const steps = {
     await steps.v50();
   },
   // The two halves of `versus`, each alone (BENCH_ONLY=v5 or v50; not run when all steps run).
-  v5: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 4, keys: 10, text: program(5000), tag: 'v5', what: '5000 lines, in the first pass' }),
-  v50: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 3, keys: 10, text: program(50000), tag: 'v50', what: '50000 lines, in the first pass' }),
+  v5: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 8, keys: 10, text: program(5000), tag: 'v5', what: '5000 lines, in the first pass' }),
+  v50: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 6, keys: 10, text: program(50000), tag: 'v50', what: '50000 lines, in the first pass' }),
   l99,
   pasted,
   wasmRate,

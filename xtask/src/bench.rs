@@ -139,6 +139,20 @@ const FIGURES: &[Figure] = &[
         unit: "×",
     },
     Figure {
+        key: "v5_apppaint_p50",
+        what: "… the app planning: its own next paint, p50 (the figure waits for the later of it and the drawing)",
+        before: "22–24 (2026-11-27)",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
+        key: "v5_drawn_later",
+        what: "… keystrokes whose drawing came after the page's paint",
+        before: "0.01–0.05 (2026-11-27)",
+        target: "—",
+        unit: "of all",
+    },
+    Figure {
         key: "k50_replan_p50",
         what: "50,000 lines: the worker's re-plan after a keystroke, p50",
         before: "10.6–16.7 (2026-11-26)",
