@@ -269,12 +269,11 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   );
   // Which of the two the figure waited for: the page's own paint, or the worker's drawing.
   const later = split.filter((x) => x.drawn > x.paint + 1).length;
-  console.log(
-    `    … of which the app's own next paint p50 ${q(split.map((x) => x.paint), 0.5).toFixed(1)} ms, its drawing committed p50 ${q(split.map((x) => x.drawn), 0.5).toFixed(1)} ms; ` +
-      `the drawing after the paint in ${later} of ${split.length}`,
-  );
-  fig(`${tag}_apppaint_p50`, q(split.map((x) => x.paint), 0.5));
-  fig(`${tag}_drawn_p50`, q(split.map((x) => x.drawn), 0.5));
+  const paint = q(split.map((x) => x.paint), 0.5);
+  const drawn = q(split.map((x) => x.drawn), 0.5);
+  console.log(`    … of which the app's own next paint p50 ${paint.toFixed(1)} ms, its drawing committed p50 ${drawn.toFixed(1)} ms; the drawing after the paint in ${later} of ${split.length}`);
+  fig(`${tag}_apppaint_p50`, paint);
+  fig(`${tag}_drawn_p50`, drawn);
   fig(`${tag}_drawn_later`, later / Math.max(1, split.length));
   fig(`${tag}_alone_p50`, q(held, 0.5));
   fig(`${tag}_alone_ratio_p50`, q(held, 0.5) / q(floor, 0.5));

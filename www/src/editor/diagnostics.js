@@ -110,8 +110,8 @@ function at(state, pos) {
   const found = [];
   let from = pos;
   let to = pos;
+  // The ranges that touch `pos`: those that start at or before it and end at or after it.
   state.field(field).marks.between(pos, pos, (a, b, deco) => {
-    if (a === b ? a !== pos : pos < a || pos > b) return;
     found.push(...deco.spec.diagnostics);
     from = Math.min(from, a);
     to = Math.max(to, b);
