@@ -15,34 +15,89 @@ const MAX_POINTS: usize = 100_000;
 
 /// The filled sections of `plan`'s turned outline, as items (no source lines: hovering the part marks nothing).
 pub fn pieces(plan: &Plan) -> Vec<Item> {
-    if plan.threads.iter().any(|t| t.internal) {
+    if !filled(plan) {
         return Vec::new();
     }
+    let mut total = 0usize;
+    let mut out = pieces_from(&plan.moves, 0, plan.moves.len());
+    out.retain(|i| within_cap(&mut total, i));
+    out
+}
+
+/// Counts `item`'s points into `total`, the points of the sections before
+/// it: whether it is still drawn (once past [`MAX_POINTS`], no later section is).
+pub fn within_cap(total: &mut usize, item: &Item) -> bool {
+    if let Shape::Polygon { points } = &item.shape {
+        *total += points.len();
+    }
+    *total <= MAX_POINTS
+}
+
+/// Whether `plan` has filled sections at all (an internal thread's part is not filled).
+pub fn filled(plan: &Plan) -> bool {
+    !plan.threads.iter().any(|t| t.internal)
+}
+
+/// Whether `m` is a feed or an arc: what the outline is made of.
+pub fn is_feed(m: &Move) -> bool {
+    matches!(m.kind, MoveKind::Feed | MoveKind::Arc)
+}
+
+/// Whether feed `m` goes on from feed `prev` (it starts where `prev` ends): the same run.
+fn continues(prev: &Move, m: &Move) -> bool {
+    if !(is_feed(prev) && is_feed(m)) {
+        return false;
+    }
+    // A feed's points end at its end point (`arc_points` ends there too).
+    let (p, from) = (world(prev.to), world(m.from));
+    !((p[0] - from[0]).abs() > 1e-9 || (p[1] - from[1]).abs() > 1e-9)
+}
+
+/// The end of the run of feeds going on at `moves[e]`: the first move from
+/// `e` on that does not continue the one before it (`e` when none does).
+pub fn run_end(moves: &[Move], e: usize) -> usize {
+    let mut k = e;
+    while k > 0 && k < moves.len() && continues(&moves[k - 1], &moves[k]) {
+        k += 1;
+    }
+    k
+}
+
+/// The filled sections (uncapped) of the runs of feeds that begin among
+/// `moves[s..e]`, each read to its end (past `e` when it goes on, up to
+/// [`run_end`]); a run begun before `s` is left to the sections before.
+/// What it reads is `moves[s - 1..run_end(moves, e)]`.
+pub fn pieces_from(moves: &[Move], s: usize, e: usize) -> Vec<Item> {
     let mut out = Vec::new();
     let mut chain: Vec<Pt> = Vec::new();
-    let mut total = 0usize;
-    let mut close = |chain: &mut Vec<Pt>, out: &mut Vec<Item>| {
+    let close = |chain: &mut Vec<Pt>, out: &mut Vec<Item>| {
         if let Some(poly) = polygon(chain) {
-            total += poly.len();
-            if total <= MAX_POINTS {
-                out.push(Item::new(Shape::Polygon { points: poly.into() }, Style::Material));
-            }
+            out.push(Item::new(Shape::Polygon { points: poly.into() }, Style::Material));
         }
         chain.clear();
     };
-    for m in &plan.moves {
-        if !matches!(m.kind, MoveKind::Feed | MoveKind::Arc) {
+    let mut k = s;
+    while k < e && k > 0 && continues(&moves[k - 1], &moves[k]) {
+        k += 1;
+    }
+    if k >= e {
+        return out; // no run begins here
+    }
+    while k < moves.len() {
+        let m = &moves[k];
+        if !(k > 0 && continues(&moves[k - 1], m)) {
             close(&mut chain, &mut out);
-            continue;
+            if k >= e {
+                break;
+            }
         }
-        let from = world(m.from);
-        if chain.last().is_some_and(|p| (p[0] - from[0]).abs() > 1e-9 || (p[1] - from[1]).abs() > 1e-9) {
-            close(&mut chain, &mut out);
+        if is_feed(m) {
+            if chain.is_empty() {
+                chain.push(world(m.from));
+            }
+            extend(&mut chain, m);
         }
-        if chain.is_empty() {
-            chain.push(from);
-        }
-        extend(&mut chain, m);
+        k += 1;
     }
     close(&mut chain, &mut out);
     out

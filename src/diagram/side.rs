@@ -165,16 +165,21 @@ impl Layout {
 /// motions of one block that holds a roughing cut.
 pub fn roughing_rapids(moves: &[Move]) -> Vec<bool> {
     let mut out = vec![false; moves.len()];
-    let mut start = 0;
-    while start < moves.len() {
-        let line = moves[start].line;
-        let end = moves[start..].iter().position(|m| m.line != line).map_or(moves.len(), |k| start + k);
-        if moves[start..end].iter().any(|m| m.kind == MoveKind::Rough) {
-            for k in start..end {
-                out[k] = moves[k].kind == MoveKind::Rapid;
+    // One pass: each run of motions of one line, marked when it ends.
+    let (mut start, mut rough) = (0, false);
+    for k in 0..=moves.len() {
+        if k == moves.len() || moves[k].line != moves[start].line {
+            if rough {
+                for (o, m) in out[start..k].iter_mut().zip(&moves[start..k]) {
+                    *o = m.kind == MoveKind::Rapid;
+                }
             }
+            if k == moves.len() {
+                break;
+            }
+            (start, rough) = (k, false);
         }
-        start = end;
+        rough |= moves[k].kind == MoveKind::Rough;
     }
     out
 }

@@ -572,3 +572,17 @@ fn the_focus_grown_by_groups_of_rapids_is_the_focus_grown_point_by_point() {
         assert_eq!(a, b, "round {round}");
     }
 }
+
+/// The rapids of a roughing cycle are those of a run of one line's motions
+/// that holds a roughing cut; a line read again later is another run.
+#[test]
+fn roughing_rapids_are_the_rapids_of_a_line_that_roughs() {
+    use MoveKind::{Feed, Rapid, Rough};
+    let p = Point { x: 0.0, z: 0.0 };
+    let mv = |kind, line| Move { kind, from: p, to: p, line, span: Default::default(), arc: None };
+    let moves = [(Rapid, 1), (Rough, 1), (Rapid, 1), (Rapid, 2), (Feed, 2), (Rapid, 1), (Rapid, 3), (Rough, 3)]
+        .map(|(k, l)| mv(k, l));
+    let got = super::side::roughing_rapids(&moves);
+    assert_eq!(got, [true, false, true, false, false, false, true, false]);
+    assert!(super::side::roughing_rapids(&[]).is_empty());
+}

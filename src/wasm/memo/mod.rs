@@ -16,6 +16,7 @@ use super::keys::{KeyHasher, PlanKeys, combine, move_key, packed_key};
 use super::pack::pack;
 use crate::diagram::radial::{self, Break};
 use crate::diagram::scene::{Item, Pt, Rect, Scene, Shape, Style, ViewKind, hash_points, same_points};
+use crate::diagram::section;
 use crate::diagram::side::{
     Band, Layout, axis, capped_note, detail_note, grow_focus_grouped, motion_item, pass_items, thread_items,
     unmatched_item, work_extent_in,
@@ -241,7 +242,9 @@ pub struct SideMemo {
 /// One call's pieces: the head and the order, and which were built.
 struct Built {
     head: Scene,
-    /// Places of the pieces among the memo's, in scene order.
+    /// Places of the part's filled sections among the memo's, in scene order (after the axis).
+    sections: Vec<usize>,
+    /// Places of the other pieces among the memo's, in scene order.
     order: Vec<usize>,
 }
 
@@ -252,6 +255,7 @@ enum Tag {
     Front = 2,
     Motions = 3,
     Passes = 4,
+    Section = 5,
 }
 
 impl SideMemo {
@@ -270,18 +274,20 @@ impl SideMemo {
     /// their keys match.
     pub fn side(&mut self, plan: &Plan, keys: &PlanKeys) -> Scene {
         let b = self.build(plan, keys);
-        // As `side(plan)`: the axis, the part's section after it, the pieces,
-        // then every item through the radial breaks.
+        // As `side(plan)`: the axis, the part's section after it (not in the
+        // axis's length: `section::apply`), the pieces, then every item through the radial breaks.
         let mut scene = b.head;
-        crate::diagram::section::apply(&mut scene, plan);
+        for &i in &b.sections {
+            scene.bounds.union(&self.chunks[i].bounds);
+        }
         let mut extent = radial::extent(scene.items.iter());
-        for e in b.order.iter().map(|&i| self.chunks[i].extent) {
+        for e in b.sections.iter().chain(&b.order).map(|&i| self.chunks[i].extent) {
             extent = (crate::num::min(extent.0, e.0), crate::num::max(extent.1, e.1));
         }
         let list = radial::breaks(plan, extent);
         scene.items.iter_mut().for_each(|i| radial::map_item(&list, i));
         // The pieces go in whole, shared: no item is copied.
-        for &i in &b.order {
+        for &i in b.sections.iter().chain(&b.order) {
             scene.items.push_shared(self.chunks[i].drawn(&list, &mut self.shared));
         }
         self.shared.forget_unused();
@@ -301,7 +307,9 @@ impl SideMemo {
         let mut pieces = Pieces { chunks, index, shared, call: self.calls, built: Vec::new(), reused: 0 };
         let layout = Layout::of(plan);
         let thread_key = |ti: usize| thread_keys.get(ti).copied().unwrap_or(0);
-        let mut order: Vec<usize> = Vec::new();
+        // The part's filled sections first (they are put after the axis).
+        let mut order = sections(plan, &motion, &mut pieces);
+        let n_sections = order.len();
         // Each thread's band and dimensions: drawn from the thread and its turned work.
         let mut fronts = Vec::new();
         for (ti, t) in plan.threads.iter().enumerate() {
@@ -376,6 +384,10 @@ impl SideMemo {
         self.built = pieces.built.len();
         self.reused = pieces.reused;
         pieces.keep_taken(&mut order);
+        let (sections, order) = {
+            let rest = order.split_off(n_sections);
+            (order, rest)
+        };
         let head = {
             let chunks: Vec<&Chunk> = order.iter().map(|&i| &pieces.chunks[i]).collect();
             head(&chunks)
@@ -383,8 +395,55 @@ impl SideMemo {
         self.chunks = pieces.chunks;
         self.index = pieces.index;
         self.shared = pieces.shared;
-        Built { head, order }
+        Built { head, sections, order }
     }
+}
+
+/// The part's filled sections of `plan` as pieces, one per block of
+/// motions (the runs of feeds that begin in it, each read to its end),
+/// capped as [`section::pieces`] caps them; `motion` gives each motion's key.
+fn sections(plan: &Plan, motion: &impl Fn(usize) -> u64, pieces: &mut Pieces) -> Vec<usize> {
+    let mut out = Vec::new();
+    if !section::filled(plan) {
+        return out;
+    }
+    let moves = &plan.moves;
+    let mut total = 0;
+    for start in (0..moves.len()).step_by(BLOCK) {
+        let end = (start + BLOCK).min(moves.len());
+        // What the block's sections are read from: the motion before it (does its
+        // first run go on from there?) to the end of its last run.
+        let mut h = KeyHasher::default();
+        h.write_u64(Tag::Section as u64);
+        h.write_u8(u8::from(start == 0));
+        // Only the feeds are drawn from (of other motions, that they are not feeds).
+        let from = start.saturating_sub(1);
+        for (k, m) in moves[from..section::run_end(moves, end)].iter().enumerate() {
+            h.write_u64(if section::is_feed(m) { motion(from + k) } else { 0 });
+        }
+        let i = pieces
+            .take(h.finish(), || Chunk::of(section::pieces_from(moves, start, end).into_iter().map(|i| (i, false))));
+        let items = pieces.chunks[i].items.clone();
+        let mut within = total;
+        if items.iter().all(|item| section::within_cap(&mut within, item)) {
+            total = within;
+            if !items.is_empty() {
+                out.push(i);
+            }
+            continue;
+        }
+        // Past the cap: the sections up to it, and none after.
+        let kept: Vec<(Item, bool)> = items
+            .iter()
+            .filter(|item| section::within_cap(&mut total, item))
+            .map(|item| (item.clone(), false))
+            .collect();
+        if !kept.is_empty() {
+            out.push(pieces.put(Chunk::of(kept)));
+        }
+        break;
+    }
+    out
 }
 
 /// The items of the motions of no pass among `moves`.
@@ -420,119 +479,4 @@ fn head(pieces: &[&Chunk]) -> Scene {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::diagram::side;
-    use crate::dialect::Dialect;
-    use crate::settings::Settings;
-    use crate::wasm::keys::PlanKeys;
-
-    /// Threads turned on their own diameters (13 lines each), as an editor would hold them.
-    fn program(threads: usize) -> String {
-        let mut out = String::from("G50 X100 Z100\n");
-        for k in 0..threads {
-            let d = 30 + (k % 7) as u32;
-            out += &format!("G00 X{} Z70\nG01 X{d} F0.2\nZ20\nX{}\nG00 Z70\n", d + 10, d + 5);
-            for x in [0.9, 1.5] {
-                out += &format!("X{:.1}\nG32 Z13 F2\nG00 X{}\nZ70\n", f64::from(d) - x, d + 10);
-            }
-        }
-        out + "M30\n"
-    }
-
-    fn check(memo: &mut SideMemo, text: &str, settings: &Settings) -> (usize, usize) {
-        let plan = crate::plan(text, settings);
-        let keys = PlanKeys::of(&plan);
-        let got = memo.side(&plan, &keys);
-        assert_eq!(got, side(&plan), "{text}");
-        memo.counts()
-    }
-
-    /// Paths drawn again (the program repeats every seventh thread) share
-    /// their points, before and after an edit, and draw exactly as unshared.
-    #[test]
-    fn repeated_paths_share_their_points_and_draw_as_unshared() {
-        let s = Settings::new(Dialect::Gsk980tdc);
-        let mut memo = SideMemo::new();
-        let base = program(40);
-        let edited = base.replacen("X29.1", "X29.15", 1);
-        for text in [&base, &edited, &base] {
-            let plan = crate::plan(text, &s);
-            let got = memo.side(&plan, &PlanKeys::of(&plan));
-            let paths: Vec<usize> = got
-                .items
-                .iter()
-                .filter_map(|i| match &i.shape {
-                    Shape::Polyline { points } | Shape::Polygon { points } => Some(points.as_ptr() as usize),
-                    _ => None,
-                })
-                .collect();
-            let mut held = paths.clone();
-            held.sort_unstable();
-            held.dedup();
-            assert!(held.len() * 4 < paths.len(), "{} points held by {} paths", held.len(), paths.len());
-            let whole = side(&plan);
-            for width in [936.0, 390.0] {
-                let view = crate::draw::View { width, height: 420.0, ..Default::default() };
-                assert_eq!(crate::draw::display(&got, &view), crate::draw::display(&whole, &view));
-            }
-        }
-    }
-
-    #[test]
-    fn reused_pieces_give_the_whole_scene() {
-        let s = Settings::new(Dialect::Gsk980tdc);
-        let mut memo = SideMemo::new();
-        let base = program(40);
-        let (built, reused) = check(&mut memo, &base, &s);
-        assert_eq!(reused, 0);
-        assert!(built > 80, "{built} pieces");
-        // The same program again: nothing is built.
-        assert_eq!(check(&mut memo, &base, &s), (0, built));
-        // One pass of the last thread: its band, dimensions and passes only.
-        let lines: Vec<&str> = base.lines().collect();
-        let n = lines.len();
-        let mut edited: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
-        edited[n - 9] = format!("{}1", edited[n - 9]);
-        let edited = edited.join("\n") + "\n";
-        let (b, r) = check(&mut memo, &edited, &s);
-        assert_eq!(b, 3, "band, dimensions and the passes of one thread");
-        assert_eq!(b + r, built);
-        // Edits of every kind, one after the other on one memo.
-        let edits = [
-            base.replacen("Z20", "Z21", 1),
-            base.replacen("G50 X100 Z100", "G50 X100 Z100 (a comment)", 1),
-            base.replacen("X29.1", "X29.1\nG00 X80", 1),
-            base[..base.len() / 3].to_string(),
-            format!("G00 X90 Z90\n{base}"),
-            base.replace("G32 Z13 F2", "G32 Z13 F2.5"),
-            // A thread of a larger crest after the others: the radial break moves
-            // while their pieces are reused (drawn again through the new break).
-            base.replacen("M30\n", "G00 X48 Z70\nG01 X38 F0.2\nZ20\nX43\nG00 Z70\nX37.1\nG32 Z13 F2\nG00 X48\nZ70\nX36.5\nG32 Z13 F2\nG00 X48\nZ70\nM30\n", 1),
-            base.clone(),
-            String::new(),
-            base.clone(),
-            include_str!("../../examples/g78-flank-alternating.nc").to_string(),
-            include_str!("../../examples/g92-two-start.nc").to_string(),
-            include_str!("../../examples/o0009.nc").to_string(),
-            include_str!("../../examples/g32-continuous.nc").to_string(),
-        ];
-        for text in &edits {
-            check(&mut memo, text, &s);
-        }
-        for text in [include_str!("../../examples/renhe-tails.nc"), "G33 W-40 F1.5\n"] {
-            check(&mut memo, text, &Settings::new(Dialect::Renhe));
-        }
-        // A plan cut short by the motion limit; and one whose last passes
-        // lost their motions, drawn from their own points.
-        let mut few = Settings::new(Dialect::Fanuc0i);
-        few.assign("limits.moves=12").unwrap();
-        let g76 = include_str!("../../examples/g76-fanuc.nc");
-        check(&mut memo, g76, &few);
-        let mut plan = crate::plan(g76, &Settings::new(Dialect::Fanuc0i));
-        plan.moves.truncate(plan.moves.len() / 2);
-        assert!(!Layout::of(&plan).unmatched(&plan).is_empty(), "some passes have no motions");
-        let keys = PlanKeys::of(&plan);
-        assert_eq!(memo.side(&plan, &keys), side(&plan));
-    }
-}
+mod tests;
