@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::message::{Args, Lang, Message, Template};
-use crate::span::{LineCol, LineIndex, Span};
+use crate::span::{LineIndex, Span};
 
 pub use crate::code::{Code, Severity};
 
@@ -239,69 +239,81 @@ impl Diagnostics {
     /// some were dropped, a last `more-diagnostics` note says how many, at
     /// the first one dropped.
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
-        self.finish_after(text, index, &[])
+        self.finish_after(text, index, Vec::new())
     }
 
     /// [`Diagnostics::finish`], taking the English text of a message equal
     /// to one in `before` (the last plan's diagnostics) from there instead
     /// of writing it again: after an edit most messages are the last
-    /// plan's, moved or not.
-    pub fn finish_after(self, text: &str, index: &LineIndex, before: &[Diagnostic]) -> Vec<Diagnostic> {
-        let written = Written::of(before);
+    /// plan's, moved or not. The texts are moved out of `before`, not copied.
+    pub fn finish_after(self, text: &str, index: &LineIndex, before: Vec<Diagnostic>) -> Vec<Diagnostic> {
+        let mut written = Written::of(before);
         let mut items = self.items;
         if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
             items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span, None));
         }
-        let mut out: Vec<Diagnostic> = items
-            .into_iter()
-            .map(|(m, span, via)| {
-                let LineCol { line, column } = index.locate(text, span.start as usize);
-                let end = index.locate(text, span.end as usize);
-                let code = m.code();
-                let key = message_key(m.template, &m.args);
-                Diagnostic {
-                    severity: code.severity(),
-                    code,
-                    message: written.get(key, &m).unwrap_or_else(|| m.render(Lang::En)),
-                    template: m.template,
-                    args: m.args,
-                    line,
-                    column,
-                    end_line: end.line,
-                    end_column: end.column,
-                    span,
-                    via: via.map_or_else(Vec::new, |v| v.to_vec()),
-                    key,
-                }
-            })
-            .collect();
+        let mut out: Vec<Diagnostic> = Vec::with_capacity(items.len());
+        for (m, span, via) in items {
+            let (start, end) = index.locate_span(text, span.start as usize, span.end as usize);
+            let code = m.code();
+            let key = message_key(m.template, &m.args);
+            let message = written.take(key, &m, &out).unwrap_or_else(|| m.render(Lang::En));
+            written.given(key, out.len());
+            out.push(Diagnostic {
+                severity: code.severity(),
+                code,
+                message,
+                template: m.template,
+                args: m.args,
+                line: start.line,
+                column: start.column,
+                end_line: end.line,
+                end_column: end.column,
+                span,
+                via: via.map_or_else(Vec::new, |v| v.to_vec()),
+                key,
+            });
+        }
         crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
         out
     }
 }
 
 /// The English texts of earlier diagnostics, found by their message
-/// (template and arguments), wherever they were.
-struct Written<'a> {
-    before: &'a [Diagnostic],
+/// (template and arguments), wherever they were: each moved out once, then
+/// copied from the new diagnostic that took it.
+struct Written {
+    before: Vec<Diagnostic>,
     by_key: std::collections::HashMap<u64, usize, crate::hash::BuildKeyHasher>,
+    /// Where among the new diagnostics the first with each key is.
+    taken: std::collections::HashMap<u64, usize, crate::hash::BuildKeyHasher>,
 }
 
-impl<'a> Written<'a> {
+impl Written {
     /// The texts of `before`.
-    fn of(before: &'a [Diagnostic]) -> Written<'a> {
+    fn of(before: Vec<Diagnostic>) -> Written {
         let mut by_key = std::collections::HashMap::default();
         by_key.reserve(before.len());
         for (i, d) in before.iter().enumerate() {
             by_key.insert(d.key, i);
         }
-        Written { before, by_key }
+        Written { before, by_key, taken: std::collections::HashMap::default() }
     }
 
-    /// The text of a diagnostic of `before` with the same message as `m`, whose key is `key`.
-    fn get(&self, key: u64, m: &Message) -> Option<String> {
-        let d = &self.before[*self.by_key.get(&key)?];
-        (std::ptr::eq(d.template, m.template) && d.args == m.args).then(|| d.message.clone())
+    /// The text of a diagnostic with the same message as `m`, whose key is
+    /// `key`: of `out` (the new diagnostics so far), else moved out of `before`.
+    fn take(&mut self, key: u64, m: &Message, out: &[Diagnostic]) -> Option<String> {
+        let same = |d: &Diagnostic| std::ptr::eq(d.template, m.template) && d.args == m.args;
+        if let Some(d) = self.taken.get(&key).map(|&j| &out[j]) {
+            return same(d).then(|| d.message.clone());
+        }
+        let d = &mut self.before[*self.by_key.get(&key)?];
+        (same(d) && !d.message.is_empty()).then(|| std::mem::take(&mut d.message))
+    }
+
+    /// The new diagnostic at `at` in `out` has the message of key `key` (the first one kept).
+    fn given(&mut self, key: u64, at: usize) {
+        self.taken.entry(key).or_insert(at);
     }
 }
 
@@ -341,10 +353,15 @@ mod tests {
         assert_eq!(before[0].message, "3 more diagnostics from here on are not shown (setting limits.diagnostics)");
         // A marked text shows that it was taken, not written again.
         before[0].message = "kept".into();
-        let moved = one(3, 7).finish_after(text, &index, &before);
+        let moved = one(3, 7).finish_after(text, &index, before.clone());
         assert_eq!((moved[0].message.as_str(), moved[0].line), ("kept", 2));
         // Other arguments: written anew.
-        let other = one(4, 7).finish_after(text, &index, &before);
+        let other = one(4, 7).finish_after(text, &index, before.clone());
         assert_eq!(other[0].message, "4 more diagnostics from here on are not shown (setting limits.diagnostics)");
+        // Two equal messages now where there was one: both take its text.
+        let mut two = one(3, 0);
+        two.push(&MORE_DIAGNOSTICS, Span::new(7, 9), crate::args![n = 3]);
+        let both = two.finish_after(text, &index, before);
+        assert_eq!(both.iter().map(|d| (d.message.as_str(), d.line)).collect::<Vec<_>>(), [("kept", 1), ("kept", 2)]);
     }
 }

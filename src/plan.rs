@@ -525,7 +525,7 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    finish_with(text, settings, out, starts, &[], |threads, moves, spans, room| {
+    finish_with(text, settings, out, starts, Vec::new(), |threads, moves, spans, room| {
         let mut advice = Diagnostics::with_limit(room);
         for i in 0..threads.len() {
             finish_thread(threads, i, moves, settings, text, &mut advice, spans);
@@ -564,7 +564,7 @@ pub(crate) fn finish_with(
     settings: &Settings,
     out: Outputs,
     starts: Vec<u32>,
-    before: &[Diagnostic],
+    before: Vec<Diagnostic>,
     advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Diagnostics,
 ) -> Plan {
     let Outputs { mut diags, moves, mut threads, inch } = out;

@@ -294,7 +294,7 @@ impl Planner {
         let settings = &self.settings;
         let mut refinished = Vec::new();
         let plan =
-            finish_with(text, settings, out, self.line_starts.clone(), &before, |threads, moves, spans, room| {
+            finish_with(text, settings, out, self.line_starts.clone(), before, |threads, moves, spans, room| {
                 for i in advice.len()..threads.len() {
                     // A thread of the last reading's rest, finished then, stays finished when
                     // the edit is not in the text it was finished from.

@@ -129,6 +129,25 @@ impl LineIndex {
         let column = char_column(&text[start..], offset - start);
         LineCol { line: line as u32 + 1, column }
     }
+
+    /// [`LineIndex::locate`] of a span's `start` and `end` (`start <= end`):
+    /// the end's line found on from the start's (a span is most often on one line).
+    pub fn locate_span(&self, text: &str, start: usize, end: usize) -> (LineCol, LineCol) {
+        let a = self.locate(text, start);
+        let end = end.min(text.len());
+        if end < start.min(text.len()) {
+            return (a, self.locate(text, end));
+        }
+        let mut line = a.line as usize - 1;
+        for _ in 0..8 {
+            if self.starts.get(line + 1).is_none_or(|&s| s as usize > end) {
+                let from = self.starts[line] as usize;
+                return (a, LineCol { line: line as u32 + 1, column: char_column(&text[from..], end - from) });
+            }
+            line += 1;
+        }
+        (a, self.locate(text, end))
+    }
 }
 
 /// 1-based character column of byte `offset` within `line_text`.
@@ -144,6 +163,20 @@ pub fn char_column(line_text: &str, offset: usize) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A span's two ends located together are each located alone: on one
+    /// line, a few lines apart, many lines apart, past the text's end.
+    #[test]
+    fn a_spans_ends_are_located_as_each_alone() {
+        let text = "G00 X1\r\nＧ32 Z2\rM30\n\n\n1\n2\n3\n4\n5\n6\n7\n8\n9\n10\nX（1）\n";
+        for idx in [LineIndex::new(text), LineIndex::from_starts(text, vec![0, 8])] {
+            for a in (0..=text.len() + 2).filter(|&a| a >= text.len() || text.is_char_boundary(a)) {
+                for b in (a..=text.len() + 2).filter(|&b| b >= text.len() || text.is_char_boundary(b)) {
+                    assert_eq!(idx.locate_span(text, a, b), (idx.locate(text, a), idx.locate(text, b)), "{a}..{b}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn lines_and_columns() {
