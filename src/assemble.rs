@@ -40,13 +40,11 @@ pub struct Mark {
 }
 
 impl Mark {
-    /// The mark as reached in a text edited as `s` says, with `moves` more motions and `threads` more threads.
-    pub fn shifted(&self, moves: isize, threads: isize, s: crate::span::Shift) -> Mark {
-        Mark {
-            group: self.group.shifted(moves, s),
-            moves: self.moves.saturating_add_signed(moves),
-            threads: self.threads.saturating_add_signed(threads),
-        }
+    /// Makes the mark as reached in a text edited as `s` says, with `moves` more motions and `threads` more threads.
+    pub fn shift(&mut self, moves: isize, threads: isize, s: crate::span::Shift) {
+        self.group.shift(moves, s);
+        self.moves = self.moves.saturating_add_signed(moves);
+        self.threads = self.threads.saturating_add_signed(threads);
     }
 }
 

@@ -101,6 +101,11 @@ impl Cuts {
         self.chunks.iter().flat_map(|c| c.iter())
     }
 
+    /// Changes every chain (a chunk shared with a snapshot is copied first).
+    fn each_mut(&mut self, mut f: impl FnMut(&mut Chain)) {
+        self.chunks.iter_mut().for_each(|c| Rc::make_mut(c).iter_mut().for_each(&mut f));
+    }
+
     /// Every chain, the list emptied.
     fn take_all(&mut self) -> Vec<Chain> {
         self.len = 0;
@@ -144,29 +149,24 @@ pub struct Grouper {
 }
 
 impl Chain {
-    /// The chain as read from a text edited as `s` says, with `moves` more motions before it.
-    pub fn shifted(&self, moves: isize, s: Shift) -> Chain {
-        let mut c = self.clone();
-        c.span = s.span(c.span);
-        c.first_move = c.first_move.saturating_add_signed(moves);
-        c.moves = c.moves.shifted(moves);
-        c
+    /// Makes the chain as read from a text edited as `s` says, with `moves` more motions before it.
+    pub fn shift(&mut self, moves: isize, s: Shift) {
+        self.span = s.span(self.span);
+        self.first_move = self.first_move.saturating_add_signed(moves);
+        self.moves = self.moves.shifted(moves);
     }
 }
 
 impl Grouper {
-    /// The state as reached in a text edited as `s` says, with `moves` more
-    /// motions before it (to compare with a reading of an edited text).
-    pub fn shifted(&self, moves: isize, s: Shift) -> Grouper {
-        let infeed = self.infeed.map(|i| i.map(|(line, mv)| (line, mv.map(|m| m.saturating_add_signed(moves)))));
-        Grouper {
-            chain: self.chain.as_ref().map(|c| c.shifted(moves, s)),
-            cuts: self.cuts.iter().map(|c| c.shifted(moves, s)).collect(),
-            after: self.after,
-            infeed,
-            back_across: self.back_across.map(|m| m.saturating_add_signed(moves)),
-            via: self.via.clone(),
+    /// Makes the state as reached in a text edited as `s` says, with `moves`
+    /// more motions before it (to compare with a reading of an edited text).
+    pub fn shift(&mut self, moves: isize, s: Shift) {
+        self.infeed = self.infeed.map(|i| i.map(|(line, mv)| (line, mv.map(|m| m.saturating_add_signed(moves)))));
+        if let Some(c) = &mut self.chain {
+            c.shift(moves, s);
         }
+        self.cuts.each_mut(|c| c.shift(moves, s));
+        self.back_across = self.back_across.map(|m| m.saturating_add_signed(moves));
     }
 
     /// A rapid with axis words `x`, `z` on `line` (its motion's index, if it

@@ -171,17 +171,18 @@ impl Snapshot {
     /// The snapshot as reached in a text edited as `s` says, with `moves`,
     /// `threads` and `diags` more motions, threads and diagnostics.
     pub fn shifted(&self, moves: isize, threads: isize, diags: isize, s: Shift) -> Snapshot {
-        let mut modal = self.modal.clone();
+        let mut c = self.clone();
+        c.shift(moves, threads, diags, s);
+        c
+    }
+
+    /// [`Snapshot::shifted`] in place.
+    pub fn shift(&mut self, moves: isize, threads: isize, diags: isize, s: Shift) {
         // The one byte position the modal state holds (where an end-of-program finding goes).
-        modal.last_span = s.span(modal.last_span);
-        let mut exec = self.exec.clone();
-        exec.shift(s);
-        Snapshot {
-            modal,
-            exec,
-            plan: self.plan.shifted(moves, threads, s),
-            diags: (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|d| s.span(d))),
-        }
+        self.modal.last_span = s.span(self.modal.last_span);
+        self.exec.shift(s);
+        self.plan.shift(moves, threads, s);
+        self.diags = (self.diags.0.saturating_add_signed(diags), self.diags.1, self.diags.2.map(|d| s.span(d)));
     }
 
     /// Whether reading goes on from here exactly as from `other` (the same

@@ -198,8 +198,8 @@ impl Planner {
                     for c in &mut self.checkpoints {
                         // A checkpoint taken inside a subprogram written after the edit moves too.
                         c.offset = s.pos(c.offset);
-                        c.snap = c.snap.shifted(0, 0, 0, s);
-                        c.reads = c.reads.shifted(s);
+                        c.snap.shift(0, 0, 0, s);
+                        c.reads.shift(s);
                     }
                 }
                 let cp = &self.checkpoints[ci];
@@ -293,27 +293,26 @@ impl Planner {
         let join = self.join.as_ref();
         let settings = &self.settings;
         let mut refinished = Vec::new();
-        let plan =
-            finish_with(text, settings, out, self.line_starts.clone(), before, |threads, moves, spans, room| {
-                for i in advice.len()..threads.len() {
-                    // A thread of the last reading's rest, finished then, stays finished when
-                    // the edit is not in the text it was finished from.
-                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &mut old_advice, kept_threads)) {
-                        advice.push(kept);
-                        continue;
-                    }
-                    let mut d = Diagnostics::with_limit(usize::MAX);
-                    refinished.push(i);
-                    finish_thread(threads, i, moves, settings, text, &mut d, spans);
-                    advice.push(d.into_items());
+        let plan = finish_with(text, settings, out, self.line_starts.clone(), before, |threads, moves, spans, room| {
+            for i in advice.len()..threads.len() {
+                // A thread of the last reading's rest, finished then, stays finished when
+                // the edit is not in the text it was finished from.
+                if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &mut old_advice, kept_threads)) {
+                    advice.push(kept);
+                    continue;
                 }
-                // Copies of the kept advice, only as many as the plan keeps (the rest is counted).
-                let mut all = Diagnostics::with_limit(room);
-                for item in advice.iter().flatten() {
-                    all.push_copy(item);
-                }
-                all
-            });
+                let mut d = Diagnostics::with_limit(usize::MAX);
+                refinished.push(i);
+                finish_thread(threads, i, moves, settings, text, &mut d, spans);
+                advice.push(d.into_items());
+            }
+            // Copies of the kept advice, only as many as the plan keeps (the rest is counted).
+            let mut all = Diagnostics::with_limit(room);
+            for item in advice.iter().flatten() {
+                all.push_copy(item);
+            }
+            all
+        });
         self.changed = changed.map(|c| Changed { refinished, ..c });
         self.plan.insert(plan)
     }
@@ -500,9 +499,13 @@ impl Planner {
         self.last_repeated = t.repeated.0.saturating_add_signed(recount);
         // The reads up to the joined checkpoint are the new reading's; after it, the last reading's.
         let mut reads = Some(std::mem::take(&mut r.reads));
-        for c in t.checkpoints.drain(k..) {
-            let snap = c.snap.shifted(dm, dt, dd, s).recounted(recount);
-            let reads = reads.take().unwrap_or_else(|| c.reads.shifted(s));
+        for mut c in t.checkpoints.drain(k..) {
+            c.snap.shift(dm, dt, dd, s);
+            let snap = c.snap.recounted(recount);
+            let reads = reads.take().unwrap_or_else(|| {
+                c.reads.shift(s);
+                c.reads
+            });
             self.checkpoints.push(Checkpoint { offset: s.pos(c.offset), line: c.line, snap, reads });
         }
         self.last_reads = t.last_reads.shifted(s);

@@ -138,13 +138,12 @@ impl LineIndex {
         if end < start.min(text.len()) {
             return (a, self.locate(text, end));
         }
-        let mut line = a.line as usize - 1;
-        for _ in 0..8 {
+        let first = a.line as usize - 1;
+        for line in first..first + 8 {
             if self.starts.get(line + 1).is_none_or(|&s| s as usize > end) {
                 let from = self.starts[line] as usize;
                 return (a, LineCol { line: line as u32 + 1, column: char_column(&text[from..], end - from) });
             }
-            line += 1;
         }
         (a, self.locate(text, end))
     }

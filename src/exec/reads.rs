@@ -41,7 +41,14 @@ impl Reads {
 
     /// The same reads in a text edited as `s` says.
     pub fn shifted(&self, s: Shift) -> Reads {
-        Reads { runs: self.runs.iter().map(|&(a, b)| (s.pos(a), s.pos(b))).collect(), looked: self.looked }
+        let mut r = self.clone();
+        r.shift(s);
+        r
+    }
+
+    /// [`Reads::shifted`] in place.
+    pub fn shift(&mut self, s: Shift) {
+        self.runs.iter_mut().for_each(|r| *r = (s.pos(r.0), s.pos(r.1)));
     }
 }
 
