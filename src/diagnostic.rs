@@ -257,8 +257,7 @@ impl Diagnostics {
             let (start, end) = index.locate_span(text, span.start as usize, span.end as usize);
             let code = m.code();
             let key = message_key(m.template, &m.args);
-            let message = written.take(key, &m, &out).unwrap_or_else(|| m.render(Lang::En));
-            written.given(key, out.len());
+            let message = written.text(key, &m, &out);
             out.push(Diagnostic {
                 severity: code.severity(),
                 code,
@@ -300,20 +299,21 @@ impl Written {
         Written { before, by_key, taken: std::collections::HashMap::default() }
     }
 
-    /// The text of a diagnostic with the same message as `m`, whose key is
-    /// `key`: of `out` (the new diagnostics so far), else moved out of `before`.
-    fn take(&mut self, key: u64, m: &Message, out: &[Diagnostic]) -> Option<String> {
+    /// The English text of message `m`, whose key is `key`, for the new
+    /// diagnostic that goes next in `out` (the new ones so far): copied from
+    /// the first of `out` with the same message, else moved out of `before`,
+    /// else written.
+    fn text(&mut self, key: u64, m: &Message, out: &[Diagnostic]) -> String {
         let same = |d: &Diagnostic| std::ptr::eq(d.template, m.template) && d.args == m.args;
-        if let Some(d) = self.taken.get(&key).map(|&j| &out[j]) {
-            return same(d).then(|| d.message.clone());
-        }
-        let d = &mut self.before[*self.by_key.get(&key)?];
-        (same(d) && !d.message.is_empty()).then(|| std::mem::take(&mut d.message))
-    }
-
-    /// The new diagnostic at `at` in `out` has the message of key `key` (the first one kept).
-    fn given(&mut self, key: u64, at: usize) {
-        self.taken.entry(key).or_insert(at);
+        let first = *self.taken.entry(key).or_insert(out.len());
+        let found = match out.get(first) {
+            Some(d) => same(d).then(|| d.message.clone()),
+            None => self.by_key.get(&key).and_then(|&i| {
+                let d = &mut self.before[i];
+                (same(d) && !d.message.is_empty()).then(|| std::mem::take(&mut d.message))
+            }),
+        };
+        found.unwrap_or_else(|| m.render(Lang::En))
     }
 }
 

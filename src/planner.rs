@@ -508,7 +508,8 @@ impl Planner {
             });
             self.checkpoints.push(Checkpoint { offset: s.pos(c.offset), line: c.line, snap, reads });
         }
-        self.last_reads = t.last_reads.shifted(s);
+        t.last_reads.shift(s);
+        self.last_reads = std::mem::take(&mut t.last_reads);
         // The line starts before the joined line are the new reading's when it
         // recorded them all (in order); else the rest is scanned when finishing.
         if self.line_starts.len() + 1 >= line as usize {

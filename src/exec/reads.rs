@@ -39,14 +39,7 @@ impl Reads {
         self.runs.iter().any(|&(a, b)| a < to && b > from)
     }
 
-    /// The same reads in a text edited as `s` says.
-    pub fn shifted(&self, s: Shift) -> Reads {
-        let mut r = self.clone();
-        r.shift(s);
-        r
-    }
-
-    /// [`Reads::shifted`] in place.
+    /// Makes the reads those of a text edited as `s` says.
     pub fn shift(&mut self, s: Shift) {
         self.runs.iter_mut().for_each(|r| *r = (s.pos(r.0), s.pos(r.1)));
     }
@@ -70,6 +63,7 @@ mod tests {
         assert!(!r.touches(20, 30));
         assert!(r.touches(105, 105));
         assert!(!r.touches(110, 110));
-        assert_eq!(r.shifted(Shift { at: 50, by: 5 }).runs, vec![(0, 20), (105, 115)]);
+        r.shift(Shift { at: 50, by: 5 });
+        assert_eq!(r.runs, vec![(0, 20), (105, 115)]);
     }
 }

@@ -423,23 +423,17 @@ fn sections(plan: &Plan, motion: &impl Fn(usize) -> u64, pieces: &mut Pieces) ->
         }
         let i = pieces
             .take(h.finish(), || Chunk::of(section::pieces_from(moves, start, end).into_iter().map(|i| (i, false))));
+        // Once past the cap no later section is drawn: the block's within it are a first few.
         let items = pieces.chunks[i].items.clone();
-        let mut within = total;
-        if items.iter().all(|item| section::within_cap(&mut within, item)) {
-            total = within;
-            if !items.is_empty() {
+        let kept = items.iter().take_while(|item| section::within_cap(&mut total, item)).count();
+        if kept == items.len() {
+            if kept > 0 {
                 out.push(i);
             }
             continue;
         }
-        // Past the cap: the sections up to it, and none after.
-        let kept: Vec<(Item, bool)> = items
-            .iter()
-            .filter(|item| section::within_cap(&mut total, item))
-            .map(|item| (item.clone(), false))
-            .collect();
-        if !kept.is_empty() {
-            out.push(pieces.put(Chunk::of(kept)));
+        if kept > 0 {
+            out.push(pieces.put(Chunk::of(items[..kept].iter().map(|item| (item.clone(), false)))));
         }
         break;
     }
