@@ -473,4 +473,4 @@ fn head(pieces: &[&Chunk]) -> Scene {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -6,17 +6,25 @@ use crate::dialect::Dialect;
 use crate::settings::Settings;
 use crate::wasm::keys::PlanKeys;
 
-/// Threads turned on their own diameters (13 lines each), as an editor would hold them.
-fn program(threads: usize) -> String {
-    let mut out = String::from("G50 X100 Z100\n");
+/// `header`, then `threads` O1006-style threads of two passes, each turned
+/// first on its own diameter (Ø30 up, `diameters` of them, then again from
+/// Ø30): 13 lines each; then M30. (The binding's tests plan it too.)
+pub(crate) fn turned_threads(header: &str, threads: usize, diameters: usize) -> String {
+    let mut out = String::from(header);
     for k in 0..threads {
-        let d = 30 + (k % 7) as u32;
+        let d = 30 + (k % diameters) as u32;
         out += &format!("G00 X{} Z70\nG01 X{d} F0.2\nZ20\nX{}\nG00 Z70\n", d + 10, d + 5);
         for x in [0.9, 1.5] {
             out += &format!("X{:.1}\nG32 Z13 F2\nG00 X{}\nZ70\n", f64::from(d) - x, d + 10);
         }
     }
     out + "M30\n"
+}
+
+/// Threads turned on their own diameters (13 lines each), as an editor
+/// would hold them; every seventh repeats the first.
+fn program(threads: usize) -> String {
+    turned_threads("G50 X100 Z100\n", threads, 7)
 }
 
 fn check(memo: &mut SideMemo, text: &str, settings: &Settings) -> (usize, usize) {

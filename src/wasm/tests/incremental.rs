@@ -12,15 +12,7 @@ use crate::wasm;
 /// `threads` O1006-style threads of two passes, each turned first on its own
 /// diameter: 13 lines each, 4 more around them.
 fn program(threads: usize) -> String {
-    let mut out = String::from("O2000\nG50 X100 Z100\nS300 M03 T0101\n");
-    for k in 0..threads {
-        let d = 30 + (k % 20) as u32;
-        out += &format!("G00 X{} Z70\nG01 X{d} F0.2\nZ20\nX{}\nG00 Z70\n", d + 10, d + 5);
-        for x in [0.9, 1.5] {
-            out += &format!("X{:.1}\nG32 Z13 F2\nG00 X{}\nZ70\n", f64::from(d) - x, d + 10);
-        }
-    }
-    out + "M30\n"
+    crate::wasm::memo::tests::turned_threads("O2000\nG50 X100 Z100\nS300 M03 T0101\n", threads, 20)
 }
 
 /// `text` with its line `n` (1-based; negative: from the end, −1 the last) changed by `f`.
