@@ -85,6 +85,24 @@ fn main() {
         println!("{items}");
         return;
     }
+    // Profiling mode: the side view's display list of the 50,000-line program, before and after that digit, N times.
+    if let Some(i) = args.iter().position(|a| a == "--draw-profile") {
+        let n: usize = args[i + 1].parse().expect("count");
+        let (text, edited) = typed_texts(50_000);
+        let settings = Settings::new(Dialect::Gsk980tdc);
+        let plans = [screwcut::plan(&text, &settings), screwcut::plan(&edited, &settings)];
+        // As the app draws them: from the kept pieces, whose repeated paths share their points.
+        let mut side = screwcut::wasm::memo::SideMemo::new();
+        let scenes = plans.each_ref().map(|p| side.side(p, &screwcut::wasm::keys::PlanKeys::of(p)));
+        let view = screwcut::draw::View { width: 936.0, height: 420.0, ..Default::default() };
+        let mut memo = screwcut::draw::FitMemo::default();
+        let mut ops = 0;
+        for k in 0..=n {
+            ops += screwcut::draw::display_kept(&scenes[k % 2], &view, &mut memo).ops.len();
+        }
+        println!("{ops}");
+        return;
+    }
     if args.iter().any(|a| a == "--loops") {
         loops(&out_dir);
         typed();

@@ -20,6 +20,7 @@ use crate::diagram::scene::{Anchor, Scene};
 use crate::message::Lang;
 
 mod fit;
+mod held;
 mod kept;
 mod labels;
 mod lines;
@@ -182,30 +183,47 @@ impl View {
     }
 }
 
+/// What a drawing reads of its scene for the labels: the drawing's lines,
+/// which labels keep off, and the items with labels (with their indices).
+struct Read<'s> {
+    lines: lines::LineIndex,
+    labelled: Vec<(usize, &'s crate::diagram::Item)>,
+}
+
+impl<'s> Read<'s> {
+    /// Read from the whole of `scene`.
+    fn of(scene: &'s Scene) -> Read<'s> {
+        Read { lines: lines::scene_lines(scene), labelled: labels::labelled(scene) }
+    }
+}
+
 /// The transform that fits `scene`'s focus and its labels into the view's page.
 pub fn fit_of(scene: &Scene, view: &View) -> Transform {
-    fit::fit(scene, view, view.page())
+    fit::fit(scene, view, view.page(), &Read::of(scene))
 }
 
 /// The display list of `scene` in `view`: fitted when the view gives no
 /// (valid) transform, labels placed, painted.
 pub fn display(scene: &Scene, view: &View) -> DisplayList {
-    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, view.page()));
-    display_at(scene, view, xf)
+    let read = Read::of(scene);
+    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, view.page(), &read));
+    display_at(scene, view, xf, &read)
 }
 
-/// [`display`] with the fit kept in `memo` between drawings of one view
-/// ([`FitMemo`]: a scene whose focus and labels did not change keeps its
-/// transform).
+/// [`display`] with the fit and what was read of the scene's parts kept in
+/// `memo` between drawings of one view ([`FitMemo`]: a scene whose focus and
+/// labels did not change keeps its transform; the parts it shares with the
+/// last scene are not read again, [`held`]).
 pub fn display_kept(scene: &Scene, view: &View, memo: &mut FitMemo) -> DisplayList {
-    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| memo.fit(scene, view));
-    display_at(scene, view, xf)
+    let read = memo.read(scene);
+    let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| memo.fit_with(scene, view, &read));
+    display_at(scene, view, xf, &read)
 }
 
-/// The display list of `scene` in `view` at transform `xf`.
-fn display_at(scene: &Scene, view: &View, xf: Transform) -> DisplayList {
+/// The display list of `scene` in `view` at transform `xf`, its labels as `read` found them.
+fn display_at(scene: &Scene, view: &View, xf: Transform, read: &Read) -> DisplayList {
     let page = view.page();
-    let (placed, dropped) = place::placed(scene, view, &xf, page);
+    let (placed, dropped) = place::placed(read, view, &xf, page);
     let mut b = list::Builder::new(scene.view, page, xf, view.stale);
     paint::paint(&mut b, scene, &xf, &placed, view);
     b.list.labels = placed;

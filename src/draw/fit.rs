@@ -5,8 +5,9 @@
 //! largest scale is solved per axis (a bisection on a convex function), a
 //! few rounds since the places depend on the scale.
 
+use super::Read;
 use super::labels::{EDGE, Kind, Label, Room, dim_frame, scene_labels};
-use super::lines::{LineIndex, scene_lines};
+use super::lines::LineIndex;
 use super::place::{dim_segment, place};
 use super::{Transform, View};
 use crate::diagram::scene::{Pt, Scene};
@@ -86,10 +87,10 @@ fn max_scale(
 }
 
 /// The labels near the focus (a note at the end of far motions does not widen the fit), by priority.
-fn near_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
+fn near_labels(scene: &Scene, read: &Read, o: &View, width: f64) -> Vec<Label> {
     let zone = crate::diagram::side::near_focus(&scene.focus);
     let near = |p: Pt| zone.is_some_and(|z| z.contains(p));
-    let mut set: Vec<Label> = scene_labels(scene, o, width).into_iter().filter(|l| near(l.anchor())).collect();
+    let mut set: Vec<Label> = scene_labels(&read.labelled, o, width).into_iter().filter(|l| near(l.anchor())).collect();
     crate::order::sort_by_key(&mut set, |l| l.prio);
     set
 }
@@ -110,22 +111,22 @@ fn elements(scene: &Scene, set: &mut [Label], xf: &Transform, lines: &LineIndex)
 }
 
 /// The transform that fits the scene's focus and its labels (drawn with
-/// `o`) into a `w × h` page, centred; with `o.stretch`, the vertical scale
-/// may exceed the horizontal one to fill the height.
-pub(super) fn fit(scene: &Scene, o: &View, (w, h): (f64, f64)) -> Transform {
+/// `o`) into a `w × h` page, centred, off the drawing's lines (`read`); with
+/// `o.stretch`, the vertical scale may exceed the horizontal one to fill the height.
+pub(super) fn fit(scene: &Scene, o: &View, (w, h): (f64, f64), read: &Read) -> Transform {
+    let lines = &read.lines;
     let f = scene.focus.or_unit();
     let (fw, fh) = (f.width().max(1e-9), f.height().max(1e-9));
     let p = GEOMETRY_PAD;
     let aw = (w - 2.0 * EDGE).max(10.0);
     let ah = (h - 2.0 * EDGE).max(10.0);
     let iso = ((aw - 2.0 * p) / fw).min((ah - 2.0 * p) / fh).max(1e-12);
-    let lines = scene_lines(scene);
-    let mut set = near_labels(scene, o, w);
+    let mut set = near_labels(scene, read, o, w);
     let stretched = |s: f64, v: f64| if o.stretch { s.max(v) } else { s };
     let mut xf = Transform { sx: iso, sy: stretched(iso, (ah - 2.0 * p) / fh), tx: 0.0, ty: 0.0 };
     let mut round = 0;
     while round < 4 {
-        let els = elements(scene, &mut set, &xf, &lines);
+        let els = elements(scene, &mut set, &xf, lines);
         let sxh = max_scale(&els, |e| e.x, |e| e.l, |e| e.r, aw);
         let syv = max_scale(&els, |e| -e.y, |e| e.t, |e| e.b, ah);
         let s = sxh.min(syv);
@@ -143,7 +144,7 @@ pub(super) fn fit(scene: &Scene, o: &View, (w, h): (f64, f64)) -> Transform {
     }
     // Places depend on the scale: where the last round's places ask for less
     // room than those at the final scale, the scale gives way once more.
-    let els = elements(scene, &mut set, &xf, &lines);
+    let els = elements(scene, &mut set, &xf, lines);
     let sxh = max_scale(&els, |e| e.x, |e| e.l, |e| e.r, aw);
     let syv = max_scale(&els, |e| -e.y, |e| e.t, |e| e.b, ah);
     if sxh.min(syv) < xf.sx {
@@ -151,7 +152,7 @@ pub(super) fn fit(scene: &Scene, o: &View, (w, h): (f64, f64)) -> Transform {
         xf = Transform { sx: s, sy: stretched(s, syv.max(s)), tx: 0.0, ty: 0.0 };
     }
     // Centre the whole: geometry and labels.
-    let els = elements(scene, &mut set, &xf, &lines);
+    let els = elements(scene, &mut set, &xf, lines);
     let (mut xa, mut xb, mut ya, mut yb) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
     for e in &els {
         xa = xa.min(xf.sx * e.x + e.l);

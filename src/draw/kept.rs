@@ -1,4 +1,5 @@
-//! The fit kept between drawings of one view. Fitting is most of a
+//! The fit kept between drawings of one view (and the drawing's lines,
+//! [`KeptLines`]). Fitting is most of a
 //! drawing's cost (it places the labels several times to find the scale),
 //! and while a pass is being typed the scene's focus and labels stay what
 //! they were: the drawing keeps its transform (it does not move under the
@@ -8,16 +9,19 @@
 
 use std::hash::{Hash, Hasher};
 
+use super::held::Held;
 use super::labels::{annotated, labelled_in};
-use super::{Transform, View};
+use super::{Read, Transform, View};
 use crate::diagram::scene::{Item, Scene, Shape};
 use crate::hash::KeyHasher;
 
-/// The last fit of a view and the key of what it was made from.
-#[derive(Clone, Copy, Debug, Default)]
+/// The last fit of a view and the key of what it was made from; the lines of its last drawing.
+#[derive(Default)]
 pub struct FitMemo {
     last: Option<(u64, Transform)>,
     made: usize,
+    /// What was read of the parts of the last scene.
+    held: Held,
 }
 
 impl FitMemo {
@@ -29,13 +33,25 @@ impl FitMemo {
     /// The fit of `scene` in `view`: the last one when the scene's focus,
     /// its labels, the page and the view's options are those it was made for.
     pub fn fit(&mut self, scene: &Scene, view: &View) -> Transform {
-        let key = fit_key(scene, view);
+        let read = self.read(scene);
+        self.fit_with(scene, view, &read)
+    }
+
+    /// What a drawing reads of `scene` ([`Read`]), its parts shared with the last scene not read again.
+    pub(super) fn read<'s>(&mut self, scene: &'s Scene) -> Read<'s> {
+        self.held.update(scene);
+        Read { lines: self.held.lines(scene), labelled: self.held.labelled(scene) }
+    }
+
+    /// [`FitMemo::fit`] with what was read of the scene given.
+    pub(super) fn fit_with(&mut self, scene: &Scene, view: &View, read: &Read) -> Transform {
+        let key = fit_key(scene, &read.labelled, view);
         if let Some((k, xf)) = self.last
             && k == key
         {
             return xf;
         }
-        let xf = super::fit_of(scene, view);
+        let xf = super::fit::fit(scene, view, view.page(), read);
         self.last = Some((key, xf));
         self.made += 1;
         xf
@@ -50,7 +66,7 @@ impl FitMemo {
 /// What a fit depends on, hashed: the view kind, focus and page, the
 /// options that choose and word the labels, and every item the labels drawn
 /// come from (with many threads annotated, the chosen thread's and those of no thread).
-fn fit_key(scene: &Scene, view: &View) -> u64 {
+fn fit_key(scene: &Scene, labelled: &[(usize, &Item)], view: &View) -> u64 {
     let mut h = KeyHasher::default();
     (scene.view as u8).hash(&mut h);
     let (w, hgt) = view.page();
@@ -61,9 +77,9 @@ fn fit_key(scene: &Scene, view: &View) -> u64 {
     h.write_u8(u8::from(view.stretch) | (u8::from(view.roughing) << 1));
     h.write_usize(view.thread);
     view.lang.hash(&mut h);
-    let annotated = annotated(scene);
+    let annotated = annotated(labelled);
     h.write_usize(annotated);
-    for item in scene.items.iter().filter(|i| labelled_in(i, annotated, view.thread)) {
+    for (_, item) in labelled.iter().filter(|(_, i)| labelled_in(i, annotated, view.thread)) {
         hash_label_item(&mut h, item);
     }
     h.finish()

@@ -145,13 +145,19 @@ pub(super) fn has_label(item: &Item) -> bool {
     matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. })
 }
 
-/// How many threads have labels in `scene`, counted up to one more than
-/// [`MAX_ANNOTATED`] (all that [`scene_labels`] asks of the number).
-pub(super) fn annotated(scene: &Scene) -> usize {
+/// The items of `scene` that have labels, with their indices, in order.
+pub(super) fn labelled(scene: &Scene) -> Vec<(usize, &Item)> {
+    scene.items.iter().enumerate().filter(|(_, i)| has_label(i)).collect()
+}
+
+/// How many threads have labels among the `labelled` items of a scene
+/// ([`labelled`]), counted up to one more than [`MAX_ANNOTATED`] (all that
+/// [`scene_labels`] asks of the number).
+pub(super) fn annotated(labelled: &[(usize, &Item)]) -> usize {
     let mut seen = [0u32; MAX_ANNOTATED + 1];
     let mut n = 0;
     // From the end: a scene's dimensions and notes follow its paths.
-    for t in scene.items.iter().rev().filter(|i| has_label(i)).filter_map(|i| i.thread) {
+    for t in labelled.iter().rev().filter_map(|(_, i)| i.thread) {
         if !seen[..n].contains(&t) {
             seen[n] = t;
             n += 1;
@@ -170,15 +176,15 @@ pub(super) fn labelled_in(item: &Item, annotated: usize, chosen: usize) -> bool 
     has_label(item) && !(annotated > MAX_ANNOTATED && item.thread.is_some_and(|t| t != chosen))
 }
 
-/// The labels drawn of `scene` with `o`: with
+/// The labels drawn of a scene's `labelled` items ([`labelled`]) with `o`: with
 /// many annotated threads, only the chosen thread's; notes wider than about
 /// half of a `width` px view wrapped.
-pub(super) fn scene_labels(scene: &Scene, o: &View, width: f64) -> Vec<Label> {
-    let annotated = annotated(scene);
+pub(super) fn scene_labels(labelled: &[(usize, &Item)], o: &View, width: f64) -> Vec<Label> {
+    let annotated = annotated(labelled);
     let chosen = u32::try_from(o.thread).unwrap_or(u32::MAX);
     let wrap_at = if width > 0.0 { (0.45 * width).max(160.0) } else { f64::INFINITY };
     let mut out = Vec::new();
-    for (i, item) in scene.items.iter().enumerate() {
+    for &(i, item) in labelled {
         if !labelled_in(item, annotated, o.thread) {
             continue;
         }

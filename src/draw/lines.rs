@@ -1,7 +1,8 @@
 //! The drawing's lines, which labels prefer not to cross: the segments
 //! of paths, arrows and circles in a grid of world cells built once per
 //! scene; a label's box on the page is taken back to world coordinates to
-//! find the lines near it.
+//! find the lines near it. Between drawings of one view the segments are
+//! kept by the scene's shared parts ([`super::held`]).
 
 use std::collections::HashSet;
 
@@ -10,7 +11,7 @@ use crate::diagram::scene::{Pt, Rect, Scene, Shape, Style};
 use crate::hash::BuildKeyHasher;
 
 /// Most of the drawing's segments labels keep off (those of threads first).
-const MAX_SEGMENTS: usize = 20_000;
+pub(super) const MAX_SEGMENTS: usize = 20_000;
 /// Cells of the grid on each axis, plus one on each side for what lies beyond.
 const CELLS: i64 = 64;
 const N: usize = CELLS as usize + 2;
@@ -108,6 +109,14 @@ impl LineIndex {
         ix
     }
 
+    /// The segments indexed, as bits, sorted.
+    #[cfg(test)]
+    pub(super) fn sorted(&self) -> Vec<[u64; 4]> {
+        let mut v: Vec<[u64; 4]> = self.world.iter().map(|w| w.map(f64::to_bits)).collect();
+        v.sort_unstable();
+        v
+    }
+
     /// The cell columns and rows (shifted by one) a finite segment spans.
     fn span(&self, s: &[f64; 4]) -> Option<(i64, i64, i64, i64)> {
         if !s.iter().all(|v| v.is_finite()) {
@@ -151,12 +160,12 @@ impl LineIndex {
 }
 
 /// Styles whose lines labels may cross: centre lines and filled zones.
-fn crossable(style: Style) -> bool {
+pub(super) fn crossable(style: Style) -> bool {
     matches!(style, Style::Axis | Style::ThreadZone | Style::Delta1 | Style::Delta2 | Style::Material)
 }
 
 /// The segments of one item: paths (polygons closed), arrows, circles as 24 chords.
-fn segments(shape: &Shape, out: &mut Vec<[f64; 4]>) {
+pub(super) fn segments(shape: &Shape, out: &mut Vec<[f64; 4]>) {
     let path = |points: &[Pt], closed: bool, out: &mut Vec<[f64; 4]>| {
         out.extend(points.windows(2).map(|w| [w[0][0], w[0][1], w[1][0], w[1][1]]));
         if let (true, Some(first), Some(last)) = (closed && points.len() >= 3, points.first(), points.last()) {
@@ -204,11 +213,9 @@ pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
             segments(&item.shape, &mut out);
             let mut kept = from;
             for k in from..out.len() {
-                let [x0, y0, x1, y1] = out[k];
-                // Either direction is the same line.
-                let key = if (x0, y0) <= (x1, y1) { [x0, y0, x1, y1] } else { [x1, y1, x0, y0] };
-                if seen.insert(key.map(f64::to_bits)) {
-                    out[kept] = out[k];
+                let key = one_way(out[k]);
+                if seen.insert(key) {
+                    out[kept] = key.map(f64::from_bits);
                     kept += 1;
                 }
             }
@@ -220,6 +227,12 @@ pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
         }
     }
     LineIndex::new(out, scene.focus)
+}
+
+/// A segment's bits, one way round: either direction is the same line.
+pub(super) fn one_way([x0, y0, x1, y1]: [f64; 4]) -> [u64; 4] {
+    let key = if (x0, y0) <= (x1, y1) { [x0, y0, x1, y1] } else { [x1, y1, x0, y0] };
+    key.map(f64::to_bits)
 }
 
 #[cfg(test)]

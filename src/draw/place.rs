@@ -12,9 +12,9 @@ use super::labels::{
     At, DimFrame, EDGE, Kind, LINE, Label, Room, Slot, dim_candidates, dim_frame, scene_labels, text_candidates,
     text_frame,
 };
-use super::lines::{LineIndex, scene_lines, segment_hits_box};
-use super::{Placed, Transform, View};
-use crate::diagram::scene::{Anchor, Pt, Scene};
+use super::lines::{LineIndex, segment_hits_box};
+use super::{Placed, Read, Transform, View};
+use crate::diagram::scene::{Anchor, Pt};
 
 /// Whether boxes `a` and `b` overlap.
 fn overlaps(a: &[f64; 4], b: &[f64; 4]) -> bool {
@@ -191,12 +191,11 @@ pub(super) fn place(labels: &mut [Label], xf: &Transform, view: &Room, drawing: 
     }
 }
 
-/// The labels of `scene` placed at `xf` on a `w × h` page, as the painter takes them.
-/// Also the items of the labels dropped.
-pub(super) fn placed(scene: &Scene, o: &View, xf: &Transform, (w, h): (f64, f64)) -> (Vec<Placed>, Vec<usize>) {
-    let mut labels = scene_labels(scene, o, w);
-    let lines = scene_lines(scene);
-    place(&mut labels, xf, &Room { w, h, all: false }, Some(&lines));
+/// The labels of a scene (what `read` read of it) placed at `xf` on a `w × h`
+/// page off the drawing's lines, as the painter takes them. Also the items of the labels dropped.
+pub(super) fn placed(read: &Read, o: &View, xf: &Transform, (w, h): (f64, f64)) -> (Vec<Placed>, Vec<usize>) {
+    let mut labels = scene_labels(&read.labelled, o, w);
+    place(&mut labels, xf, &Room { w, h, all: false }, Some(&read.lines));
     let dropped = labels.iter().filter(|l| l.at.is_none()).map(|l| l.item).collect();
     (labels.iter().filter_map(placed_of).collect(), dropped)
 }
