@@ -20,6 +20,9 @@ use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style, hash_p
 /// Paths wholly this far off the page are left out.
 const CULL: f64 = 12.0;
 
+/// Slots of the paths held last, by address ([`Painter::paths`]).
+const RECENT: usize = 1024;
+
 /// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
 type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
 
@@ -204,6 +207,9 @@ impl Painter<'_> {
         // of its points when it shares them (see `wasm::memo`), else by its world points.
         let mut worlds: HashMap<u64, &[Pt], BuildKeyHasher> = HashMap::default();
         let mut held: HashSet<(usize, BatchKey), BuildKeyHasher> = HashSet::default();
+        // The last path held in each slot, by its address: a path repeated many
+        // times (thousands of passes over a few diameters) is known without a lookup.
+        let mut recent: Vec<Option<(usize, BatchKey)>> = vec![None; RECENT];
         for (i, item) in scene.items.iter().enumerate() {
             let (points, closed) = match &item.shape {
                 Shape::Polyline { points } => (points, false),
@@ -214,7 +220,13 @@ impl Painter<'_> {
                 continue;
             }
             let key = batch_key(item, closed);
-            if !held.insert((points.as_ptr() as usize, key)) {
+            let at = points.as_ptr() as usize;
+            let slot = &mut recent[(at / std::mem::align_of::<Pt>()) % RECENT];
+            if *slot == Some((at, key)) {
+                continue;
+            }
+            *slot = Some((at, key));
+            if !held.insert((at, key)) {
                 continue;
             }
             let mut wh = KeyHasher::default();
