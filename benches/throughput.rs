@@ -81,6 +81,9 @@ fn main() {
         let mut items = 0;
         for k in 0..=n {
             items += memo.side(&plans[k % 2], &keys[k % 2]).items.len();
+            if std::env::var_os("SIDE_COUNTS").is_some() {
+                eprintln!("built, reused: {:?}", memo.counts());
+            }
         }
         println!("{items}");
         return;

@@ -190,6 +190,8 @@ mod tests {
             want.sort_unstable();
             want.dedup();
             assert_eq!(ranges.items_of_lines(&s, &lines), want, "round {round}, lines {lines:?}");
+            // Only this scene's parts are held.
+            assert_eq!(ranges.parts.len(), s.items.parts().count(), "round {round}");
             read += want.len();
         }
         assert!(read > 200, "the lines marked some items ({read})");
