@@ -29,16 +29,11 @@ type Counts = HashMap<[u64; 4], u32, BuildKeyHasher>;
 /// Each path held: how many items hold it, and its segments.
 type Paths = HashMap<PathKey, (u32, Vec<[u64; 4]>), BuildKeyHasher>;
 
-/// One part of the last scene.
+/// What a view keeps of one part: what its items add to the drawing's lines, and its items with labels.
 struct Part {
-    /// The part itself, held so that no other part takes its address.
-    _held: Arc<Vec<Item>>,
-    /// What its items add to the drawing's lines.
     lines: Vec<Line>,
     /// Its items with labels, by their place in the part.
     labelled: Vec<u32>,
-    /// The drawing that last had it.
-    last: u32,
 }
 
 /// What a view keeps of the parts of its last scene (see the module
@@ -46,39 +41,26 @@ struct Part {
 /// drawing's lines is held.
 #[derive(Default)]
 pub struct Held {
-    /// The last scene's parts by the address of their items.
-    parts: HashMap<usize, Part, BuildKeyHasher>,
+    parts: ByPart<Part>,
     paths: Paths,
     counts: Counts,
-    /// Drawings so far.
-    calls: u32,
 }
 
 impl Held {
     /// Takes in `scene`: its new parts are read, the parts it no longer has are let go.
     pub(super) fn update(&mut self, scene: &Scene) {
-        self.calls = self.calls.wrapping_add(1);
-        let call = self.calls;
-        let Held { parts, paths, counts, .. } = self;
-        for (_, part) in scene.items.parts() {
-            let at = Arc::as_ptr(part) as usize;
-            match parts.get_mut(&at) {
-                Some(kept) => kept.last = call,
-                None => {
-                    let lines = add(part, paths, counts);
-                    let labelled =
-                        part.iter().enumerate().filter(|(_, i)| has_label(i)).map(|(k, _)| k as u32).collect();
-                    parts.insert(at, Part { _held: part.clone(), lines, labelled, last: call });
-                }
-            }
-        }
-        parts.retain(|_, part| {
-            if part.last == call {
-                return true;
-            }
-            remove(&part.lines, paths, counts);
-            false
-        });
+        let Held { parts, paths, counts } = self;
+        let mut gone = Vec::new();
+        parts.update(
+            scene,
+            |part| {
+                let lines = add(part, paths, counts);
+                let labelled = part.iter().enumerate().filter(|(_, i)| has_label(i)).map(|(k, _)| k as u32).collect();
+                Part { lines, labelled }
+            },
+            |part| gone.push(part),
+        );
+        gone.iter().for_each(|part| remove(&part.lines, paths, counts));
     }
 
     /// The drawing's lines of `scene`, taken in by [`Held::update`]: the
@@ -94,11 +76,109 @@ impl Held {
     /// The items of `scene` (taken in by [`Held::update`]) that have labels, with their indices, in order.
     pub(super) fn labelled<'s>(&self, scene: &'s Scene) -> Vec<(usize, &'s Item)> {
         let mut out = Vec::new();
-        for (start, part) in scene.items.parts() {
-            let Some(kept) = self.parts.get(&(Arc::as_ptr(part) as usize)) else { continue };
+        for (start, part, kept) in self.parts.each(scene) {
             out.extend(kept.labelled.iter().map(|&k| (start + k as usize, &part[k as usize])));
         }
         out
+    }
+}
+
+/// A value kept for each part of the last scene taken in. A part is
+/// known by the address of its items, and held, so that no other part
+/// takes that address while its value is kept; a scene put together
+/// again from the last one's parts mostly has them where they were, so
+/// each is looked for at its place in the last scene first.
+pub(super) struct ByPart<T> {
+    /// The parts held and their values; `None`: a free slot.
+    slots: Vec<Option<Slot<T>>>,
+    free: Vec<usize>,
+    /// The slot of each part held, by its address.
+    by_address: HashMap<usize, usize, BuildKeyHasher>,
+    /// The slots of the last scene's parts, in its order.
+    order: Vec<usize>,
+    /// Scenes taken in so far.
+    calls: u32,
+}
+
+/// A part held, its value, and the scene that last had it.
+struct Slot<T> {
+    part: Arc<Vec<Item>>,
+    value: T,
+    last: u32,
+}
+
+impl<T> Default for ByPart<T> {
+    fn default() -> ByPart<T> {
+        ByPart { slots: Vec::new(), free: Vec::new(), by_address: HashMap::default(), order: Vec::new(), calls: 0 }
+    }
+}
+
+impl<T> ByPart<T> {
+    /// Takes in the parts of `scene`: a part not held gets the value `make`
+    /// gives it; the value of a part the scene no longer has goes to `gone`.
+    pub(super) fn update(&mut self, scene: &Scene, mut make: impl FnMut(&[Item]) -> T, mut gone: impl FnMut(T)) {
+        self.calls = self.calls.wrapping_add(1);
+        let call = self.calls;
+        let last = std::mem::take(&mut self.order);
+        let mut order = Vec::with_capacity(last.len());
+        for (k, (_, part)) in scene.items.parts().enumerate() {
+            let slot = match last.get(k) {
+                Some(&s) if self.slots[s].as_ref().is_some_and(|held| Arc::ptr_eq(&held.part, part)) => s,
+                _ => self.slot_of(part, &mut make),
+            };
+            if let Some(held) = &mut self.slots[slot] {
+                held.last = call;
+            }
+            order.push(slot);
+        }
+        // Only the last scene's parts are held: those this one did not take are let go.
+        for s in last {
+            if self.slots[s].as_ref().is_some_and(|held| held.last != call) {
+                let held = self.slots[s].take().expect("a held slot");
+                self.by_address.remove(&(Arc::as_ptr(&held.part) as usize));
+                self.free.push(s);
+                gone(held.value);
+            }
+        }
+        self.order = order;
+    }
+
+    /// The slot of `part`, found by its address or made.
+    fn slot_of(&mut self, part: &Arc<Vec<Item>>, make: &mut impl FnMut(&[Item]) -> T) -> usize {
+        let at = Arc::as_ptr(part) as usize;
+        if let Some(&s) = self.by_address.get(&at) {
+            return s;
+        }
+        let held = Slot { part: part.clone(), value: make(part), last: 0 };
+        let s = match self.free.pop() {
+            Some(s) => {
+                self.slots[s] = Some(held);
+                s
+            }
+            None => {
+                self.slots.push(Some(held));
+                self.slots.len() - 1
+            }
+        };
+        self.by_address.insert(at, s);
+        s
+    }
+
+    /// The parts of `scene` (the last taken in) with their first item's index and their values, in order.
+    pub(super) fn each<'a, 's>(
+        &'a self,
+        scene: &'s Scene,
+    ) -> impl Iterator<Item = (usize, &'s [Item], &'a T)> + use<'a, 's, T> {
+        scene.items.parts().zip(&self.order).filter_map(move |((start, part), &s)| {
+            let held = self.slots[s].as_ref()?;
+            Some((start, part.as_slice(), &held.value))
+        })
+    }
+
+    /// How many parts are held.
+    #[cfg(test)]
+    pub(super) fn len(&self) -> usize {
+        self.by_address.len()
     }
 }
 
@@ -164,6 +244,68 @@ fn count_out(counts: &mut Counts, s: &[u64; 4]) {
 mod tests {
     use super::*;
     use crate::diagram::scene::{Rect, Style};
+
+    /// Values by part through scenes whose parts move, repeat, come and go:
+    /// each part's value is the one made for it, made once while it is held
+    /// (a part the last scene had is not made again), and let go when a scene no longer has it.
+    #[test]
+    fn values_by_part_follow_the_parts() {
+        let mut next = crate::hash::unit_floats(0x5851_f42d_4c95_7f2d);
+        let mut int = |n: usize| (next() * n as f64) as usize;
+        let item = || Item::new(Shape::Arrow { from: [0.0, 0.0], to: [1.0, 1.0] }, Style::Cut);
+        let new_part = |k: usize| Arc::new(vec![item(); 1 + k % 3]);
+        let mut pool: Vec<Arc<Vec<Item>>> = (0..12).map(new_part).collect();
+        let mut by = ByPart::<(usize, usize)>::default();
+        let mut made = 0;
+        let mut last: Vec<usize> = Vec::new();
+        for round in 0..300 {
+            // A new part now and then, and a scene of some of the pool's parts (a part may come twice).
+            if int(3) == 0 {
+                let k = int(pool.len());
+                pool[k] = new_part(round);
+            }
+            let mut parts: Vec<Arc<Vec<Item>>> = (0..int(10)).map(|_| pool[int(pool.len())].clone()).collect();
+            if round % 7 == 0 {
+                parts = last.iter().filter_map(|&a| pool.iter().find(|p| p.as_ptr() as usize == a).cloned()).collect();
+                parts.insert(0, new_part(round));
+            }
+            let scene = of_parts(&parts, Rect::EMPTY);
+            // Each part known by its first item's address.
+            let addresses: Vec<usize> = parts.iter().map(|p| p.as_ptr() as usize).collect();
+            let mut gone = Vec::new();
+            let before = made;
+            by.update(
+                &scene,
+                |part| {
+                    made += 1;
+                    (part.as_ptr() as usize, made)
+                },
+                |v| gone.push(v.0),
+            );
+            // Made: the parts the last scene did not have, once each.
+            let mut fresh: Vec<usize> = addresses.iter().copied().filter(|a| !last.contains(a)).collect();
+            fresh.sort_unstable();
+            fresh.dedup();
+            assert_eq!(made - before, fresh.len(), "round {round}");
+            // Let go: the last scene's parts this one does not have, once each.
+            let mut left: Vec<usize> = last.iter().copied().filter(|a| !addresses.contains(a)).collect();
+            left.sort_unstable();
+            left.dedup();
+            gone.sort_unstable();
+            assert_eq!(gone, left, "round {round}");
+            // Each part of the scene with its first item's index and its own value.
+            let seen: Vec<(usize, usize)> = by.each(&scene).map(|(start, _, v)| (start, v.0)).collect();
+            let want: Vec<(usize, usize)> =
+                scene.items.parts().map(|(start, p)| (start, p.as_ptr() as usize)).collect();
+            assert_eq!(seen, want, "round {round}");
+            let mut distinct = addresses.clone();
+            distinct.sort_unstable();
+            distinct.dedup();
+            assert_eq!(by.len(), distinct.len(), "round {round}");
+            last = addresses;
+        }
+        assert!(made > 100, "{made} values made");
+    }
 
     /// A scene of `parts`, shared, with `focus`.
     fn of_parts(parts: &[Arc<Vec<Item>>], focus: Rect) -> Scene {

@@ -1,23 +1,19 @@
 //! What a view's pointer is over, and what a hover or the cursor line marks:
 //! scene items by source line or by pass, the item nearest a page point.
 
-use std::collections::HashMap;
-use std::sync::Arc;
-
 use super::Transform;
+use super::held::ByPart;
 use crate::diagram::scene::{Item, Pt, Scene, Shape};
-use crate::hash::BuildKeyHasher;
 
 /// How near the pointer an item must be, px.
 pub const REACH: f64 = 7.0;
 
 /// The lowest and highest source line of each part of a scene's items
 /// (see [`crate::parts`]), kept from one scene to the next: a part the next
-/// scene shares is not read again. The parts are held, so that a kept
-/// part's address is never another part's.
+/// scene shares is not read again.
 #[derive(Default)]
 pub struct LineRanges {
-    parts: Vec<(Arc<Vec<Item>>, Lines)>,
+    parts: ByPart<Lines>,
 }
 
 /// The lowest and highest line of some items (none: they draw no line).
@@ -27,15 +23,10 @@ impl LineRanges {
     /// The items drawn from any of `lines`, in order, each once: only the
     /// parts whose lines reach one of them are read.
     pub fn items_of_lines(&mut self, scene: &Scene, lines: &[u32]) -> Vec<usize> {
-        let old = std::mem::take(&mut self.parts);
-        // A part kept from the last scene is known by its address.
-        let by_ptr: HashMap<usize, Lines, BuildKeyHasher> =
-            old.iter().map(|(p, r)| (Arc::as_ptr(p) as usize, *r)).collect();
+        self.parts.update(scene, range_of, |_| {});
         let mut out = Vec::new();
-        for (start, part) in scene.items.parts() {
-            let range = by_ptr.get(&(Arc::as_ptr(part) as usize)).copied().unwrap_or_else(|| range_of(part));
-            self.parts.push((part.clone(), range));
-            let Some((lo, hi)) = range else { continue };
+        for (start, part, range) in self.parts.each(scene) {
+            let Some((lo, hi)) = *range else { continue };
             if !lines.iter().any(|l| (lo..=hi).contains(l)) {
                 continue;
             }
@@ -131,6 +122,7 @@ fn segment_distance(p: Pt, a: Pt, b: Pt) -> f64 {
 mod tests {
     use super::*;
     use crate::diagram::scene::{Style, ViewKind};
+    use std::sync::Arc;
 
     /// The items drawn from source `line`, read item by item (what the parts' ranges must give).
     fn items_of_line(scene: &Scene, line: u32) -> Vec<usize> {
