@@ -307,19 +307,34 @@ mod tests {
         assert!(made > 100, "{made} values made");
     }
 
-    /// A scene of `parts`, shared, with `focus`.
-    fn of_parts(parts: &[Arc<Vec<Item>>], focus: Rect) -> Scene {
-        let mut s = Scene::new(crate::diagram::ViewKind::Side);
-        parts.iter().for_each(|p| s.items.push_shared(p.clone()));
-        s.focus = focus;
-        s
+    /// A view's drawings from what it keeps of its scenes' parts are the
+    /// drawings of each scene read whole: labels placed, paths joined and left out alike.
+    #[test]
+    fn drawings_from_kept_parts_are_the_whole_scenes() {
+        use crate::draw::{FitMemo, Transform, View, display, display_kept};
+        let (parts, focus) = side_parts();
+        let mut moved = parts.clone();
+        let at = moved.iter().position(|p| p.iter().any(|i| i.style == Style::Cut)).expect("a part with a cut");
+        moved[at] = Arc::new(moved_cuts(&moved[at]));
+        moved.remove(at + 3);
+        let (a, b) = (of_parts(&parts, focus), of_parts(&moved, focus));
+        let mut memo = FitMemo::new();
+        let fitted = View { width: 936.0, height: 420.0, ..View::default() };
+        assert_eq!(display_kept(&a, &fitted, &mut memo), display(&a, &fitted));
+        let xf = display(&a, &fitted).transform;
+        let at_xf = View { transform: Some(Transform { sy: xf.sy * 1.5, ..xf }), ..fitted };
+        let mut placed = 0;
+        for scene in [&a, &b, &b, &a, &b] {
+            let kept = display_kept(scene, &at_xf, &mut memo);
+            assert_eq!(kept, display(scene, &at_xf));
+            placed += kept.labels.len();
+        }
+        assert!(placed >= 10, "{placed} labels placed");
+        assert_ne!(display(&a, &at_xf).ops, display(&b, &at_xf).ops, "the scenes differ");
     }
 
-    /// The lines and labelled items held by parts are those of the whole
-    /// scene, drawing after drawing: parts changed, dropped, added, too many
-    /// segments, then back.
-    #[test]
-    fn held_lines_and_labels_are_the_scenes() {
+    /// The side section of six threads of three passes, in parts of five items; its focus.
+    fn side_parts() -> (Vec<Arc<Vec<Item>>>, Rect) {
         use crate::dialect::Dialect;
         use crate::settings::Settings;
         let mut text = String::from("G50 X100 Z100\nS300 M03\n");
@@ -334,20 +349,42 @@ mod tests {
         let items: Vec<Item> = whole.items.iter().cloned().collect();
         let parts: Vec<Arc<Vec<Item>>> = items.chunks(5).map(|c| Arc::new(c.to_vec())).collect();
         assert!(parts.len() > 8, "{} parts", parts.len());
-        let a = of_parts(&parts, whole.focus);
-        // A pass moved (its part built again), a part gone, a new one at the end.
-        let mut b_parts = parts.clone();
-        let at = b_parts.iter().position(|p| p.iter().any(|i| i.style == Style::Cut)).expect("a part with a cut");
-        let mut moved = (*b_parts[at]).clone();
+        (parts, whole.focus)
+    }
+
+    /// The items of `part` with its cuts 0.25 mm lower.
+    fn moved_cuts(part: &[Item]) -> Vec<Item> {
+        let mut moved = part.to_vec();
         for item in moved.iter_mut().filter(|i| i.style == Style::Cut) {
             if let Shape::Polyline { points } = &mut item.shape {
                 *points = points.iter().map(|p| [p[0], p[1] - 0.25]).collect();
             }
         }
-        b_parts[at] = Arc::new(moved);
+        moved
+    }
+
+    /// A scene of `parts`, shared, with `focus`.
+    fn of_parts(parts: &[Arc<Vec<Item>>], focus: Rect) -> Scene {
+        let mut s = Scene::new(crate::diagram::ViewKind::Side);
+        parts.iter().for_each(|p| s.items.push_shared(p.clone()));
+        s.focus = focus;
+        s
+    }
+
+    /// The lines and labelled items held by parts are those of the whole
+    /// scene, drawing after drawing: parts changed, dropped, added, too many
+    /// segments, then back.
+    #[test]
+    fn held_lines_and_labels_are_the_scenes() {
+        let (parts, focus) = side_parts();
+        let a = of_parts(&parts, focus);
+        // A pass moved (its part built again), a part gone, a new one at the end.
+        let mut b_parts = parts.clone();
+        let at = b_parts.iter().position(|p| p.iter().any(|i| i.style == Style::Cut)).expect("a part with a cut");
+        b_parts[at] = Arc::new(moved_cuts(&b_parts[at]));
         b_parts.remove(at + 2);
         b_parts.push(Arc::new(vec![Item::new(Shape::Arrow { from: [1.0, 2.0], to: [3.0, 5.0] }, Style::Cut)]));
-        let b = of_parts(&b_parts, whole.focus);
+        let b = of_parts(&b_parts, focus);
         // More segments than are kept: the first ones, as `scene_lines` takes them.
         let many: Vec<Item> = (0..MAX_SEGMENTS + 10)
             .map(|k| {
@@ -357,7 +394,7 @@ mod tests {
             .collect();
         let mut c_parts = b_parts.clone();
         c_parts.push(Arc::new(many));
-        let c = of_parts(&c_parts, whole.focus);
+        let c = of_parts(&c_parts, focus);
         let mut held = Held::default();
         for scene in [&a, &b, &b, &c, &b, &a] {
             held.update(scene);
