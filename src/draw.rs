@@ -213,7 +213,7 @@ pub fn display(scene: &Scene, view: &View) -> DisplayList {
 /// [`display`] with the fit and what was read of the scene's parts kept in
 /// `memo` between drawings of one view ([`FitMemo`]: a scene whose focus and
 /// labels did not change keeps its transform; the parts it shares with the
-/// last scene are not read again, [`held`]).
+/// last scene are not read again, `draw::held`).
 pub fn display_kept(scene: &Scene, view: &View, memo: &mut FitMemo) -> DisplayList {
     let read = memo.read(scene);
     let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| memo.fit_with(scene, view, &read));

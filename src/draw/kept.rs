@@ -1,5 +1,5 @@
-//! The fit kept between drawings of one view (and the drawing's lines,
-//! [`KeptLines`]). Fitting is most of a
+//! The fit kept between drawings of one view (and what was read of the
+//! last scene's parts, [`Held`]). Fitting is most of a
 //! drawing's cost (it places the labels several times to find the scale),
 //! and while a pass is being typed the scene's focus and labels stay what
 //! they were: the drawing keeps its transform (it does not move under the
@@ -15,7 +15,7 @@ use super::{Read, Transform, View};
 use crate::diagram::scene::{Item, Scene, Shape};
 use crate::hash::KeyHasher;
 
-/// The last fit of a view and the key of what it was made from; the lines of its last drawing.
+/// The last fit of a view and the key of what it was made from; what was read of its last scene's parts.
 #[derive(Default)]
 pub struct FitMemo {
     last: Option<(u64, Transform)>,
