@@ -2,7 +2,7 @@
 //! of paths, arrows and circles in a grid of world cells built once per
 //! scene; a label's box on the page is taken back to world coordinates to
 //! find the lines near it. Between drawings of one view the segments are
-//! kept by the scene's shared parts ([`super::held`]).
+//! kept by the scene's shared parts (`draw::held`).
 
 use std::collections::HashSet;
 
