@@ -207,7 +207,10 @@ pub fn fit_of(scene: &Scene, view: &View) -> Transform {
 pub fn display(scene: &Scene, view: &View) -> DisplayList {
     let read = Read::of(scene);
     let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, view.page(), &read));
-    display_at(scene, view, xf, &read)
+    let parts: Vec<paint::PartPaint> = scene.items.parts().map(|(_, part)| paint::PartPaint::of(part)).collect();
+    let visit: Vec<_> =
+        scene.items.parts().zip(&parts).map(|((start, items), part)| (start, items.as_slice(), part)).collect();
+    display_at(scene, view, xf, &read, &visit)
 }
 
 /// [`display`] with the fit and what was read of the scene's parts kept in
@@ -217,15 +220,16 @@ pub fn display(scene: &Scene, view: &View) -> DisplayList {
 pub fn display_kept(scene: &Scene, view: &View, memo: &mut FitMemo) -> DisplayList {
     let read = memo.read(scene);
     let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| memo.fit_with(scene, view, &read));
-    display_at(scene, view, xf, &read)
+    display_at(scene, view, xf, &read, &memo.visit(scene))
 }
 
-/// The display list of `scene` in `view` at transform `xf`, its labels as `read` found them.
-fn display_at(scene: &Scene, view: &View, xf: Transform, read: &Read) -> DisplayList {
+/// The display list of `scene` in `view` at transform `xf`, its labels as
+/// `read` found them, its parts visited as `visit` gives them.
+fn display_at(scene: &Scene, view: &View, xf: Transform, read: &Read, visit: &paint::Visit) -> DisplayList {
     let page = view.page();
     let (placed, dropped) = place::placed(read, view, &xf, page);
     let mut b = list::Builder::new(scene.view, page, xf, view.stale);
-    paint::paint(&mut b, scene, &xf, &placed, view);
+    paint::paint(&mut b, scene, visit, &xf, &placed, view);
     b.list.labels = placed;
     b.list.dropped = dropped;
     b.list.anchor = xf.at(anchor(scene, &view.mark));

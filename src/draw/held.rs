@@ -10,6 +10,7 @@ use std::sync::Arc;
 
 use super::labels::has_label;
 use super::lines::{LineIndex, MAX_SEGMENTS, crossable, one_way, scene_lines, segments};
+use super::paint::PartPaint;
 use crate::diagram::scene::{Item, Scene, Shape};
 use crate::hash::BuildKeyHasher;
 
@@ -29,11 +30,13 @@ type Counts = HashMap<[u64; 4], u32, BuildKeyHasher>;
 /// Each path held: how many items hold it, and its segments.
 type Paths = HashMap<PathKey, (u32, Vec<[u64; 4]>), BuildKeyHasher>;
 
-/// What a view keeps of one part: what its items add to the drawing's lines, and its items with labels.
+/// What a view keeps of one part: what its items add to the drawing's
+/// lines, its items with labels, and what the painter visits of it.
 struct Part {
     lines: Vec<Line>,
     /// Its items with labels, by their place in the part.
     labelled: Vec<u32>,
+    paint: PartPaint,
 }
 
 /// What a view keeps of the parts of its last scene (see the module
@@ -56,7 +59,7 @@ impl Held {
             |part| {
                 let lines = add(part, paths, counts);
                 let labelled = part.iter().enumerate().filter(|(_, i)| has_label(i)).map(|(k, _)| k as u32).collect();
-                Part { lines, labelled }
+                Part { lines, labelled, paint: PartPaint::of(part) }
             },
             |part| gone.push(part),
         );
@@ -71,6 +74,11 @@ impl Held {
             return scene_lines(scene);
         }
         LineIndex::new(self.counts.keys().map(|k| k.map(f64::from_bits)).collect(), scene.focus)
+    }
+
+    /// The parts of `scene` (taken in by [`Held::update`]) as the painter visits them.
+    pub(super) fn visit<'a, 's: 'a>(&'a self, scene: &'s Scene) -> Vec<(usize, &'s [Item], &'a PartPaint)> {
+        self.parts.each(scene).map(|(start, items, part)| (start, items, &part.paint)).collect()
     }
 
     /// The items of `scene` (taken in by [`Held::update`]) that have labels, with their indices, in order.

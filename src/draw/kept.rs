@@ -11,6 +11,7 @@ use std::hash::{Hash, Hasher};
 
 use super::held::Held;
 use super::labels::{annotated, labelled_in};
+use super::paint::PartPaint;
 use super::{Read, Transform, View};
 use crate::diagram::scene::{Item, Scene, Shape};
 use crate::hash::KeyHasher;
@@ -41,6 +42,11 @@ impl FitMemo {
     pub(super) fn read<'s>(&mut self, scene: &'s Scene) -> Read<'s> {
         self.held.update(scene);
         Read { lines: self.held.lines(scene), labelled: self.held.labelled(scene) }
+    }
+
+    /// The parts of `scene` (the last read) as the painter visits them.
+    pub(super) fn visit<'a, 's: 'a>(&'a self, scene: &'s Scene) -> Vec<(usize, &'s [Item], &'a PartPaint)> {
+        self.held.visit(scene)
     }
 
     /// [`FitMemo::fit`] with what was read of the scene given.

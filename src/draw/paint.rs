@@ -37,6 +37,53 @@ fn batch_key(item: &Item, closed: bool) -> BatchKey {
     (item.style.code(), role, closed, area)
 }
 
+/// A part's items as the painter visits them, each in item order: its
+/// paths (see [`PathAt`]) and its other items (their places in the part).
+/// Kept with the part between drawings (`draw::held`), so that a drawing
+/// goes through the paths without reading every item.
+#[derive(Default)]
+pub(super) struct PartPaint {
+    paths: Vec<PathAt>,
+    others: Vec<u32>,
+}
+
+/// A path of a part: its place in the part, the address of its points, its
+/// pen's key and whether it is a roughing cut.
+struct PathAt {
+    at: u32,
+    points: usize,
+    key: BatchKey,
+    rough: bool,
+}
+
+impl PartPaint {
+    /// What the painter visits of `items`.
+    pub(super) fn of(items: &[Item]) -> PartPaint {
+        let mut out = PartPaint::default();
+        for (k, item) in items.iter().enumerate() {
+            let (points, closed) = match &item.shape {
+                Shape::Polyline { points } => (points, false),
+                Shape::Polygon { points } => (points, true),
+                _ => {
+                    out.others.push(k as u32);
+                    continue;
+                }
+            };
+            let key = batch_key(item, closed);
+            out.paths.push(PathAt {
+                at: k as u32,
+                points: points.as_ptr() as usize,
+                key,
+                rough: item.style == Style::Roughing,
+            });
+        }
+        out
+    }
+}
+
+/// A scene's parts as the painter visits them: each part's first item's index, its items, what is visited of them.
+pub(super) type Visit<'a> = [(usize, &'a [Item], &'a PartPaint)];
+
 /// One pen's paths: its first item, the points, where each subpath starts,
 /// and the subpaths seen (by the hash of their points to 1/8 px: the
 /// first subpath of each hash).
@@ -78,8 +125,9 @@ impl Batch {
     }
 }
 
-/// Paints `scene` at `xf` into `b`, with labels `placed` and the mark `mark`.
-pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Placed], view: &View) {
+/// Paints `scene` (its parts visited as `visit` gives them) at `xf` into `b`,
+/// with labels `placed` and the mark `mark`.
+pub(super) fn paint(b: &mut Builder, scene: &Scene, visit: &Visit, xf: &Transform, placed: &[Placed], view: &View) {
     let mark = &view.mark;
     let by_item: HashMap<usize, &Placed, BuildKeyHasher> = placed.iter().map(|l| (l.item, l)).collect();
     let marked: HashSet<usize, BuildKeyHasher> =
@@ -89,16 +137,17 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, xf: &Transform, placed: &[Pl
     if let Some((set, light)) = mark {
         p.halos(scene, set, light, &by_item);
     }
-    p.paths(scene, view.roughing);
-    for (i, item) in scene.items.iter().enumerate() {
-        if matches!(item.shape, Shape::Polyline { .. } | Shape::Polygon { .. }) {
-            continue; // drawn with their pens by `paths`, their halos by `halos`
+    p.paths(scene, visit, view.roughing);
+    // Paths went with their pens in `paths`, their halos in `halos`: the other items.
+    for &(start, items, part) in visit {
+        for &k in &part.others {
+            let i = start + k as usize;
+            let halo = match mark {
+                Some((set, light)) if set.contains(&i) => HIGHLIGHT_HALO[usize::from(light)],
+                _ => HALO,
+            };
+            p.item(&items[k as usize], by_item.get(&i).copied(), halo);
         }
-        let halo = match mark {
-            Some((set, light)) if set.contains(&i) => HIGHLIGHT_HALO[usize::from(light)],
-            _ => HALO,
-        };
-        p.item(item, by_item.get(&i).copied(), halo);
     }
     if let Some((set, false)) = mark {
         // What the pointer is over comes to the front: its lines in their own
@@ -197,7 +246,7 @@ impl Painter<'_> {
     }
 
     /// Every polyline and polygon on the page, one operation per pen (roughing cuts only with `roughing`).
-    fn paths(&mut self, scene: &Scene, roughing: bool) {
+    fn paths(&mut self, scene: &Scene, visit: &Visit, roughing: bool) {
         let (w, h) = (self.b.list.width, self.b.list.height);
         let mut batches: Vec<Batch> = Vec::new();
         let mut index: HashMap<BatchKey, usize, BuildKeyHasher> = HashMap::default();
@@ -210,17 +259,12 @@ impl Painter<'_> {
         // The last path held in each slot, by its address: a path repeated many
         // times (thousands of passes over a few diameters) is known without a lookup.
         let mut recent: Vec<Option<(usize, BatchKey)>> = vec![None; RECENT];
-        for (i, item) in scene.items.iter().enumerate() {
-            let (points, closed) = match &item.shape {
-                Shape::Polyline { points } => (points, false),
-                Shape::Polygon { points } => (points, true),
-                _ => continue,
-            };
-            if item.style == Style::Roughing && !roughing {
+        let paths = visit.iter().flat_map(|&(start, items, part)| part.paths.iter().map(move |p| (start, items, p)));
+        for (start, items, path) in paths {
+            if path.rough && !roughing {
                 continue;
             }
-            let key = batch_key(item, closed);
-            let at = points.as_ptr() as usize;
+            let (at, key) = (path.points, path.key);
             let slot = &mut recent[(at / std::mem::align_of::<Pt>()) % RECENT];
             if *slot == Some((at, key)) {
                 continue;
@@ -229,6 +273,10 @@ impl Painter<'_> {
             if !held.insert((at, key)) {
                 continue;
             }
+            let i = start + path.at as usize;
+            let (Shape::Polyline { points } | Shape::Polygon { points }) = &items[path.at as usize].shape else {
+                continue;
+            };
             let mut wh = KeyHasher::default();
             key.hash(&mut wh);
             hash_points(&mut wh, points);
