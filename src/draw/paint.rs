@@ -259,46 +259,47 @@ impl Painter<'_> {
         // The last path held in each slot, by its address: a path repeated many
         // times (thousands of passes over a few diameters) is known without a lookup.
         let mut recent: Vec<Option<(usize, BatchKey)>> = vec![None; RECENT];
-        let paths = visit.iter().flat_map(|&(start, items, part)| part.paths.iter().map(move |p| (start, items, p)));
-        for (start, items, path) in paths {
-            if path.rough && !roughing {
-                continue;
-            }
-            let (at, key) = (path.points, path.key);
-            let slot = &mut recent[(at / std::mem::align_of::<Pt>()) % RECENT];
-            if *slot == Some((at, key)) {
-                continue;
-            }
-            *slot = Some((at, key));
-            if !held.insert((at, key)) {
-                continue;
-            }
-            let i = start + path.at as usize;
-            let (Shape::Polyline { points } | Shape::Polygon { points }) = &items[path.at as usize].shape else {
-                continue;
-            };
-            let mut wh = KeyHasher::default();
-            key.hash(&mut wh);
-            hash_points(&mut wh, points);
-            match worlds.entry(wh.finish()) {
-                Entry::Occupied(e) if same_points(e.get(), points) => continue,
-                Entry::Occupied(_) => {}
-                Entry::Vacant(e) => {
-                    e.insert(points);
+        for &(start, items, part) in visit {
+            for path in &part.paths {
+                if path.rough && !roughing {
+                    continue;
                 }
+                let (at, key) = (path.points, path.key);
+                let slot = &mut recent[(at / std::mem::align_of::<Pt>()) % RECENT];
+                if *slot == Some((at, key)) {
+                    continue;
+                }
+                *slot = Some((at, key));
+                if !held.insert((at, key)) {
+                    continue;
+                }
+                let i = start + path.at as usize;
+                let (Shape::Polyline { points } | Shape::Polygon { points }) = &items[path.at as usize].shape else {
+                    continue;
+                };
+                let mut wh = KeyHasher::default();
+                key.hash(&mut wh);
+                hash_points(&mut wh, points);
+                match worlds.entry(wh.finish()) {
+                    Entry::Occupied(e) if same_points(e.get(), points) => continue,
+                    Entry::Occupied(_) => {}
+                    Entry::Vacant(e) => {
+                        e.insert(points);
+                    }
+                }
+                pts.clear();
+                pts.extend(points.iter().map(|p| self.xf.at(*p)));
+                let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
+                if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {
+                    continue;
+                }
+                let k = *index.entry(key).or_insert_with(|| {
+                    let seen = HashMap::default();
+                    batches.push(Batch { key, first: i, points: Vec::new(), starts: Vec::new(), seen });
+                    batches.len() - 1
+                });
+                batches[k].add(&pts);
             }
-            pts.clear();
-            pts.extend(points.iter().map(|p| self.xf.at(*p)));
-            let off = |k: usize, lo: f64, hi: f64| pts.iter().all(|p| p[k] < lo) || pts.iter().all(|p| p[k] > hi);
-            if pts.len() < 2 || off(0, -CULL, w + CULL) || off(1, -CULL, h + CULL) {
-                continue;
-            }
-            let k = *index.entry(key).or_insert_with(|| {
-                let seen = HashMap::default();
-                batches.push(Batch { key, first: i, points: Vec::new(), starts: Vec::new(), seen });
-                batches.len() - 1
-            });
-            batches[k].add(&pts);
         }
         for bt in batches {
             let pen = self.b.pen(pen_of(&scene.items[bt.first]).pen);
