@@ -9,9 +9,9 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::labels::has_label;
-use super::lines::{LineIndex, MAX_SEGMENTS, crossable, one_way, scene_lines, segments};
+use super::lines::{LineIndex, MAX_SEGMENTS, PathKey, crossable, one_way, path_key, scene_lines, segments};
 use super::paint::PartPaint;
-use crate::diagram::scene::{Item, Scene, Shape};
+use crate::diagram::scene::{Item, Scene};
 use crate::hash::BuildKeyHasher;
 
 /// What one item of a part adds to the drawing's lines: a path (by the
@@ -20,9 +20,6 @@ enum Line {
     Path(PathKey),
     Segment([u64; 4]),
 }
-
-/// A path's points (their address) and whether it is closed.
-type PathKey = (usize, bool);
 
 /// How many times each segment is held.
 type Counts = HashMap<[u64; 4], u32, BuildKeyHasher>;
@@ -195,13 +192,8 @@ fn add(items: &[Item], paths: &mut Paths, counts: &mut Counts) -> Vec<Line> {
     let mut lines = Vec::new();
     let mut world = Vec::new();
     for item in items.iter().filter(|i| !crossable(i.style)) {
-        let key = match &item.shape {
-            Shape::Polyline { points } => Some((points.as_ptr() as usize, false)),
-            Shape::Polygon { points } => Some((points.as_ptr() as usize, true)),
-            _ => None,
-        };
         world.clear();
-        if let Some(key) = key {
+        if let Some(key) = path_key(&item.shape) {
             let path = paths.entry(key).or_insert_with(|| {
                 segments(&item.shape, &mut world);
                 let segs: Vec<[u64; 4]> = world.iter().map(|s| one_way(*s)).collect();
@@ -251,7 +243,7 @@ fn count_out(counts: &mut Counts, s: &[u64; 4]) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagram::scene::{Rect, Style};
+    use crate::diagram::scene::{Rect, Shape, Style};
 
     /// Values by part through scenes whose parts move, repeat, come and go:
     /// each part's value is the one made for it, made once while it is held

@@ -198,15 +198,10 @@ pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
     let mut out = Vec::new();
     let mut seen: HashSet<[u64; 4], BuildKeyHasher> = HashSet::default();
     // Paths that share their points (see `wasm::memo`) add no segment after the first.
-    let mut held: HashSet<(usize, bool), BuildKeyHasher> = HashSet::default();
+    let mut held: HashSet<PathKey, BuildKeyHasher> = HashSet::default();
     'all: for of_threads in [true, false] {
         for item in scene.items.iter().filter(|i| i.thread.is_some() == of_threads && !crossable(i.style)) {
-            let path = match &item.shape {
-                Shape::Polyline { points } => Some((points.as_ptr() as usize, false)),
-                Shape::Polygon { points } => Some((points.as_ptr() as usize, true)),
-                _ => None,
-            };
-            if path.is_some_and(|p| !held.insert(p)) {
+            if path_key(&item.shape).is_some_and(|p| !held.insert(p)) {
                 continue;
             }
             let from = out.len();
@@ -227,6 +222,19 @@ pub(super) fn scene_lines(scene: &Scene) -> LineIndex {
         }
     }
     LineIndex::new(out, scene.focus)
+}
+
+/// A path's points (their address: paths drawn again exactly share them,
+/// `wasm::memo`) and whether it is closed.
+pub(super) type PathKey = (usize, bool);
+
+/// The key of a path (polyline or polygon); none for other shapes.
+pub(super) fn path_key(shape: &Shape) -> Option<PathKey> {
+    match shape {
+        Shape::Polyline { points } => Some((points.as_ptr() as usize, false)),
+        Shape::Polygon { points } => Some((points.as_ptr() as usize, true)),
+        _ => None,
+    }
 }
 
 /// A segment's bits, one way round: either direction is the same line.

@@ -12,6 +12,7 @@ use std::hash::{Hash, Hasher};
 use crate::hash::{BuildKeyHasher, KeyHasher};
 
 use super::labels::LINE;
+use super::lines::path_key;
 use super::list::{Builder, Op, Pen};
 use super::pens::{HALO, HIGHLIGHT, HIGHLIGHT_HALO, ItemPen, pen_of};
 use super::{Placed, Transform, View};
@@ -61,19 +62,14 @@ impl PartPaint {
     pub(super) fn of(items: &[Item]) -> PartPaint {
         let mut out = PartPaint::default();
         for (k, item) in items.iter().enumerate() {
-            let (points, closed) = match &item.shape {
-                Shape::Polyline { points } => (points, false),
-                Shape::Polygon { points } => (points, true),
-                _ => {
-                    out.others.push(k as u32);
-                    continue;
-                }
+            let Some((points, closed)) = path_key(&item.shape) else {
+                out.others.push(k as u32);
+                continue;
             };
-            let key = batch_key(item, closed);
             out.paths.push(PathAt {
                 at: k as u32,
-                points: points.as_ptr() as usize,
-                key,
+                points,
+                key: batch_key(item, closed),
                 rough: item.style == Style::Roughing,
             });
         }
