@@ -30,6 +30,7 @@ mod pens;
 pub mod pick;
 mod place;
 mod text;
+mod visit;
 pub mod words;
 
 pub use kept::FitMemo;
@@ -207,7 +208,9 @@ pub fn fit_of(scene: &Scene, view: &View) -> Transform {
 pub fn display(scene: &Scene, view: &View) -> DisplayList {
     let read = Read::of(scene);
     let xf = view.transform.filter(Transform::is_valid).unwrap_or_else(|| fit::fit(scene, view, view.page(), &read));
-    let parts: Vec<paint::PartPaint> = scene.items.parts().map(|(_, part)| paint::PartPaint::of(part)).collect();
+    let mut sets = visit::PathSets::default();
+    let parts: Vec<visit::PartPaint> =
+        scene.items.parts().map(|(_, part)| visit::PartPaint::of(part, &mut sets)).collect();
     let visit: Vec<_> =
         scene.items.parts().zip(&parts).map(|((start, items), part)| (start, items.as_slice(), part)).collect();
     display_at(scene, view, xf, &read, &visit)
@@ -225,7 +228,7 @@ pub fn display_kept(scene: &Scene, view: &View, memo: &mut FitMemo) -> DisplayLi
 
 /// The display list of `scene` in `view` at transform `xf`, its labels as
 /// `read` found them, its parts visited as `visit` gives them.
-fn display_at(scene: &Scene, view: &View, xf: Transform, read: &Read, visit: &paint::Visit) -> DisplayList {
+fn display_at(scene: &Scene, view: &View, xf: Transform, read: &Read, visit: &visit::Visit) -> DisplayList {
     let page = view.page();
     let (placed, dropped) = place::placed(read, view, &xf, page);
     let mut b = list::Builder::new(scene.view, page, xf, view.stale);

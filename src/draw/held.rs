@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use super::labels::has_label;
 use super::lines::{LineIndex, MAX_SEGMENTS, PathKey, crossable, one_way, path_key, scene_lines, segments};
-use super::paint::PartPaint;
+use super::visit::{PartPaint, PathSets};
 use crate::diagram::scene::{Item, Scene};
 use crate::hash::BuildKeyHasher;
 
@@ -44,23 +44,27 @@ pub struct Held {
     parts: ByPart<Part>,
     paths: Paths,
     counts: Counts,
+    sets: PathSets,
 }
 
 impl Held {
     /// Takes in `scene`: its new parts are read, the parts it no longer has are let go.
     pub(super) fn update(&mut self, scene: &Scene) {
-        let Held { parts, paths, counts } = self;
+        let Held { parts, paths, counts, sets } = self;
         let mut gone = Vec::new();
         parts.update(
             scene,
             |part| {
                 let lines = add(part, paths, counts);
                 let labelled = part.iter().enumerate().filter(|(_, i)| has_label(i)).map(|(k, _)| k as u32).collect();
-                Part { lines, labelled, paint: PartPaint::of(part) }
+                Part { lines, labelled, paint: PartPaint::of(part, sets) }
             },
             |part| gone.push(part),
         );
-        gone.iter().for_each(|part| remove(&part.lines, paths, counts));
+        for part in &gone {
+            remove(&part.lines, paths, counts);
+            sets.release(&part.paint);
+        }
     }
 
     /// The drawing's lines of `scene`, taken in by [`Held::update`]: the
@@ -411,6 +415,10 @@ mod tests {
                 .collect();
             assert!(!expected.is_empty());
             assert_eq!(labelled, expected);
+            // The lists of paths held are the scene's: those of parts gone are let go.
+            let mut fresh = PathSets::default();
+            scene.items.parts().for_each(|(_, part)| drop(PartPaint::of(part, &mut fresh)));
+            assert_eq!(held.sets.len(), fresh.len());
         }
         // What was asked for: the changed pass, the part gone and the arrow each changed the lines.
         let (la, lb) = (scene_lines(&a).sorted(), scene_lines(&b).sorted());

@@ -11,7 +11,7 @@ use std::hash::{Hash, Hasher};
 
 use super::held::Held;
 use super::labels::{annotated, labelled_in};
-use super::paint::PartPaint;
+use super::visit::PartPaint;
 use super::{Read, Transform, View};
 use crate::diagram::scene::{Item, Scene, Shape};
 use crate::hash::KeyHasher;

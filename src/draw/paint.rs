@@ -12,9 +12,9 @@ use std::hash::{Hash, Hasher};
 use crate::hash::{BuildKeyHasher, KeyHasher};
 
 use super::labels::LINE;
-use super::lines::path_key;
 use super::list::{Builder, Op, Pen};
 use super::pens::{HALO, HIGHLIGHT, HIGHLIGHT_HALO, ItemPen, pen_of};
+use super::visit::{BatchKey, Visit};
 use super::{Placed, Transform, View};
 use crate::diagram::scene::{Anchor, Glyph, Item, Pt, Scene, Shape, Style, hash_points, same_points};
 
@@ -23,62 +23,6 @@ const CULL: f64 = 12.0;
 
 /// Slots of the paths held last, by address ([`Painter::paths`]).
 const RECENT: usize = 1024;
-
-/// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
-type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
-
-fn batch_key(item: &Item, closed: bool) -> BatchKey {
-    let role = match item.role {
-        None => 0,
-        Some(crate::thread::Role::Rough) => 1,
-        Some(crate::thread::Role::Finish) => 2,
-        Some(crate::thread::Role::Spring) => 3,
-    };
-    let area = (item.style == Style::Area).then(|| (item.thread.map_or(0, |t| t + 1), item.pass.map_or(0, |p| p + 1)));
-    (item.style.code(), role, closed, area)
-}
-
-/// A part's items as the painter visits them, each in item order: its
-/// paths (see [`PathAt`]) and its other items (their places in the part).
-/// Kept with the part between drawings (`draw::held`), so that a drawing
-/// goes through the paths without reading every item.
-#[derive(Default)]
-pub(super) struct PartPaint {
-    paths: Vec<PathAt>,
-    others: Vec<u32>,
-}
-
-/// A path of a part: its place in the part, the address of its points, its
-/// pen's key and whether it is a roughing cut.
-struct PathAt {
-    at: u32,
-    points: usize,
-    key: BatchKey,
-    rough: bool,
-}
-
-impl PartPaint {
-    /// What the painter visits of `items`.
-    pub(super) fn of(items: &[Item]) -> PartPaint {
-        let mut out = PartPaint::default();
-        for (k, item) in items.iter().enumerate() {
-            let Some((points, closed)) = path_key(&item.shape) else {
-                out.others.push(k as u32);
-                continue;
-            };
-            out.paths.push(PathAt {
-                at: k as u32,
-                points,
-                key: batch_key(item, closed),
-                rough: item.style == Style::Roughing,
-            });
-        }
-        out
-    }
-}
-
-/// A scene's parts as the painter visits them: each part's first item's index, its items, what is visited of them.
-pub(super) type Visit<'a> = [(usize, &'a [Item], &'a PartPaint)];
 
 /// One pen's paths: its first item, the points, where each subpath starts,
 /// and the subpaths seen (by the hash of their points to 1/8 px: the
@@ -134,15 +78,29 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, visit: &Visit, xf: &Transfor
         p.halos(scene, set, light, &by_item);
     }
     p.paths(scene, visit, view.roughing);
-    // Paths went with their pens in `paths`, their halos in `halos`: the other items.
+    // Paths went with their pens in `paths`, their halos in `halos`: the
+    // other shapes and the placed labels, in item order.
+    let mut labels: Vec<&Placed> = placed.iter().collect();
+    labels.sort_by_key(|l| l.item);
+    let mut labels = labels.into_iter().peekable();
     for &(start, items, part) in visit {
-        for &k in &part.others {
-            let i = start + k as usize;
+        let end = start + items.len();
+        let mut shapes = part.shapes.iter().map(|&k| start + k as usize).peekable();
+        loop {
+            let shape = shapes.peek().copied();
+            let (i, placed) = match (shape, labels.peek().map(|l| l.item).filter(|&i| i < end)) {
+                (_, Some(l)) if shape.is_none_or(|s| l < s) => (l, labels.next()),
+                (Some(s), _) => {
+                    shapes.next();
+                    (s, None)
+                }
+                (None, _) => break,
+            };
             let halo = match mark {
                 Some((set, light)) if set.contains(&i) => HIGHLIGHT_HALO[usize::from(light)],
                 _ => HALO,
             };
-            p.item(&items[k as usize], by_item.get(&i).copied(), halo);
+            p.item(&items[i - start], placed, halo);
         }
     }
     if let Some((set, false)) = mark {
@@ -255,7 +213,17 @@ impl Painter<'_> {
         // The last path held in each slot, by its address: a path repeated many
         // times (thousands of passes over a few diameters) is known without a lookup.
         let mut recent: Vec<Option<(usize, BatchKey)>> = vec![None; RECENT];
+        // The lists of paths painted (`PathSets`): a part whose every path an
+        // earlier part held (a repeated section) is passed over whole.
+        let mut painted: Vec<bool> = Vec::new();
         for &(start, items, part) in visit {
+            let n = part.set as usize;
+            if painted.len() <= n {
+                painted.resize(n + 1, false);
+            }
+            if std::mem::replace(&mut painted[n], true) {
+                continue;
+            }
             for path in &part.paths {
                 if path.rough && !roughing {
                     continue;
