@@ -81,7 +81,7 @@ pub(super) fn paint(b: &mut Builder, scene: &Scene, visit: &Visit, xf: &Transfor
     // Paths went with their pens in `paths`, their halos in `halos`: the
     // other shapes and the placed labels, in item order.
     let mut labels: Vec<&Placed> = placed.iter().collect();
-    labels.sort_by_key(|l| l.item);
+    crate::order::sort_by_key(&mut labels, |l| l.item);
     let mut labels = labels.into_iter().peekable();
     for &(start, items, part) in visit {
         let end = start + items.len();

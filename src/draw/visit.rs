@@ -77,10 +77,12 @@ impl PartPaint {
 /// first of them whole. A number is free again once no part holds it.
 #[derive(Default)]
 pub(super) struct PathSets {
-    by_hash: HashMap<u64, Vec<u32>, BuildKeyHasher>,
+    /// The number of a list, by the list's hash (a list whose hash another
+    /// list holds keeps a number of its own, shared with no other part).
+    by_hash: HashMap<u64, usize, BuildKeyHasher>,
     /// Each number's list, its hash and how many parts hold it; `None`: free.
     sets: Vec<Option<(Vec<PathSig>, u64, u32)>>,
-    free: Vec<u32>,
+    free: Vec<usize>,
 }
 
 impl PathSets {
@@ -89,43 +91,35 @@ impl PathSets {
         let mut h = KeyHasher::default();
         list.hash(&mut h);
         let hash = h.finish();
-        let same = self.by_hash.entry(hash).or_default();
-        for &n in same.iter() {
-            if let Some((l, _, count)) = &mut self.sets[n as usize]
-                && *l == list
-            {
-                *count += 1;
-                return n;
-            }
+        if let Some(&n) = self.by_hash.get(&hash)
+            && let Some((l, _, count)) = &mut self.sets[n]
+            && *l == list
+        {
+            *count += 1;
+            return n as u32;
         }
-        let n = match self.free.pop() {
-            Some(n) => n,
-            None => {
-                self.sets.push(None);
-                (self.sets.len() - 1) as u32
-            }
-        };
-        self.sets[n as usize] = Some((list, hash, 1));
-        same.push(n);
-        n
+        let n = self.free.pop().unwrap_or_else(|| {
+            self.sets.push(None);
+            self.sets.len() - 1
+        });
+        self.sets[n] = Some((list, hash, 1));
+        self.by_hash.entry(hash).or_insert(n);
+        n as u32
     }
 
     /// Lets go of `part`'s list of paths once.
     pub(super) fn release(&mut self, part: &PartPaint) {
-        let n = part.set;
-        let Some((_, hash, count)) = &mut self.sets[n as usize] else { return };
+        let n = part.set as usize;
+        let Some((_, hash, count)) = &mut self.sets[n] else { return };
         *count -= 1;
         if *count > 0 {
             return;
         }
         let hash = *hash;
-        self.sets[n as usize] = None;
+        self.sets[n] = None;
         self.free.push(n);
-        if let Some(same) = self.by_hash.get_mut(&hash) {
-            same.retain(|&m| m != n);
-            if same.is_empty() {
-                self.by_hash.remove(&hash);
-            }
+        if self.by_hash.get(&hash) == Some(&n) {
+            self.by_hash.remove(&hash);
         }
     }
 
