@@ -8,13 +8,15 @@
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 
+use super::labels::has_label;
 use super::lines::path_key;
-use crate::diagram::scene::{Item, Shape, Style};
+use crate::diagram::scene::{Item, Style};
 use crate::hash::{BuildKeyHasher, KeyHasher};
 
 /// The pen a path goes with: style, role and shape; an area's pass and thread too (a colour each).
 pub(super) type BatchKey = (u32, u8, bool, Option<(u32, u32)>);
 
+/// The pen `item` is drawn with as a path (`closed`: a polygon).
 pub(super) fn batch_key(item: &Item, closed: bool) -> BatchKey {
     let role = match item.role {
         None => 0,
@@ -62,7 +64,7 @@ impl PartPaint {
                     key: batch_key(item, closed),
                     rough: item.style == Style::Roughing,
                 }),
-                None if !matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. }) => shapes.push(k as u32),
+                None if !has_label(item) => shapes.push(k as u32),
                 None => {}
             }
         }
