@@ -408,11 +408,12 @@ fn dim_lines(a: Pt, b: Pt, half: bool, l: &Placed) -> Vec<(Pt, Pt)> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use crate::diagram::scene::{Item, Scene, Shape, Style, ViewKind};
     use crate::draw::{Op, Transform, View, display};
 
-    fn line(points: &[[f64; 2]], style: Style) -> Item {
+    /// A polyline of `points` in `style`.
+    pub(in crate::draw) fn line(points: &[[f64; 2]], style: Style) -> Item {
         Item::new(Shape::Polyline { points: points.into() }, style)
     }
 

@@ -138,11 +138,8 @@ pub(super) type Visit<'a> = [(usize, &'a [Item], &'a PartPaint)];
 #[cfg(test)]
 mod tests {
     use crate::diagram::scene::{Item, Scene, Shape, Style, ViewKind};
+    use crate::draw::paint::tests::line;
     use crate::draw::{Transform, View, display};
-
-    fn line(points: &[[f64; 2]], style: Style) -> Item {
-        Item::new(Shape::Polyline { points: points.into() }, style)
-    }
 
     /// A part whose paths repeat an earlier part's (the same points, shared,
     /// in the same pens: a program's repeated section) is passed over whole:
