@@ -69,12 +69,12 @@ impl Batch {
 /// with labels `placed` and the mark `mark`.
 pub(super) fn paint(b: &mut Builder, scene: &Scene, visit: &Visit, xf: &Transform, placed: &[Placed], view: &View) {
     let mark = &view.mark;
-    let by_item: HashMap<usize, &Placed, BuildKeyHasher> = placed.iter().map(|l| (l.item, l)).collect();
     let marked: HashSet<usize, BuildKeyHasher> =
         mark.items.iter().copied().filter(|&i| i < scene.items.len()).collect();
     let mark = if b.list.stale || marked.is_empty() { None } else { Some((&marked, mark.light)) };
     let mut p = Painter { b, xf };
     if let Some((set, light)) = mark {
+        let by_item: HashMap<usize, &Placed, BuildKeyHasher> = placed.iter().map(|l| (l.item, l)).collect();
         p.halos(scene, set, light, &by_item);
     }
     p.paths(scene, visit, view.roughing);
@@ -271,12 +271,9 @@ impl Painter<'_> {
         }
     }
 
+    /// One item that is not a path (paths went with their pens already); a
+    /// label only where it was `placed`.
     fn item(&mut self, item: &Item, placed: Option<&Placed>, halo: &str) {
-        // Paths went with their pens already; a label that found no place draws nothing.
-        let unplaced = placed.is_none() && matches!(item.shape, Shape::Dim { .. } | Shape::Text { .. });
-        if unplaced || matches!(item.shape, Shape::Polyline { .. } | Shape::Polygon { .. }) {
-            return;
-        }
         let pen = pen_of(item);
         let xf = self.xf;
         match &item.shape {
