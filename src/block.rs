@@ -78,8 +78,9 @@ pub struct Block {
     pub kind: BlockKind,
     /// Starts with `/` (block delete).
     pub deleted: bool,
-    /// Words in order, excluding the `N` sequence number and `O` program number.
-    pub words: Vec<Word>,
+    /// Words in order, excluding the `N` sequence number and `O` program number
+    /// (private: `index` must follow every change; see [`Block::words`]).
+    words: Vec<Word>,
     /// The `N` sequence number, if any.
     pub n: Option<Word>,
     /// A `$` spindle selection word (LinuxCNC), kept apart from the letter words; its letter is `$`.
@@ -115,6 +116,40 @@ impl Block {
         earlier
     }
 
+    /// The words in order, excluding the `N` sequence number and `O` program number.
+    pub fn words(&self) -> &[Word] {
+        &self.words
+    }
+
+    /// Removes all words (the `N` word and the block's kind stay).
+    pub fn clear_words(&mut self) {
+        self.words.clear();
+        self.index = [0; 26];
+    }
+
+    /// Removes the last word pushed, when it repeats a letter already present
+    /// (the index still points at the first of that letter).
+    pub fn pop_repeated(&mut self) {
+        if let Some(w) = self.words.last() {
+            let first = self.index[(w.letter - b'A') as usize] as usize;
+            if first != 0 && first != self.words.len() {
+                self.words.pop();
+            }
+        }
+    }
+
+    /// Keeps only the words for which `keep` is true, in order.
+    pub fn retain_words(&mut self, keep: impl FnMut(&Word) -> bool) {
+        self.words.retain(keep);
+        self.index = [0; 26];
+        for (i, w) in self.words.iter().enumerate().take(255) {
+            let slot = &mut self.index[(w.letter - b'A') as usize];
+            if *slot == 0 {
+                *slot = i as u8 + 1;
+            }
+        }
+    }
+
     /// The first word with `letter`.
     pub fn get(&self, letter: u8) -> Option<&Word> {
         let i = self.index[(letter - b'A') as usize];
@@ -147,7 +182,40 @@ impl Block {
 
 #[cfg(test)]
 mod tests {
-    use super::Number;
+    use super::{Block, Number, Word};
+    use crate::span::Span;
+
+    fn word(letter: u8, value: f64) -> Word {
+        let num = Number { value, has_point: false, int_digits: 1, frac_digits: 0 };
+        Word { letter, num, span: Span::default() }
+    }
+
+    /// After every change of the words, `get` finds the first word of each
+    /// letter present and nothing for a letter gone (the index follows).
+    #[test]
+    fn the_index_follows_the_words() {
+        let mut b = Block::default();
+        for (l, v) in [(b'G', 0.0), (b'G', 66.0), (b'P', 9011.0), (b'X', 47.1), (b'U', 1.0), (b'G', 20.0)] {
+            b.push(word(l, v));
+        }
+        assert_eq!(b.get(b'X').map(|w| w.value()), Some(47.1));
+        b.retain_words(|w| w.letter == b'G' && w.value() != 66.0);
+        let left: Vec<f64> = b.words().iter().map(|w| w.value()).collect();
+        assert_eq!(left, [0.0, 20.0]);
+        assert!(b.get(b'X').is_none() && b.get(b'U').is_none() && b.get(b'P').is_none());
+        assert_eq!(b.get(b'G').map(|w| w.value()), Some(0.0));
+        // A repeated letter popped: the first stays found; a first word is not popped.
+        assert!(b.push(word(b'G', 1.0)).is_some());
+        b.pop_repeated();
+        assert_eq!(b.words().len(), 2);
+        assert!(b.push(word(b'Z', 5.0)).is_none());
+        b.pop_repeated();
+        assert_eq!(b.get(b'Z').map(|w| w.value()), Some(5.0));
+        b.clear_words();
+        assert!(b.words().is_empty() && b.get(b'G').is_none() && b.get(b'Z').is_none());
+        assert!(b.push(word(b'X', 2.0)).is_none());
+        assert_eq!(b.get(b'X').map(|w| w.value()), Some(2.0));
+    }
 
     /// `integer` is the value when it is whole and below 9e15 in size, as `fract() == 0` says.
     #[test]

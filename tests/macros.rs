@@ -459,6 +459,49 @@ M30
     assert_eq!(d[0].line, 2);
 }
 
+/// On the G66 block itself, X and the other argument letters are the
+/// macro's arguments (#24 …), not a move, while its other G words still
+/// run (16i-PB B-63684EN §16.6.3 p.281: argument specification I includes
+/// X, Y, Z, U, V, W). The block left to run has no axis words at all:
+/// asking it for X or U finds none (no stale position of the words taken).
+#[test]
+fn g66_block_keeps_its_g_words_and_gives_x_to_the_macro() {
+    let modal = "\
+O0004
+G97 S300 M03
+G00 X58. Z70.
+G01 G66 P9011 A13. B2. X47.1 U1. F0.2
+G00 Z70.
+G67
+M30
+O9011 (ONE PASS AT DIAMETER #24)
+G00 X#24
+G32 Z#1 F#2
+G00 X58.
+Z70.
+M99
+";
+    let unrolled = "\
+O0004
+G97 S300 M03
+G00 X58. Z70.
+G01
+G00 Z70.
+G00 X47.1
+G32 Z13. F2.
+G00 X58.
+Z70.
+M30
+";
+    let plan = fanuc(modal);
+    same_cut(&plan, &fanuc(unrolled));
+    assert_eq!(plan.threads.len(), 1);
+    assert_eq!(plan.threads[0].passes.len(), 1);
+    assert_eq!(plan.threads[0].passes[0].via, [5]);
+    // X and U on the G66 block are arguments: no "X and U together" alarm.
+    assert!(plan.diagnostics.iter().all(|d| d.code != Code::AxisConflict), "{:?}", plan.diagnostics);
+}
+
 /// M98 nests ten levels on the 0i-D/0i-F (setting `fanuc.sub_nesting`;
 /// the 0i-C's four, B-64124EN §12.3 p.136, by setting it to 4): the
 /// eleventh call is the controller's alarm, at the call.

@@ -206,7 +206,7 @@ impl Reader<'_> {
 
     /// Whether the block has an axis word of this controller.
     pub fn has_axes(&self, b: &Block) -> bool {
-        b.words.iter().any(|w| self.rules.axis_words & (1 << (w.letter - b'A')) != 0)
+        b.words().iter().any(|w| self.rules.axis_words & (1 << (w.letter - b'A')) != 0)
     }
 
     /// Whether `X`/`Z` and `U`/`W` conflict in `b`; reports and returns true when they do.
@@ -311,7 +311,7 @@ impl Reader<'_> {
     pub fn check_words(&mut self, b: &Block, allowed: &[u8], what: &str) -> bool {
         // Inlined, the mask of a literal `allowed` folds to a constant.
         let mask = letters(ALWAYS) | letters(allowed) | self.rules.free_words;
-        if b.words.iter().all(|w| mask & (1 << (w.letter - b'A')) != 0) {
+        if b.words().iter().all(|w| mask & (1 << (w.letter - b'A')) != 0) {
             return true;
         }
         self.report_words(b, mask, what)
@@ -320,7 +320,7 @@ impl Reader<'_> {
     #[cold]
     fn report_words(&mut self, b: &Block, mask: u32, what: &str) -> bool {
         let mut ok = true;
-        for w in &b.words {
+        for w in b.words() {
             if mask & (1 << (w.letter - b'A')) == 0 {
                 match what.strip_suffix(" (first block)") {
                     Some(g) => self.diag(&msg::UNEXPECTED_WORD_FIRST_BLOCK, w.span, args![what = g, word = w]),
@@ -361,7 +361,7 @@ pub fn g_span(b: &Block) -> Span {
 /// Span of the block's axis words (for alarms about the motion itself).
 pub fn axis_span(b: &Block) -> Span {
     let mut span: Option<Span> = None;
-    for w in &b.words {
+    for w in b.words() {
         if matches!(w.letter, b'X' | b'Z' | b'U' | b'W') {
             span = Some(span.map_or(w.span, |s| s.cover(w.span)));
         }

@@ -263,8 +263,8 @@ pub fn g65(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block, macros: &Macros) -> 
         ex.modal_call =
             Some(Box::new(super::ModalCall { program: n, span: p.span, count, args: Box::new(locals), level }));
         // The block's other G words (G20 …) still run; its other words were the arguments.
-        block.words.retain(|w| w.letter == b'G' && w.num.integer() != Some(66));
-        return if block.words.is_empty() { Flow::Skip } else { Flow::Run };
+        block.retain_words(|w| w.letter == b'G' && w.num.integer() != Some(66));
+        return if block.words().is_empty() { Flow::Skip } else { Flow::Run };
     }
     let Some(body) = program(ctx, p.value(), p.span) else { return Flow::Skip };
     enter_macro(ex, ctx, body, count, &locals, g.span, macros);
@@ -294,7 +294,7 @@ fn macro_level(ex: &Exec) -> usize {
 /// that name an axis without moving it (G04 dwell, G10, G50), do not call.
 pub fn g66_call(ex: &mut Exec, ctx: &mut Ctx, block: &Block, macros: &Macros) -> bool {
     let Some(m) = ex.modal_call.as_deref().cloned() else { return false };
-    let moves = block.words.iter().any(|w| matches!(w.letter, b'X' | b'Z' | b'U' | b'W' | b'Y' | b'C'));
+    let moves = block.words().iter().any(|w| matches!(w.letter, b'X' | b'Z' | b'U' | b'W' | b'Y' | b'C'));
     let not_a_move = block.all(b'G').any(|w| matches!(w.num.integer(), Some(4 | 10 | 50 | 65 | 66)));
     if block.has_error || !moves || not_a_move || macro_level(ex) != m.level {
         return false;

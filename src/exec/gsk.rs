@@ -35,7 +35,7 @@ pub fn is_g65(block: &Block) -> bool {
 /// A plain `G65 H… P… Q… R…` block (no `#` in it): constants only.
 pub fn plain(ex: &mut Exec, ctx: &mut Ctx, block: &mut Block) -> Flow {
     let ops: Vec<Operand> =
-        block.words.iter().map(|w| Operand { letter: w.letter, value: Expr::Num(w.value()), span: w.span }).collect();
+        block.words().iter().map(|w| Operand { letter: w.letter, value: Expr::Num(w.value()), span: w.span }).collect();
     let g = block.all(b'G').find(|w| w.num.integer() == Some(65)).map_or(block.span, |w| w.span);
     run_or_alarm(ex, ctx, block, &ops, g)
 }

@@ -504,7 +504,7 @@ pub fn eval(ex: &Exec, ctx: &Ctx, e: &expr::Expr) -> Result<Val, Fail> {
 /// Fills `block` with the words of a macro line, their values evaluated;
 /// false after an alarm. A vacant value drops its word (Fanuc).
 pub fn fill(ex: &Exec, ctx: &mut Ctx, block: &mut Block, line: &stmt::Line, words: &[stmt::MWord]) -> bool {
-    block.words.clear();
+    block.clear_words();
     block.deleted = line.deleted;
     block.n = line.n;
     block.kind = BlockKind::Normal;

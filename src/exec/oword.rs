@@ -48,7 +48,7 @@ pub(super) fn statement(
             for (a, v) in sets.iter().zip(values) {
                 set(ex, ctx, &a.target, v)?;
             }
-            Ok(if block.words.is_empty() && block.n.is_none() { Flow::Skip } else { Flow::Run })
+            Ok(if block.words().is_empty() && block.n.is_none() { Flow::Skip } else { Flow::Run })
         }
         Stmt::O(label, kw, args, span) => oword(ex, ctx, label, *kw, args, *span, macros).map(|()| Flow::Skip),
         _ => Ok(Flow::Skip),

@@ -508,7 +508,7 @@ impl<'c, S: Src> LineLexer<'c, S> {
         }
         if let Some(first) = block.push(word) {
             if letter != b'G' && letter != b'M' {
-                block.words.pop();
+                block.pop_repeated();
                 diags.push(&msg::REPEATED_ADDRESS, span, args![letter = letter as char, first, second = word]);
                 block.has_error = true;
             }

@@ -16,7 +16,7 @@ pub fn block(r: &mut Reader, b: &Block, motion: Option<i64>) -> bool {
 
 /// H and L are read as integers (within 0.0001); L must not be negative.
 fn integers(r: &mut Reader, b: &Block) -> bool {
-    for w in b.words.iter().filter(|w| matches!(w.letter, b'H' | b'L')) {
+    for w in b.words().iter().filter(|w| matches!(w.letter, b'H' | b'L')) {
         let v = w.value();
         if v - v.floor() > 1e-4 && v.ceil() - v > 1e-4 {
             let what = if w.letter == b'H' { &msg::SPRING_COUNT_H } else { &msg::L_WORD };

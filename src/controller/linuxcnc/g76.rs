@@ -88,7 +88,7 @@ fn preconditions(r: &mut Reader, b: &Block, g: Span) -> bool {
         r.diag(&msg::LCNC_SPINDLE_NOT_TURNING_G76, g, args![n]);
         return false;
     }
-    if let Some(w) = b.words.iter().find(|w| matches!(w.letter, b'A' | b'B' | b'C')) {
+    if let Some(w) = b.words().iter().find(|w| matches!(w.letter, b'A' | b'B' | b'C')) {
         r.diag(&msg::LCNC_ROTARY_G76, w.span, args![word = w]);
         return false;
     }
@@ -114,7 +114,7 @@ fn ijk_error(i: f64, j: f64, k: f64) -> Option<(&'static Template, Args)> {
 
 /// X and Y words do not move the drive line: the passes still start from the tool's X.
 fn end_words(r: &mut Reader, b: &Block, x0: f64) {
-    for w in b.words.iter().filter(|w| matches!(w.letter, b'X' | b'Y')) {
+    for w in b.words().iter().filter(|w| matches!(w.letter, b'X' | b'Y')) {
         // As the program writes X: a radius under G8, a diameter under G7.
         let shown = if r.m.radius { x0 } else { 2.0 * x0 };
         r.diag(&msg::LCNC_DRIVE_LINE, w.span, args![word = w, x = shown, letter = w.letter()]);
