@@ -34,6 +34,19 @@ pub type Via = Option<std::sync::Arc<[u32]>>;
 /// A kept diagnostic before its position is resolved.
 pub type Item = (Message, Span, Via);
 
+/// Where an edit changed the text the last diagnostics were finished on:
+/// bytes `changed_at..new_end` of the new text took the place of bytes
+/// `changed_at..new_end - by` of the old one; the rest of both is the same.
+#[derive(Clone, Copy, Debug)]
+pub struct TextEdit {
+    /// The first byte that differs.
+    pub changed_at: usize,
+    /// Where the bytes common to both ends begin, in the new text.
+    pub new_end: usize,
+    /// The new text's length less the old one's.
+    pub by: isize,
+}
+
 /// One finding about the program, positioned at a span of the source.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Diagnostic {
@@ -239,21 +252,36 @@ impl Diagnostics {
     /// some were dropped, a last `more-diagnostics` note says how many, at
     /// the first one dropped.
     pub fn finish(self, text: &str, index: &LineIndex) -> Vec<Diagnostic> {
-        self.finish_after(text, index, Vec::new())
+        self.finish_after(text, index, Vec::new(), None)
     }
 
     /// [`Diagnostics::finish`], taking the English text of a message equal
     /// to one in `before` (the last plan's diagnostics) from there instead
     /// of writing it again: after an edit most messages are the last
     /// plan's, moved or not. The texts are moved out of `before`, not copied.
-    pub fn finish_after(self, text: &str, index: &LineIndex, before: Vec<Diagnostic>) -> Vec<Diagnostic> {
-        let mut written = Written::of(before);
+    /// With `edit` (how the text changed since `before` was finished), a
+    /// diagnostic of `before` at the same place in text the edit left alone,
+    /// with the same message and calls, is taken whole: only its line
+    /// numbers move.
+    pub fn finish_after(
+        self,
+        text: &str,
+        index: &LineIndex,
+        before: Vec<Diagnostic>,
+        edit: Option<TextEdit>,
+    ) -> Vec<Diagnostic> {
+        let mut written = Written::of(before, edit);
         let mut items = self.items;
         if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
             items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span, None));
         }
         let mut out: Vec<Diagnostic> = Vec::with_capacity(items.len());
         for (m, span, via) in items {
+            if let Some(d) = written.whole(&m, span, via.as_deref(), index) {
+                written.taken.entry(d.key).or_insert(out.len());
+                out.push(d);
+                continue;
+            }
             let (start, end) = index.locate_span(text, span.start as usize, span.end as usize);
             let code = m.code();
             let key = message_key(m.template, &m.args);
@@ -282,21 +310,64 @@ impl Diagnostics {
 /// (template and arguments), wherever they were: each moved out once, then
 /// copied from the new diagnostic that took it.
 struct Written {
+    /// The last plan's diagnostics, in order of place (as finished).
     before: Vec<Diagnostic>,
     by_key: std::collections::HashMap<u64, usize, crate::hash::BuildKeyHasher>,
     /// Where among the new diagnostics the first with each key is.
     taken: std::collections::HashMap<u64, usize, crate::hash::BuildKeyHasher>,
+    /// How the text changed since `before` was finished.
+    edit: Option<TextEdit>,
 }
 
 impl Written {
     /// The texts of `before`.
-    fn of(before: Vec<Diagnostic>) -> Written {
+    fn of(before: Vec<Diagnostic>, edit: Option<TextEdit>) -> Written {
         let mut by_key = std::collections::HashMap::default();
         by_key.reserve(before.len());
         for (i, d) in before.iter().enumerate() {
             by_key.insert(d.key, i);
         }
-        Written { before, by_key, taken: std::collections::HashMap::default() }
+        Written { before, by_key, taken: std::collections::HashMap::default(), edit }
+    }
+
+    /// The diagnostic of `before` that message `m` at `span` after the calls
+    /// `via` is again, moved out whole, when the edit left the text from its
+    /// line's start to its end as it was: before the first byte changed
+    /// (nothing of it moved), or after the last, from a line that begins
+    /// after it (its columns are the same; its lines are found again).
+    fn whole(&mut self, m: &Message, span: Span, via: Option<&[u32]>, index: &LineIndex) -> Option<Diagnostic> {
+        let e = self.edit?;
+        let (start, end) = (span.start as usize, span.end as usize);
+        let (old, line) = if end < e.changed_at {
+            (span, None)
+        } else {
+            let (line, line_start) = index.line_of(start);
+            // The line break before the line is the old text's too.
+            if line_start <= e.new_end || end < start {
+                return None;
+            }
+            (span.shifted(-e.by), Some(line))
+        };
+        let from = self.before.partition_point(|d| d.span.start < old.start);
+        let same = |d: &Diagnostic| {
+            d.span == old
+                && std::ptr::eq(d.template, m.template)
+                && !d.message.is_empty()
+                && d.args == m.args
+                && d.via == via.unwrap_or(&[])
+        };
+        let i = (from..self.before.len())
+            .take_while(|&i| self.before[i].span.start == old.start)
+            .find(|&i| same(&self.before[i]))?;
+        let d = &mut self.before[i];
+        let (message, args, via) =
+            (std::mem::take(&mut d.message), std::mem::take(&mut d.args), std::mem::take(&mut d.via));
+        let mut out = Diagnostic { message, args, via, span, ..*d };
+        if let Some(line) = line {
+            out.end_line = (i64::from(out.end_line) + i64::from(line) - i64::from(out.line)) as u32;
+            out.line = line;
+        }
+        Some(out)
     }
 
     /// The English text of message `m`, whose key is `key`, for the new
@@ -353,15 +424,15 @@ mod tests {
         assert_eq!(before[0].message, "3 more diagnostics from here on are not shown (setting limits.diagnostics)");
         // A marked text shows that it was taken, not written again.
         before[0].message = "kept".into();
-        let moved = one(3, 7).finish_after(text, &index, before.clone());
+        let moved = one(3, 7).finish_after(text, &index, before.clone(), None);
         assert_eq!((moved[0].message.as_str(), moved[0].line), ("kept", 2));
         // Other arguments: written anew.
-        let other = one(4, 7).finish_after(text, &index, before.clone());
+        let other = one(4, 7).finish_after(text, &index, before.clone(), None);
         assert_eq!(other[0].message, "4 more diagnostics from here on are not shown (setting limits.diagnostics)");
         // Two equal messages now where there was one: both take its text.
         let mut two = one(3, 0);
         two.push(&MORE_DIAGNOSTICS, Span::new(7, 9), crate::args![n = 3]);
-        let both = two.finish_after(text, &index, before);
+        let both = two.finish_after(text, &index, before, None);
         assert_eq!(both.iter().map(|d| (d.message.as_str(), d.line)).collect::<Vec<_>>(), [("kept", 1), ("kept", 2)]);
     }
 }

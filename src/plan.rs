@@ -526,7 +526,7 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    finish_with(text, settings, out, starts, Vec::new(), |threads, moves, spans, room| {
+    finish_with(text, settings, out, starts, Vec::new(), None, |threads, moves, spans, room| {
         let mut advice = Diagnostics::with_limit(room);
         for i in 0..threads.len() {
             finish_thread(threads, i, moves, settings, text, &mut advice, spans);
@@ -566,6 +566,7 @@ pub(crate) fn finish_with(
     out: Outputs,
     starts: Vec<u32>,
     before: Vec<Diagnostic>,
+    edit: Option<crate::diagnostic::TextEdit>,
     advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Diagnostics,
 ) -> Plan {
     let Outputs { mut diags, moves, mut threads, inch } = out;
@@ -582,7 +583,7 @@ pub(crate) fn finish_with(
     // found after the reading: in no call.
     diags.set_via(None);
     crate::helix::check(&threads, &moves, settings.get(P::GroupMaxInfeed), &spans, &mut diags);
-    let diagnostics = diags.finish_after(text, &index, before);
+    let diagnostics = diags.finish_after(text, &index, before, edit);
     let time_s = crate::shop::total_time(&threads);
     Plan {
         dialect: settings.dialect(),

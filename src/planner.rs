@@ -292,27 +292,38 @@ impl Planner {
         *advice = old_advice.drain(..kept_threads.min(old_advice.len())).collect();
         let join = self.join.as_ref();
         let settings = &self.settings;
+        // The last plan's diagnostics were finished on the text before the edit.
+        let text_edit =
+            Some(crate::diagnostic::TextEdit { changed_at: edit.changed_at, new_end: edit.new_end, by: edit.shift.by });
         let mut refinished = Vec::new();
-        let plan = finish_with(text, settings, out, self.line_starts.clone(), before, |threads, moves, spans, room| {
-            for i in advice.len()..threads.len() {
-                // A thread of the last reading's rest, finished then, stays finished when
-                // the edit is not in the text it was finished from.
-                if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &mut old_advice, kept_threads)) {
-                    advice.push(kept);
-                    continue;
+        let plan = finish_with(
+            text,
+            settings,
+            out,
+            self.line_starts.clone(),
+            before,
+            text_edit,
+            |threads, moves, spans, room| {
+                for i in advice.len()..threads.len() {
+                    // A thread of the last reading's rest, finished then, stays finished when
+                    // the edit is not in the text it was finished from.
+                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &mut old_advice, kept_threads)) {
+                        advice.push(kept);
+                        continue;
+                    }
+                    let mut d = Diagnostics::with_limit(usize::MAX);
+                    refinished.push(i);
+                    finish_thread(threads, i, moves, settings, text, &mut d, spans);
+                    advice.push(d.into_items());
                 }
-                let mut d = Diagnostics::with_limit(usize::MAX);
-                refinished.push(i);
-                finish_thread(threads, i, moves, settings, text, &mut d, spans);
-                advice.push(d.into_items());
-            }
-            // Copies of the kept advice, only as many as the plan keeps (the rest is counted).
-            let mut all = Diagnostics::with_limit(room);
-            for item in advice.iter().flatten() {
-                all.push_copy(item);
-            }
-            all
-        });
+                // Copies of the kept advice, only as many as the plan keeps (the rest is counted).
+                let mut all = Diagnostics::with_limit(room);
+                for item in advice.iter().flatten() {
+                    all.push_copy(item);
+                }
+                all
+            },
+        );
         self.changed = changed.map(|c| Changed { refinished, ..c });
         self.plan.insert(plan)
     }

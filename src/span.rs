@@ -118,6 +118,15 @@ impl LineIndex {
         self.starts[(line.max(1) as usize - 1).min(self.starts.len() - 1)] as usize
     }
 
+    /// The 1-based line holding byte `offset`, and the byte where that line starts.
+    pub fn line_of(&self, offset: usize) -> (u32, usize) {
+        let line = match self.starts.binary_search(&(offset as u32)) {
+            Ok(i) => i,
+            Err(i) => i - 1,
+        };
+        (line as u32 + 1, self.starts[line] as usize)
+    }
+
     /// Line and column of byte `offset` in `text` (the text that was indexed).
     pub fn locate(&self, text: &str, offset: usize) -> LineCol {
         let offset = offset.min(text.len());

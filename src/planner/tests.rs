@@ -184,3 +184,34 @@ fn an_edit_past_the_diagnostics_limit_keeps_and_counts_as_a_full_plan() {
         assert_eq!((more(&inc), &inc.diagnostics), (more(&full), &full.diagnostics), "edit at line {}", at + 1);
     }
 }
+
+/// The last plan's diagnostics are taken whole (only their lines moved)
+/// where an edit left their text alone: every one-character edit of a
+/// program with every kind of line end (`\r\n`, a lone `\r`, `\n`), wide
+/// characters and findings before and after the edit gives, incrementally,
+/// the diagnostics of a full plan, lines and columns included — also where
+/// the edit makes or unmakes a `\r\n` next to a finding's line.
+#[test]
+fn diagnostics_taken_whole_match_a_full_plan() {
+    let s = Settings::new(Dialect::Gsk980tdc);
+    let text = "O0001\r\nG50 X100 Z100\rS300 M03\nG00 X40 Z70\r\n(第1次) X39.1 Ｂ1\nG32 Z13 F2\r\n\
+                G00 X40\rZ70\nX38.5 K1 (é)\r\nG32 Z13 F2\nG00 X40\r\rZ70\nG32 Z13 F2 Q\nM30\n";
+    let base = crate::plan(text, &s);
+    assert!(base.diagnostics.len() >= 6, "{:?}", base.diagnostics);
+    assert!(base.diagnostics.iter().any(|d| d.line >= 12), "findings late in the text");
+    let mut p = Planner::new(s.clone());
+    p.plan(text);
+    let cuts: Vec<usize> = (0..=text.len()).filter(|&i| text.is_char_boundary(i)).collect();
+    for w in cuts.windows(2) {
+        let (at, next) = (w[0], w[1]);
+        for edited in [
+            format!("{}\n{}", &text[..at], &text[at..]),
+            format!("{}\r{}", &text[..at], &text[at..]),
+            format!("{}X{}", &text[..at], &text[at..]),
+            format!("{}{}", &text[..at], &text[next..]),
+        ] {
+            assert_eq!(p.plan(&edited).diagnostics, crate::plan(&edited, &s).diagnostics, "edit at {at}: {edited:?}");
+            assert_eq!(p.plan(text).diagnostics, base.diagnostics, "back from the edit at {at}");
+        }
+    }
+}
