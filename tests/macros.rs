@@ -17,7 +17,7 @@
 mod common;
 use common::*;
 use screwcut::planner::Planner;
-use screwcut::{Code, Dialect, Plan, Settings};
+use screwcut::{Code, Dialect, Plan, Settings, Severity};
 
 fn fanuc(src: &str) -> Plan {
     plan_with(src, Dialect::Fanuc0i, &[])
@@ -660,4 +660,20 @@ fn a_checkpoint_in_a_later_subprogram_moves_with_an_edit() {
     // An edit late in the subprogram resumes at the checkpoint inside it.
     text = text.replacen("G00 X47.1\n", "G00 X46.9\n", 1);
     assert_eq!(p.plan(&text).clone(), screwcut::plan(&text, &s));
+}
+
+/// A vacant variable number on the left of an assignment is 0, as vacant
+/// is in any arithmetic expression, so `#[#1] = …` with #1 vacant writes
+/// #0, which cannot be written (Mitsubishi M700V programming manual §13.5
+/// p.314, a Fanuc-style macro: "<vacant> in an arithmetic expression is
+/// handled in the same way as 0"; "#0 … cannot be defined in the
+/// left-side member"). Not "variable number NaN".
+#[test]
+fn a_vacant_variable_number_writes_hash_zero_which_cannot_be() {
+    let plan = fanuc("#[#1]=5.\nM30\n");
+    let d: Vec<_> = plan.diagnostics.iter().filter(|d| d.severity == Severity::Error).collect();
+    assert_eq!(d.len(), 1, "{:?}", plan.diagnostics);
+    assert_eq!(d[0].message, "#0 cannot be written on the Fanuc 0i-TF controller");
+    // A number given: written as before.
+    assert!(fanuc("#1=2\n#[#1+100]=5.\nM30\n").diagnostics.iter().all(|d| d.severity != Severity::Error));
 }

@@ -159,7 +159,8 @@ pub(super) fn store(
     span: Span,
     whole: Span,
 ) -> Result<(), Fail> {
-    let n = eval(ex, ctx, n)?.unwrap_or(f64::NAN);
+    // A vacant number is 0 here as in arithmetic: #0, which cannot be written.
+    let n = eval(ex, ctx, n)?.unwrap_or(0.0);
     if n.fract() != 0.0 || !n.is_finite() {
         return Err(Fail { template: &msg::BAD_VARIABLE_NUMBER, span, args: args![value = n] });
     }
