@@ -1,6 +1,8 @@
 //! Diagnostics: alarms, warnings and advice, each with a stable code and a
 //! source position.
 
+use std::borrow::Cow;
+
 use serde::Serialize;
 
 use crate::message::{Args, Lang, Message, Template};
@@ -45,6 +47,51 @@ pub struct TextEdit {
     pub new_end: usize,
     /// The new text's length less the old one's.
     pub by: isize,
+}
+
+/// Diagnostics found after a reading (a thread's advice), each kept as it
+/// was found or borrowed from where it is kept, up to a room; the rest counted.
+#[derive(Debug, Default)]
+pub struct Found<'a> {
+    items: Vec<Cow<'a, Item>>,
+    room: usize,
+    dropped: usize,
+    first_dropped: Option<Span>,
+}
+
+impl<'a> Found<'a> {
+    /// Room for `room` diagnostics.
+    pub fn with_room(room: usize) -> Found<'a> {
+        Found { room, ..Found::default() }
+    }
+
+    /// Keeps `item` while there is room, else counts it dropped.
+    pub fn push(&mut self, item: Cow<'a, Item>) {
+        if self.items.len() < self.room {
+            self.items.push(item);
+        } else {
+            self.dropped += 1;
+            earliest(&mut self.first_dropped, item.1);
+        }
+    }
+
+    /// What a collector kept and dropped (its room is this one's).
+    pub fn of(d: Diagnostics) -> Found<'a> {
+        let mut f = Found::with_room(usize::MAX);
+        f.items.extend(d.items.into_iter().map(Cow::Owned));
+        (f.dropped, f.first_dropped) = (d.dropped, d.first_dropped);
+        f
+    }
+
+    /// How many are kept.
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    /// Whether none is kept.
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
 }
 
 /// One finding about the program, positioned at a span of the source.
@@ -146,9 +193,12 @@ impl Diagnostics {
 
     fn drop_one(&mut self, span: Span) {
         self.dropped += 1;
-        if self.first_dropped.is_none_or(|f| span.start < f.start) {
-            self.first_dropped = Some(span);
-        }
+        self.count_first(span);
+    }
+
+    /// Takes `span` as where the first dropped one was, when it is earlier.
+    fn count_first(&mut self, span: Span) {
+        earliest(&mut self.first_dropped, span);
     }
 
     /// Records a diagnostic whose arguments are only worked out when it will be kept.
@@ -214,25 +264,6 @@ impl Diagnostics {
         }
     }
 
-    /// Moves every diagnostic of `other` in, keeping this collector's limit.
-    pub fn absorb(&mut self, other: Diagnostics) {
-        self.dropped += other.dropped;
-        if let Some(f) = other.first_dropped {
-            if self.first_dropped.is_none_or(|s| f.start < s.start) {
-                self.first_dropped = Some(f);
-            }
-        }
-        for item in other.items {
-            self.push_item(item);
-        }
-    }
-
-    /// Records a copy of `item` (kept from an earlier reading): copied only
-    /// when it will be kept, else counted as dropped.
-    pub fn push_copy(&mut self, item: &Item) {
-        self.keep(item.1, |_| item.clone());
-    }
-
     /// Records a diagnostic with its own call chain.
     pub fn push_item(&mut self, item: Item) {
         self.keep(item.1, |_| item);
@@ -270,40 +301,88 @@ impl Diagnostics {
         before: Vec<Diagnostic>,
         edit: Option<TextEdit>,
     ) -> Vec<Diagnostic> {
-        let mut written = Written::of(before, edit);
-        let mut items = self.items;
-        if let (true, Some(span)) = (self.dropped > 0, self.first_dropped) {
-            items.push((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span, None));
-        }
-        let mut out: Vec<Diagnostic> = Vec::with_capacity(items.len());
-        for (m, span, via) in items {
-            if let Some(d) = written.whole(&m, span, via.as_deref(), index) {
-                written.taken.entry(d.key).or_insert(out.len());
-                out.push(d);
-                continue;
-            }
-            let (start, end) = index.locate_span(text, span.start as usize, span.end as usize);
-            let code = m.code();
-            let key = message_key(m.template, &m.args);
-            let message = written.text(key, &m, &out);
-            out.push(Diagnostic {
-                severity: code.severity(),
-                code,
-                message,
-                template: m.template,
-                args: m.args,
-                line: start.line,
-                column: start.column,
-                end_line: end.line,
-                end_column: end.column,
-                span,
-                via: via.map_or_else(Vec::new, |v| v.to_vec()),
-                key,
-            });
-        }
-        crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
-        out
+        let more = self.more();
+        let items = self.items.into_iter().map(Cow::Owned);
+        finish_items(&mut items.chain(more.map(Cow::Owned)), text, index, before, edit)
     }
+
+    /// [`Diagnostics::finish_after`] of this collector's diagnostics (left
+    /// as they are), then `found`'s, then `extra`'s, as one collector with
+    /// their dropped ones counted together: a message is copied only when it
+    /// is not one of `before`'s taken whole.
+    pub fn finish_parts(
+        &self,
+        found: Found<'_>,
+        extra: Diagnostics,
+        text: &str,
+        index: &LineIndex,
+        (before, edit): (Vec<Diagnostic>, Option<TextEdit>),
+    ) -> Vec<Diagnostic> {
+        let mut all = Diagnostics { dropped: self.dropped, first_dropped: self.first_dropped, ..Default::default() };
+        for (dropped, first) in [(found.dropped, found.first_dropped), (extra.dropped, extra.first_dropped)] {
+            all.dropped += dropped;
+            if let Some(f) = first {
+                all.count_first(f);
+            }
+        }
+        let items =
+            self.items.iter().map(Cow::Borrowed).chain(found.items).chain(extra.items.into_iter().map(Cow::Owned));
+        finish_items(&mut items.chain(all.more().map(Cow::Owned)), text, index, before, edit)
+    }
+
+    /// The `more-diagnostics` note, when some were dropped: how many, at the first one dropped.
+    fn more(&self) -> Option<Item> {
+        let span = self.first_dropped.filter(|_| self.dropped > 0)?;
+        Some((Message::new(&crate::message::MORE_DIAGNOSTICS, crate::args![n = self.dropped]), span, None))
+    }
+}
+
+/// Makes `first` `span` when `span` begins earlier (or `first` is none).
+fn earliest(first: &mut Option<Span>, span: Span) {
+    if first.is_none_or(|f| span.start < f.start) {
+        *first = Some(span);
+    }
+}
+
+/// The diagnostics of `items`, positioned and sorted (see [`Diagnostics::finish_after`]).
+fn finish_items<'a>(
+    items: &mut dyn Iterator<Item = Cow<'a, Item>>,
+    text: &str,
+    index: &LineIndex,
+    before: Vec<Diagnostic>,
+    edit: Option<TextEdit>,
+) -> Vec<Diagnostic> {
+    let mut written = Written::of(before, edit);
+    let mut out: Vec<Diagnostic> = Vec::with_capacity(items.size_hint().0);
+    for item in items {
+        let (m, span, via) = &*item;
+        if let Some(d) = written.whole(m, *span, via.as_deref(), index) {
+            written.taken.entry(d.key).or_insert(out.len());
+            out.push(d);
+            continue;
+        }
+        let (m, span, via) = item.into_owned();
+        let (start, end) = index.locate_span(text, span.start as usize, span.end as usize);
+        let code = m.code();
+        let key = message_key(m.template, &m.args);
+        let message = written.text(key, &m, &out);
+        out.push(Diagnostic {
+            severity: code.severity(),
+            code,
+            message,
+            template: m.template,
+            args: m.args,
+            line: start.line,
+            column: start.column,
+            end_line: end.line,
+            end_column: end.column,
+            span,
+            via: via.map_or_else(Vec::new, |v| v.to_vec()),
+            key,
+        });
+    }
+    crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
+    out
 }
 
 /// The English texts of earlier diagnostics, found by their message

@@ -12,7 +12,7 @@ use serde::Serialize;
 use crate::assemble::{Assembler, Mark};
 use crate::block::Block;
 use crate::cycle::g7x::Who;
-use crate::diagnostic::{Code, Diagnostic, Diagnostics, Severity};
+use crate::diagnostic::{Code, Diagnostic, Diagnostics, Found, Severity};
 use crate::dialect::Dialect;
 use crate::event::Event;
 use crate::exec::index::{At, Index};
@@ -526,13 +526,14 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    finish_with(text, settings, out, starts, Vec::new(), None, |threads, moves, spans, room| {
+    let (plan, _) = finish_with(text, settings, out, starts, (Vec::new(), None), |threads, moves, spans, room| {
         let mut advice = Diagnostics::with_limit(room);
         for i in 0..threads.len() {
             finish_thread(threads, i, moves, settings, text, &mut advice, spans);
         }
-        advice
-    })
+        Found::of(advice)
+    });
+    plan
 }
 
 /// Finishes thread `i`: its depths and textbook advice, then its
@@ -557,42 +558,43 @@ pub(crate) fn finish_thread(
 }
 
 /// [`finish`] with the advice step given by the caller: `advice(threads,
-/// moves, spans, room)` finishes the threads and returns their
-/// diagnostics; a message that is one of `before`'s (the last plan's) keeps
-/// its text.
-pub(crate) fn finish_with(
+/// moves, spans, room)` finishes the threads and gives their diagnostics
+/// (as found, or borrowed from where the caller keeps them); a message
+/// that is one of `before.0`'s (the last plan's, finished before the edit
+/// `before.1`) keeps its text. Gives the plan and the reading's own
+/// diagnostics back, as they were in `out`.
+pub(crate) fn finish_with<'a>(
     text: &str,
     settings: &Settings,
     out: Outputs,
     starts: Vec<u32>,
-    before: Vec<Diagnostic>,
-    edit: Option<crate::diagnostic::TextEdit>,
-    advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Diagnostics,
-) -> Plan {
-    let Outputs { mut diags, moves, mut threads, inch } = out;
+    before: (Vec<Diagnostic>, Option<crate::diagnostic::TextEdit>),
+    advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Found<'a>,
+) -> (Plan, Diagnostics) {
+    let Outputs { diags, moves, mut threads, inch } = out;
     let index = LineIndex::from_starts(text, starts);
     let spans = |line: u32| {
         let start = index.line_start(line);
         let end = text[start..].find(['\n', '\r']).map_or(text.len(), |e| start + e);
         Span::new(start, end)
     };
-    // The advice's collector keeps only what this one has room for (the rest is counted).
+    // The advice keeps only what the reading's collector has room for (the rest is counted).
     let found = advice(&mut threads, &moves, &spans, diags.limit().saturating_sub(diags.len()));
-    diags.absorb(found);
     // Across threads: a pass on another helix (recomputed every time, it is cheap),
     // found after the reading: in no call.
-    diags.set_via(None);
-    crate::helix::check(&threads, &moves, settings.get(P::GroupMaxInfeed), &spans, &mut diags);
-    let diagnostics = diags.finish_after(text, &index, before, edit);
+    let mut across = Diagnostics::with_limit(diags.limit().saturating_sub(diags.len() + found.len()));
+    crate::helix::check(&threads, &moves, settings.get(P::GroupMaxInfeed), &spans, &mut across);
+    let diagnostics = diags.finish_parts(found, across, text, &index, before);
     let time_s = crate::shop::total_time(&threads);
-    Plan {
+    let plan = Plan {
         dialect: settings.dialect(),
         units: if inch { Units::Inch } else { Units::Mm },
         diagnostics,
         moves,
         threads,
         time_s,
-    }
+    };
+    (plan, diags)
 }
 
 /// Plans `text` with the default settings of `dialect`.

@@ -29,7 +29,7 @@ mod tail;
 
 pub use changed::Changed;
 
-use crate::diagnostic::{Diagnostics, Item};
+use crate::diagnostic::{Diagnostics, Found, Item};
 use crate::exec::reads::Reads;
 use crate::plan::{Plan, Reading, Snapshot, finish, finish_thread, finish_with, lexer_for};
 use crate::settings::Settings;
@@ -277,7 +277,6 @@ impl Planner {
         } else {
             out.inch = inch_now;
         }
-        self.raw_diags = out.diags.clone();
         self.inch = out.inch;
         // Threads complete before the resume point are finished already and
         // their advice is kept; the rest are finished now, every message
@@ -294,36 +293,31 @@ impl Planner {
         let settings = &self.settings;
         // The last plan's diagnostics were finished on the text before the edit.
         let text_edit =
-            Some(crate::diagnostic::TextEdit { changed_at: edit.changed_at, new_end: edit.new_end, by: edit.shift.by });
+            crate::diagnostic::TextEdit { changed_at: edit.changed_at, new_end: edit.new_end, by: edit.shift.by };
         let mut refinished = Vec::new();
-        let plan = finish_with(
-            text,
-            settings,
-            out,
-            self.line_starts.clone(),
-            before,
-            text_edit,
-            |threads, moves, spans, room| {
+        let (finished, old_advice) = (&mut refinished, &mut old_advice);
+        let before = (before, Some(text_edit));
+        let (plan, raw_diags) =
+            finish_with(text, settings, out, self.line_starts.clone(), before, move |threads, moves, spans, room| {
                 for i in advice.len()..threads.len() {
                     // A thread of the last reading's rest, finished then, stays finished when
                     // the edit is not in the text it was finished from.
-                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, &mut old_advice, kept_threads)) {
+                    if let Some(kept) = join.and_then(|j| j.advice_of(threads, i, old_advice, kept_threads)) {
                         advice.push(kept);
                         continue;
                     }
                     let mut d = Diagnostics::with_limit(usize::MAX);
-                    refinished.push(i);
+                    finished.push(i);
                     finish_thread(threads, i, moves, settings, text, &mut d, spans);
                     advice.push(d.into_items());
                 }
-                // Copies of the kept advice, only as many as the plan keeps (the rest is counted).
-                let mut all = Diagnostics::with_limit(room);
-                for item in advice.iter().flatten() {
-                    all.push_copy(item);
-                }
-                all
-            },
-        );
+                // The kept advice, borrowed, only as much as the plan keeps (the rest is counted).
+                let advice: &Vec<Vec<_>> = advice;
+                let mut found = Found::with_room(room);
+                advice.iter().flatten().for_each(|item| found.push(std::borrow::Cow::Borrowed(item)));
+                found
+            });
+        self.raw_diags = raw_diags;
         self.changed = changed.map(|c| Changed { refinished, ..c });
         self.plan.insert(plan)
     }
