@@ -526,14 +526,12 @@ pub(crate) fn lexer_for<'t>(text: &'t str, settings: &Settings, diags: &mut Diag
 /// threads, the shop-floor figures and checks of every thread, diagnostics
 /// positioned and sorted.
 pub(crate) fn finish(text: &str, settings: &Settings, out: Outputs, starts: Vec<u32>) -> Plan {
-    let (plan, _) = finish_with(text, settings, out, starts, (Vec::new(), None), |threads, moves, spans, room| {
+    let advice = |threads: &mut [Thread], moves: &[Move], spans: &dyn Fn(u32) -> Span, room| {
         let mut advice = Diagnostics::with_limit(room);
-        for i in 0..threads.len() {
-            finish_thread(threads, i, moves, settings, text, &mut advice, spans);
-        }
+        (0..threads.len()).for_each(|i| finish_thread(threads, i, moves, settings, text, &mut advice, spans));
         Found::of(advice)
-    });
-    plan
+    };
+    finish_with(text, settings, out, starts, (Vec::new(), None), advice).0
 }
 
 /// Finishes thread `i`: its depths and textbook advice, then its
@@ -559,10 +557,9 @@ pub(crate) fn finish_thread(
 
 /// [`finish`] with the advice step given by the caller: `advice(threads,
 /// moves, spans, room)` finishes the threads and gives their diagnostics
-/// (as found, or borrowed from where the caller keeps them); a message
-/// that is one of `before.0`'s (the last plan's, finished before the edit
-/// `before.1`) keeps its text. Gives the plan and the reading's own
-/// diagnostics back, as they were in `out`.
+/// (found, or borrowed from the caller); a message that is one of
+/// `before.0`'s (the last plan's, before the edit `before.1`) keeps its
+/// text. Gives the plan and the reading's diagnostics, as in `out`, back.
 pub(crate) fn finish_with<'a>(
     text: &str,
     settings: &Settings,
