@@ -139,14 +139,12 @@ impl Block {
     }
 
     /// Keeps only the words for which `keep` is true, in order.
-    pub fn retain_words(&mut self, keep: impl FnMut(&Word) -> bool) {
-        self.words.retain(keep);
+    pub fn retain_words(&mut self, mut keep: impl FnMut(&Word) -> bool) {
+        let words = std::mem::take(&mut self.words);
         self.index = [0; 26];
-        for (i, w) in self.words.iter().enumerate().take(255) {
-            let slot = &mut self.index[(w.letter - b'A') as usize];
-            if *slot == 0 {
-                *slot = i as u8 + 1;
-            }
+        // Pushed again, so the index is made by `push`'s one rule.
+        for w in words.into_iter().filter(|w| keep(w)) {
+            self.push(w);
         }
     }
 

@@ -193,11 +193,6 @@ impl Diagnostics {
 
     fn drop_one(&mut self, span: Span) {
         self.dropped += 1;
-        self.count_first(span);
-    }
-
-    /// Takes `span` as where the first dropped one was, when it is earlier.
-    fn count_first(&mut self, span: Span) {
         earliest(&mut self.first_dropped, span);
     }
 
@@ -322,7 +317,7 @@ impl Diagnostics {
         for (dropped, first) in [(found.dropped, found.first_dropped), (extra.dropped, extra.first_dropped)] {
             all.dropped += dropped;
             if let Some(f) = first {
-                all.count_first(f);
+                earliest(&mut all.first_dropped, f);
             }
         }
         let items =

@@ -130,13 +130,8 @@ impl LineIndex {
     /// Line and column of byte `offset` in `text` (the text that was indexed).
     pub fn locate(&self, text: &str, offset: usize) -> LineCol {
         let offset = offset.min(text.len());
-        let line = match self.starts.binary_search(&(offset as u32)) {
-            Ok(i) => i,
-            Err(i) => i - 1,
-        };
-        let start = self.starts[line] as usize;
-        let column = char_column(&text[start..], offset - start);
-        LineCol { line: line as u32 + 1, column }
+        let (line, start) = self.line_of(offset);
+        LineCol { line, column: char_column(&text[start..], offset - start) }
     }
 
     /// [`LineIndex::locate`] of a span's `start` and `end` (`start <= end`):
