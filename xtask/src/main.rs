@@ -9,6 +9,7 @@
 
 mod bench;
 mod book;
+mod first;
 mod install;
 mod package;
 mod precompress;

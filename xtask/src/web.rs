@@ -1,6 +1,7 @@
 //! Building, bundling and serving the web app.
 //!
-//! The site is: `index.html`, `docs.html` and the other files of
+//! The site is: `index.html` (with the example a first visit opens written
+//! in: `crate::first`), `docs.html` and the other files of
 //! `www/static/`, `app.js` (the app bundled by esbuild, with the
 //! wasm-bindgen glue), `worker.js` (its planning and drawing worker),
 //! `screwcut-preview.js` (the embeddable
@@ -264,6 +265,7 @@ pub fn browser_tests(only: &[String]) -> Result {
         "tools.test.mjs",
         "calls.test.mjs",
         "newuser.test.mjs",
+        "first.test.mjs",
         "compare.test.mjs",
         "book.test.mjs",
         "package.test.mjs",
@@ -356,6 +358,7 @@ pub fn build_site(release: bool, out: &Path) -> Result<WasmOpt> {
             copy(&entry.path(), &out.join(entry.file_name()))?;
         }
     }
+    crate::first::write_first_visit(out)?;
     let examples = root().join("examples");
     let index = read(&examples.join("index.json"))?;
     for file in example_files(&index)? {

@@ -216,7 +216,15 @@ function onResult(m) {
   if (!probe.ready) {
     probe.ready = true;
     document.body.dataset.ready = 'true';
+    dropFirstVisit();
   }
+}
+
+/** The example's program and drawings the page holds for a first visit (index.html) give way to the app's own. */
+function dropFirstVisit() {
+  performance.mark('screwcut:first-live');
+  document.documentElement.classList.remove('first-visit');
+  for (const el of document.querySelectorAll('.first')) el.remove();
 }
 
 /** The drawing that includes an edit is on screen: mark it for whoever measures. */
@@ -660,5 +668,6 @@ function finishSetup() {
 main().catch((e) => {
   probe.errors.push(String(e && e.stack ? e.stack : e));
   document.body.dataset.ready = 'failed';
+  dropFirstVisit(); // the example's drawing is not what a failed app shows
   console.error(e);
 });

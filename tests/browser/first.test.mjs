@@ -1,0 +1,119 @@
+// Browser test: a first visit's first diagram comes with the page.
+// node first.test.mjs http://127.0.0.1:PORT/
+//
+// 1. A first visit (a new profile): with the app's script held back, the
+//    page alone shows the example O1006 — its program in the editor's
+//    place and its three drawings in the views' places, painted — and
+//    asks for nothing else to show them. Once the script runs, the app's
+//    own drawings and editor take their places and the page's are gone.
+// 2. The next visit (the example is now a kept program) shows none of
+//    them: what it opens is the kept program, drawn by the app.
+// 3. Nor a visit by a link, nor one in Chinese (the app opens other text
+//    or labels than the page holds).
+// Screenshots at 1400×900: first-static.png (the script held back) and
+// first-live.png (the app drawn) in tests/browser/screenshots/.
+
+import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
+import fs from 'node:fs';
+import path from 'node:path';
+
+const url = siteUrl('first.test.mjs');
+const { check, counts } = checker();
+const timer = guard(180, 'the first-visit test');
+const problems = [];
+const O1006 = fs.readFileSync(new URL('../../examples/o1006.nc', import.meta.url), 'utf8');
+
+/** What of the page's first-visit parts shows: the class, the drawings (title and size) and the program. */
+const shown = (page) =>
+  page.evaluate(() => {
+    const visible = (el) => el.getBoundingClientRect().height > 0 && getComputedStyle(el).display !== 'none';
+    return {
+      first: document.documentElement.classList.contains('first-visit'),
+      drawings: [...document.querySelectorAll('.pane > .first')]
+        .filter(visible)
+        .map((d) => ({ title: d.querySelector('svg title')?.textContent, h: Math.round(d.getBoundingClientRect().height), covers: d.parentElement.querySelector('canvas').id })),
+      code: [...document.querySelectorAll('#editor > pre.first')].filter(visible).map((p) => p.textContent),
+      parts: document.querySelectorAll('.first').length,
+    };
+  });
+
+/** Opens the app in a new profile with `options` (locale …), the app's script held back until `release()`. */
+async function held(prefix, options = {}) {
+  const { context, close } = await launch(prefix, { viewport: { width: 1400, height: 900 }, ...options });
+  const page = context.pages()[0] || (await context.newPage());
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
+  const requested = [];
+  page.on('request', (r) => requested.push(new URL(r.url()).pathname));
+  let release;
+  const gate = new Promise((r) => {
+    release = r;
+  });
+  await context.route('**/app.js', async (route) => {
+    await gate;
+    await route.continue();
+  });
+  return { context, page, close, requested, release };
+}
+
+try {
+  // ---- 1. a first visit ----
+  {
+    const { page, close, requested, release } = await held('screwcut-first-');
+    await page.goto(url, { waitUntil: 'commit' });
+    await page.waitForFunction(() => document.querySelectorAll('.pane > .first svg').length === 3 && document.querySelector('.pane > .first').getBoundingClientRect().height > 100, null, { timeout: 20_000 });
+    await page.waitForFunction(() => performance.getEntriesByType('paint').some((e) => e.name === 'first-contentful-paint'), null, { timeout: 20_000 });
+    const s = await shown(page);
+    check('1. a first visit holds the example: the page is marked first', s.first, JSON.stringify(s));
+    check(
+      '… its three drawings show in the views, over the canvases',
+      s.drawings.map((d) => d.title).join('|') === 'screwcut: side section|screwcut: tooth section|screwcut: starts' && s.drawings.map((d) => d.covers).join() === 'side,tooth,starts' && s.drawings.every((d) => d.h > 150),
+      JSON.stringify(s.drawings),
+    );
+    check('… and the program O1006 in the editor’s place, as the example file has it', s.code.length === 1 && s.code[0] === O1006, JSON.stringify(s.code[0]?.slice(0, 80)));
+    // What the drawings were painted with: the page and its stylesheet, not the script or the wasm.
+    const before = [...requested];
+    check('… painted with the app’s script still held back, before any wasm was asked for', !before.some((p) => p.endsWith('.wasm')) && !before.includes('/worker.js'), before.join(' '));
+    const sides = await page.evaluate(() => document.querySelector('.pane > .first svg').outerHTML);
+    check('… the side drawing has the passes’ cuts drawn (the cut pen)', sides.includes('stroke="#2563eb"'), sides.slice(0, 120));
+    await page.screenshot({ path: path.join(shots, 'first-static.png') });
+    release();
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+    await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 30_000 });
+    await page.waitForTimeout(300);
+    const after = await shown(page);
+    check('… once the app has drawn, its parts are gone and the canvases show', !after.first && after.parts === 0 && after.drawings.length === 0, JSON.stringify(after));
+    const editor = await page.evaluate(() => window.__screwcut.text());
+    check('… and the editor holds the same program', editor === O1006, JSON.stringify(editor?.slice(0, 60)));
+    await page.screenshot({ path: path.join(shots, 'first-live.png') });
+
+    // ---- 2. the next visit ----
+    const kept = await page.evaluate(() => localStorage.getItem('screwcut.programs.v1') !== null);
+    check('2. the example is now a kept program', kept);
+    await page.reload({ waitUntil: 'domcontentloaded' });
+    const again = await shown(page);
+    check('… the next visit shows none of the page’s first-visit parts', !again.first && again.drawings.length === 0 && again.code.length === 0, JSON.stringify(again));
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+    await close();
+  }
+
+  // ---- 3. a link; Chinese ----
+  for (const [what, options, where] of [
+    ['3. a visit by a link', {}, `${url}#p=not-a-program`],
+    ['… a first visit in Chinese', { locale: 'zh-CN' }, url],
+  ]) {
+    const { page, close, release } = await held('screwcut-first-other-', options);
+    await page.goto(where, { waitUntil: 'commit' });
+    await page.waitForFunction(() => document.body && document.querySelector('footer'), null, { timeout: 20_000 });
+    const s = await shown(page);
+    check(`${what} shows none of them`, !s.first && s.drawings.length === 0 && s.code.length === 0, JSON.stringify(s));
+    release();
+    await page.waitForSelector('body[data-ready]', { timeout: 60_000 });
+    await close();
+  }
+  check('no page errors', problems.length === 0, problems.join(' | '));
+} catch (e) {
+  check('the first-visit test ran to the end', false, e.stack || String(e));
+}
+clearTimeout(timer);
+finish('first visit', counts);

@@ -1,0 +1,114 @@
+//! The app's page as a first visit sees it: the example it opens (o1006.nc)
+//! written into `index.html`, its program and its three drawings as the
+//! command line draws them, so that the first diagram is on screen with the
+//! page itself while the app's script and wasm load behind it. The page
+//! shows them only on a first visit (its inline script: no program kept, no
+//! link, English) and the app takes them away when its own drawings come.
+
+use std::path::Path;
+use std::process::Command;
+
+use crate::Result;
+use crate::install::{root, run};
+use crate::web::{path_str, target_dir};
+
+/// The example a first visit opens (www/src/app/main.js).
+const EXAMPLE: &str = "o1006.nc";
+
+/// Each view's placeholder in `www/static/index.html` and the size it is
+/// laid out at: the app's canvases in a 1400 × 900 window (the drawing
+/// scales to the window's, keeping its proportions).
+const VIEWS: [(&str, &str, f64, f64); 3] = [
+    ("side", "<!--first:side-->", 882.0, 250.0),
+    ("tooth", "<!--first:tooth-->", 437.0, 173.0),
+    ("starts", "<!--first:starts-->", 437.0, 173.0),
+];
+
+/// The program's placeholder (in the editor's place).
+const CODE: &str = "<!--first:code-->";
+
+/// Writes the example's program and drawings into `out/index.html` (the
+/// built site's page), drawn by the command line of this tree.
+pub fn write_first_visit(out: &Path) -> Result {
+    let examples = root().join("examples");
+    let index =
+        std::fs::read_to_string(examples.join("index.json")).map_err(|e| format!("examples/index.json: {e}"))?;
+    let dialect = dialect_of(&index, EXAMPLE)?;
+    let file = examples.join(EXAMPLE);
+    let program = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+    run("cargo", &["build", "--quiet", "--package", "screwcut", "--bin", "screwcut"], None)?;
+    let cli = target_dir()?.join("debug").join("screwcut");
+    let page_path = out.join("index.html");
+    let mut page = std::fs::read_to_string(&page_path).map_err(|e| format!("{}: {e}", page_path.display()))?;
+    for (view, mark, width, height) in VIEWS {
+        let (w, h) = (width.to_string(), height.to_string());
+        let file = path_str(&file)?;
+        let mut args = vec!["svg", &file, "--dialect", &dialect, "--view", view, "--width", &w, "--height", &h];
+        if view == "side" {
+            args.push("--stretch"); // as the app shows it (www/src/app/main.js binds the side view stretched)
+        }
+        let svg = draw(&cli, &args)?;
+        let svg: Vec<&str> = svg.lines().filter(|l| !l.starts_with("<?xml")).collect();
+        let html = format!("<div class=\"first\" aria-hidden=\"true\">{}</div>", svg.join("\n"));
+        page = replace_once(&page, mark, &html)?;
+    }
+    // A span a line, numbered by the stylesheet as the editor numbers them.
+    let lines: Vec<String> = program.split('\n').map(|l| format!("<span>{}</span>", escape(l))).collect();
+    let code = format!("<pre class=\"first\" aria-hidden=\"true\">{}</pre>", lines.join("\n"));
+    page = replace_once(&page, CODE, &code)?;
+    std::fs::write(&page_path, page).map_err(|e| format!("{}: {e}", page_path.display()))
+}
+
+/// The command line's SVG: its standard output, or why there is none.
+fn draw(cli: &Path, args: &[&str]) -> Result<String> {
+    let out = Command::new(cli).args(args).output().map_err(|e| format!("cannot run {}: {e}", cli.display()))?;
+    if !out.status.success() {
+        return Err(format!("screwcut {} failed: {}", args.join(" "), String::from_utf8_lossy(&out.stderr)));
+    }
+    String::from_utf8(out.stdout).map_err(|e| format!("screwcut svg wrote no UTF-8: {e}"))
+}
+
+/// `page` with its one `mark` replaced by `with`.
+fn replace_once(page: &str, mark: &str, with: &str) -> Result<String> {
+    match page.matches(mark).count() {
+        1 => Ok(page.replacen(mark, with, 1)),
+        n => Err(format!("www/static/index.html has {n} of {mark}, not one")),
+    }
+}
+
+/// The `dialect` of the entry for `file` in `examples/index.json` (one
+/// object per example, the file named before its dialect).
+fn dialect_of(index: &str, file: &str) -> Result<String> {
+    let at = index.find(&format!("\"{file}\"")).ok_or(format!("examples/index.json does not list {file}"))?;
+    let entry = &index[at..index[at..].find('}').map_or(index.len(), |e| at + e)];
+    let key = entry.find("\"dialect\"").ok_or(format!("examples/index.json: {file} has no dialect"))?;
+    let value =
+        entry[key + 9..].split('"').nth(1).ok_or(format!("examples/index.json: {file}'s dialect has no value"))?;
+    Ok(value.to_string())
+}
+
+/// Text as HTML element content.
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_dialect_is_the_named_entrys() {
+        let index =
+            r#"[{"file": "a.nc", "dialect": "fanuc0itf"}, {"file": "o1006.nc", "dialect": "gsk980tdc", "title": "x"}]"#;
+        assert_eq!(dialect_of(index, "o1006.nc").unwrap(), "gsk980tdc");
+        assert_eq!(dialect_of(index, "a.nc").unwrap(), "fanuc0itf");
+        assert!(dialect_of(index, "b.nc").is_err());
+    }
+
+    #[test]
+    fn a_mark_is_replaced_once_or_refused() {
+        assert_eq!(replace_once("a<!--m-->b", "<!--m-->", "X").unwrap(), "aXb");
+        assert!(replace_once("ab", "<!--m-->", "X").is_err());
+        assert!(replace_once("<!--m--><!--m-->", "<!--m-->", "X").is_err());
+    }
+}
