@@ -10,8 +10,9 @@
 //    them: what it opens is the kept program, drawn by the app.
 // 3. Nor a visit by a link, nor one in Chinese (the app opens other text
 //    or labels than the page holds).
-// Screenshots at 1400×900: first-static.png (the script held back) and
-// first-live.png (the app drawn) in tests/browser/screenshots/.
+// Screenshots: first-static.png (1400×900, the script held back),
+// first-static-390.png (a phone, the same) and first-live.png (1400×900,
+// the app drawn) in tests/browser/screenshots/.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import fs from 'node:fs';
@@ -61,7 +62,7 @@ try {
   {
     const { page, close, requested, release } = await held('screwcut-first-');
     await page.goto(url, { waitUntil: 'commit' });
-    await page.waitForFunction(() => document.querySelectorAll('.pane > .first svg').length === 3 && document.querySelector('.pane > .first').getBoundingClientRect().height > 100, null, { timeout: 20_000 });
+    await page.waitForFunction(() => document.querySelectorAll('.pane > .first svg').length === 4 && document.querySelector('.pane > .first').getBoundingClientRect().height > 100, null, { timeout: 20_000 });
     await page.waitForFunction(() => performance.getEntriesByType('paint').some((e) => e.name === 'first-contentful-paint'), null, { timeout: 20_000 });
     const s = await shown(page);
     check('1. a first visit holds the example: the page is marked first', s.first, JSON.stringify(s));
@@ -76,7 +77,17 @@ try {
     check('… painted with the app’s script still held back, before any wasm was asked for', !before.some((p) => p.endsWith('.wasm')) && !before.includes('/worker.js'), before.join(' '));
     const sides = await page.evaluate(() => document.querySelector('.pane > .first svg').outerHTML);
     check('… the side drawing has the passes’ cuts drawn (the cut pen)', sides.includes('stroke="#2563eb"'), sides.slice(0, 120));
+    const ids = await page.evaluate(() => [...document.querySelectorAll('.first [id]')].map((e) => e.id));
+    check('… the drawings’ ids are unique in the page', ids.length >= 4 && new Set(ids).size === ids.length, ids.join(' '));
     await page.screenshot({ path: path.join(shots, 'first-static.png') });
+    // On a phone the side section is the one laid out for its canvas, not the wide one shrunk.
+    await page.setViewportSize({ width: 390, height: 844 });
+    const phone = await page.evaluate(() =>
+      [...document.querySelectorAll('.pane > .first')].filter((d) => getComputedStyle(d).display !== 'none').map((d) => ({ cls: d.className, w: Math.round(d.getBoundingClientRect().width), svg: Math.round(d.querySelector('svg').getBoundingClientRect().height) })),
+    );
+    check('… at 390 wide the side section shown is the narrow one, filling its view', phone.length === 3 && phone[0].cls === 'first narrow' && phone[0].svg > 200, JSON.stringify(phone));
+    await page.screenshot({ path: path.join(shots, 'first-static-390.png'), fullPage: true });
+    await page.setViewportSize({ width: 1400, height: 900 });
     release();
     await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
     await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 30_000 });

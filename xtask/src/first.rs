@@ -15,13 +15,16 @@ use crate::web::{path_str, target_dir};
 /// The example a first visit opens (www/src/app/main.js).
 const EXAMPLE: &str = "o1006.nc";
 
-/// Each view's placeholder in `www/static/index.html` and the size it is
-/// laid out at: the app's canvases in a 1400 × 900 window (the drawing
-/// scales to the window's, keeping its proportions).
-const VIEWS: [(&str, &str, f64, f64); 3] = [
-    ("side", "<!--first:side-->", 882.0, 250.0),
-    ("tooth", "<!--first:tooth-->", 437.0, 173.0),
-    ("starts", "<!--first:starts-->", 437.0, 173.0),
+/// Each drawing's placeholder in `www/static/index.html`, its view, the
+/// size it is laid out at and its class: the app's canvases in a 1400 × 900
+/// window, and the side section's on a phone (390 wide: `narrow`, which the
+/// stylesheet shows below 520 px instead of the other). Each scales to the
+/// window's canvas, keeping its proportions.
+const VIEWS: [(&str, &str, f64, f64, &str); 4] = [
+    ("<!--first:side-->", "side", 882.0, 250.0, "first wide"),
+    ("<!--first:side-narrow-->", "side", 376.0, 238.0, "first narrow"),
+    ("<!--first:tooth-->", "tooth", 437.0, 173.0, "first"),
+    ("<!--first:starts-->", "starts", 437.0, 173.0, "first"),
 ];
 
 /// The program's placeholder (in the editor's place).
@@ -40,7 +43,7 @@ pub fn write_first_visit(out: &Path) -> Result {
     let cli = target_dir()?.join("debug").join("screwcut");
     let page_path = out.join("index.html");
     let mut page = std::fs::read_to_string(&page_path).map_err(|e| format!("{}: {e}", page_path.display()))?;
-    for (view, mark, width, height) in VIEWS {
+    for (mark, view, width, height, class) in VIEWS {
         let (w, h) = (width.to_string(), height.to_string());
         let file = path_str(&file)?;
         let mut args = vec!["svg", &file, "--dialect", &dialect, "--view", view, "--width", &w, "--height", &h];
@@ -49,7 +52,7 @@ pub fn write_first_visit(out: &Path) -> Result {
         }
         let svg = draw(&cli, &args)?;
         let svg: Vec<&str> = svg.lines().filter(|l| !l.starts_with("<?xml")).collect();
-        let html = format!("<div class=\"first\" aria-hidden=\"true\">{}</div>", svg.join("\n"));
+        let html = format!("<div class=\"{class}\" aria-hidden=\"true\">{}</div>", svg.join("\n"));
         page = replace_once(&page, mark, &html)?;
     }
     // A span a line, numbered by the stylesheet as the editor numbers them.
