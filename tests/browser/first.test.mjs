@@ -8,11 +8,12 @@
 //    own drawings and editor take their places and the page's are gone.
 // 2. The next visit (the example is now a kept program) shows none of
 //    them: what it opens is the kept program, drawn by the app.
-// 3. Nor a visit by a link, nor one in Chinese (the app opens other text
-//    or labels than the page holds).
+// 3. Nor a visit by a link (the app opens the link's program). A first
+//    visit in Chinese shows the drawings with Chinese labels.
 // Screenshots: first-static.png (1400×900, the script held back),
-// first-static-390.png (a phone, the same) and first-live.png (1400×900,
-// the app drawn) in tests/browser/screenshots/.
+// first-static-390.png (a phone, the same), first-static-zh.png (in
+// Chinese) and first-live.png (1400×900, the app drawn) in
+// tests/browser/screenshots/.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
 import fs from 'node:fs';
@@ -30,9 +31,10 @@ const shown = (page) =>
     const visible = (el) => el.getBoundingClientRect().height > 0 && getComputedStyle(el).display !== 'none';
     return {
       first: document.documentElement.classList.contains('first-visit'),
+      zh: document.documentElement.classList.contains('first-zh'),
       drawings: [...document.querySelectorAll('.pane > .first')]
         .filter(visible)
-        .map((d) => ({ title: d.querySelector('svg title')?.textContent, h: Math.round(d.getBoundingClientRect().height), covers: d.parentElement.querySelector('canvas').id })),
+        .map((d) => ({ title: d.querySelector('svg title')?.textContent, h: Math.round(d.getBoundingClientRect().height), covers: d.parentElement.querySelector('canvas').id, lang: d.classList.contains('zh') ? 'zh' : 'en', text: d.textContent })),
       code: [...document.querySelectorAll('#editor > pre.first')].filter(visible).map((p) => p.textContent),
       parts: document.querySelectorAll('.first').length,
     };
@@ -62,7 +64,7 @@ try {
   {
     const { page, close, requested, release } = await held('screwcut-first-');
     await page.goto(url, { waitUntil: 'commit' });
-    await page.waitForFunction(() => document.querySelectorAll('.pane > .first svg').length === 4 && document.querySelector('.pane > .first').getBoundingClientRect().height > 100, null, { timeout: 20_000 });
+    await page.waitForFunction(() => document.querySelectorAll('.pane > .first svg').length === 8 && document.querySelector('.pane > .first').getBoundingClientRect().height > 100, null, { timeout: 20_000 });
     await page.waitForFunction(() => performance.getEntriesByType('paint').some((e) => e.name === 'first-contentful-paint'), null, { timeout: 20_000 });
     const s = await shown(page);
     check('1. a first visit holds the example: the page is marked first', s.first, JSON.stringify(s));
@@ -85,7 +87,7 @@ try {
     const phone = await page.evaluate(() =>
       [...document.querySelectorAll('.pane > .first')].filter((d) => getComputedStyle(d).display !== 'none').map((d) => ({ cls: d.className, w: Math.round(d.getBoundingClientRect().width), svg: Math.round(d.querySelector('svg').getBoundingClientRect().height) })),
     );
-    check('… at 390 wide the side section shown is the narrow one, filling its view', phone.length === 3 && phone[0].cls === 'first narrow' && phone[0].svg > 200, JSON.stringify(phone));
+    check('… at 390 wide the side section shown is the narrow one, filling its view', phone.length === 3 && phone[0].cls === 'first narrow en' && phone[0].svg > 200, JSON.stringify(phone));
     await page.screenshot({ path: path.join(shots, 'first-static-390.png'), fullPage: true });
     await page.setViewportSize({ width: 1400, height: 900 });
     release();
@@ -109,17 +111,32 @@ try {
   }
 
   // ---- 3. a link; Chinese ----
-  for (const [what, options, where] of [
-    ['3. a visit by a link', {}, `${url}#p=not-a-program`],
-    ['… a first visit in Chinese', { locale: 'zh-CN' }, url],
-  ]) {
-    const { page, close, release } = await held('screwcut-first-other-', options);
-    await page.goto(where, { waitUntil: 'commit' });
-    await page.waitForFunction(() => document.body && document.querySelector('footer'), null, { timeout: 20_000 });
+  {
+    const { page, close, release } = await held('screwcut-first-link-');
+    await page.goto(`${url}#p=not-a-program`, { waitUntil: 'commit' });
+    await page.waitForFunction(() => document.querySelector('footer'), null, { timeout: 20_000 });
     const s = await shown(page);
-    check(`${what} shows none of them`, !s.first && s.drawings.length === 0 && s.code.length === 0, JSON.stringify(s));
+    check('3. a visit by a link shows none of them', !s.first && s.drawings.length === 0 && s.code.length === 0, JSON.stringify(s));
     release();
     await page.waitForSelector('body[data-ready]', { timeout: 60_000 });
+    await close();
+  }
+  {
+    const { page, close, release } = await held('screwcut-first-zh-', { locale: 'zh-CN' });
+    await page.goto(url, { waitUntil: 'commit' });
+    await page.waitForFunction(() => [...document.querySelectorAll('.pane > .first')].some((d) => d.getBoundingClientRect().height > 100), null, { timeout: 20_000 });
+    const s = await shown(page);
+    check(
+      '… a first visit in Chinese shows the Chinese drawings, the side section’s labels in Chinese',
+      s.first && s.zh && s.drawings.length === 3 && s.drawings.every((d) => d.lang === 'zh') && s.drawings[0].text.includes('大径 Ø48') && s.code.length === 1,
+      JSON.stringify(s.drawings.map((d) => [d.lang, d.text.slice(0, 40)])),
+    );
+    await page.screenshot({ path: path.join(shots, 'first-static-zh.png') });
+    release();
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+    const after = await shown(page);
+    const lang = await page.evaluate(() => document.documentElement.lang);
+    check('… which the app, speaking Chinese, replaces', !after.first && !after.zh && after.parts === 0 && lang === 'zh-CN', `${lang} ${JSON.stringify(after)}`);
     await close();
   }
   check('no page errors', problems.length === 0, problems.join(' | '));

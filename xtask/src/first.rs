@@ -46,13 +46,30 @@ pub fn write_first_visit(out: &Path) -> Result {
     for (mark, view, width, height, class) in VIEWS {
         let (w, h) = (width.to_string(), height.to_string());
         let file = path_str(&file)?;
-        let mut args = vec!["svg", &file, "--dialect", &dialect, "--view", view, "--width", &w, "--height", &h];
-        if view == "side" {
-            args.push("--stretch"); // as the app shows it (www/src/app/main.js binds the side view stretched)
+        // One drawing a language the app speaks; the page's script shows the visitor's.
+        let mut html = String::new();
+        for lang in ["en", "zh"] {
+            let mut args = vec![
+                "svg",
+                &file,
+                "--dialect",
+                &dialect,
+                "--view",
+                view,
+                "--width",
+                &w,
+                "--height",
+                &h,
+                "--lang",
+                lang,
+            ];
+            if view == "side" {
+                args.push("--stretch"); // as the app shows it (www/src/app/main.js binds the side view stretched)
+            }
+            let svg = draw(&cli, &args)?;
+            let svg: Vec<&str> = svg.lines().filter(|l| !l.starts_with("<?xml")).collect();
+            html += &format!("<div class=\"{class} {lang}\" aria-hidden=\"true\">{}</div>", svg.join("\n"));
         }
-        let svg = draw(&cli, &args)?;
-        let svg: Vec<&str> = svg.lines().filter(|l| !l.starts_with("<?xml")).collect();
-        let html = format!("<div class=\"{class}\" aria-hidden=\"true\">{}</div>", svg.join("\n"));
         page = replace_once(&page, mark, &html)?;
     }
     // A span a line, numbered by the stylesheet as the editor numbers them.

@@ -223,7 +223,7 @@ function onResult(m) {
 /** The example's program and drawings the page holds for a first visit (index.html) give way to the app's own. */
 function dropFirstVisit() {
   performance.mark('screwcut:first-live');
-  document.documentElement.classList.remove('first-visit');
+  document.documentElement.classList.remove('first-visit', 'first-zh');
   for (const el of document.querySelectorAll('.first')) el.remove();
 }
 
