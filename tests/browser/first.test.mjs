@@ -7,7 +7,9 @@
 //    asks for nothing else to show them. Once the script runs, the app's
 //    own drawings and editor take their places and the page's are gone.
 // 2. The next visit (the example is now a kept program) shows none of
-//    them: what it opens is the kept program, drawn by the app.
+//    them: what it opens is the kept program, drawn by the app. Nor does
+//    a visit with a kept entry whose index line was lost (the app
+//    recovers and opens it).
 // 3. Nor a visit by a link (the app opens the link's program). A first
 //    visit in Chinese shows the drawings with Chinese labels.
 // Screenshots: first-static.png (1400×900, the script held back),
@@ -107,6 +109,26 @@ try {
     const again = await shown(page);
     check('… the next visit shows none of the page’s first-visit parts', !again.first && again.drawings.length === 0 && again.code.length === 0, JSON.stringify(again));
     await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+    await close();
+  }
+
+  // ---- 2b. a kept entry whose index line was lost (the app recovers and opens it) ----
+  {
+    const { context, page, close, release } = await held('screwcut-first-lost-');
+    await context.addInitScript(() => {
+      if (!localStorage.getItem('screwcut.program.v1.lost1')) {
+        const now = Date.now();
+        localStorage.setItem('screwcut.program.v1.lost1', JSON.stringify({ id: 'lost1', dialect: 'fanuc0itf', settings: {}, program: 'O2000 (KEPT)\nG00 X50. Z5.\nM30\n', created: now, updated: now }));
+      }
+    });
+    await page.goto(url, { waitUntil: 'commit' });
+    await page.waitForFunction(() => document.querySelector('footer'), null, { timeout: 20_000 });
+    const s = await shown(page);
+    check('2b. a kept entry without its index line: none of them (the app opens that entry)', !s.first && s.drawings.length === 0 && s.code.length === 0, JSON.stringify(s));
+    release();
+    await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
+    const text = await page.evaluate(() => window.__screwcut.text());
+    check('… and the app did open it', text.startsWith('O2000 (KEPT)'), JSON.stringify(text?.slice(0, 40)));
     await close();
   }
 
