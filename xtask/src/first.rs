@@ -3,7 +3,8 @@
 //! command line draws them, so that the first diagram is on screen with the
 //! page itself while the app's script and wasm load behind it. The page
 //! shows them only on a first visit (its inline script: no program kept, no
-//! link, English) and the app takes them away when its own drawings come.
+//! link), in the visitor's language (each is written in English and in
+//! Chinese), and the app takes them away when its own drawings come.
 
 use std::path::Path;
 use std::process::Command;
