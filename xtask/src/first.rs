@@ -10,8 +10,8 @@ use std::path::Path;
 use std::process::Command;
 
 use crate::Result;
-use crate::install::{root, run};
-use crate::web::{path_str, target_dir};
+use crate::install::root;
+use crate::web::{command_line, path_str};
 
 /// The example a first visit opens (www/src/app/main.js).
 const EXAMPLE: &str = "o1006.nc";
@@ -40,19 +40,18 @@ pub fn write_first_visit(out: &Path) -> Result {
     let dialect = dialect_of(&index, EXAMPLE)?;
     let file = examples.join(EXAMPLE);
     let program = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
-    run("cargo", &["build", "--quiet", "--package", "screwcut", "--bin", "screwcut"], None)?;
-    let cli = target_dir()?.join("debug").join("screwcut");
+    let cli = command_line()?;
     let page_path = out.join("index.html");
     let mut page = std::fs::read_to_string(&page_path).map_err(|e| format!("{}: {e}", page_path.display()))?;
+    let path = path_str(&file)?;
     for (mark, view, width, height, class) in VIEWS {
         let (w, h) = (width.to_string(), height.to_string());
-        let file = path_str(&file)?;
         // One drawing a language the app speaks; the page's script shows the visitor's.
         let mut html = String::new();
         for lang in ["en", "zh"] {
             let mut args = vec![
                 "svg",
-                &file,
+                &path,
                 "--dialect",
                 &dialect,
                 "--view",

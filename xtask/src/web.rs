@@ -292,11 +292,9 @@ pub fn browser_tests(only: &[String]) -> Result {
     let port = server::port(&server)?;
     std::thread::spawn(move || server::serve_forever(server, out));
     let url = format!("http://127.0.0.1:{port}/");
-    // The app's SVG export is compared with the command line's (test.mjs).
-    let cli = path_str(&target_dir()?.join("debug").join("screwcut"))?;
-    if chosen.contains(&"test.mjs") {
-        run("cargo", &["build", "--package", "screwcut", "--bin", "screwcut"], None)?;
-    }
+    // The app's SVG export is compared with the command line's (test.mjs),
+    // the one the site was built with (its first visit's drawings).
+    let cli = path_str(&command_line()?)?;
     // Each file runs even when one before it failed; the first failure is returned.
     let runs: Vec<Result> = chosen
         .into_iter()
@@ -408,6 +406,12 @@ fn example_files(index: &str) -> Result<Vec<String>> {
         return Err("examples/index.json lists no files".into());
     }
     Ok(files)
+}
+
+/// The command line `screwcut` of this tree (a debug build), built if it is not up to date.
+pub fn command_line() -> Result<PathBuf> {
+    run("cargo", &["build", "--quiet", "--package", "screwcut", "--bin", "screwcut"], None)?;
+    Ok(target_dir()?.join("debug").join("screwcut"))
 }
 
 /// Cargo's target directory: `CARGO_TARGET_DIR`, else what `cargo metadata` says.
