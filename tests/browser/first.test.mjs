@@ -11,7 +11,10 @@
 //    a visit with a kept entry whose index line was lost (the app
 //    recovers and opens it).
 // 3. Nor a visit by a link (the app opens the link's program). A first
-//    visit in Chinese shows the drawings with Chinese labels.
+//    visit in Chinese shows the drawings with Chinese labels. In either
+//    language the page's own words (every text, title and placeholder it
+//    names, the title, the language) are before the app's script what
+//    the app then writes.
 // Screenshots: first-static.png (1400×900, the script held back),
 // first-static-390.png (a phone, the same), first-static-zh.png (in
 // Chinese) and first-live.png (1400×900, the app drawn) in
@@ -41,6 +44,27 @@ const shown = (page) =>
       parts: document.querySelectorAll('.first').length,
     };
   });
+
+/** The page's own words: each named word's text, title or placeholder (`[attribute, key, text]`), the title and the language. */
+const words = (page) =>
+  page.evaluate(() => {
+    const named = [];
+    const props = { 'data-i18n': 'textContent', 'data-i18n-title': 'title', 'data-i18n-placeholder': 'placeholder', 'data-program-word': 'textContent', 'data-program-title': 'title' };
+    for (const [attr, prop] of Object.entries(props)) {
+      for (const el of document.querySelectorAll(`[${attr}]`)) named.push([attr, el.getAttribute(attr), el[prop]]);
+    }
+    named.push(['#lang', '', document.getElementById('lang').textContent]);
+    return { named, title: document.title, lang: document.documentElement.lang };
+  });
+
+/** The words of `before` (the page alone) that differ from `after` (the app's own), named by their keys; those the app replaced by others (the examples' first option) are not compared. */
+const differ = (before, after) => {
+  const of = new Map(after.named.map(([a, k, text]) => [`${a} ${k}`, text]));
+  const d = before.named.filter(([a, k, text]) => of.has(`${a} ${k}`) && of.get(`${a} ${k}`) !== text).map(([a, k, text]) => `${a}=${k}: ${JSON.stringify(text)} (app: ${JSON.stringify(of.get(`${a} ${k}`))})`);
+  if (before.title !== after.title) d.push(`title: ${before.title} (app: ${after.title})`);
+  if (before.lang !== after.lang) d.push(`lang: ${before.lang} (app: ${after.lang})`);
+  return d;
+};
 
 /** Opens the app in a new profile with `options` (locale …), the app's script held back until `release()`. */
 async function held(prefix, options = {}) {
@@ -78,6 +102,7 @@ try {
     check('… and the program O1006 in the editor’s place, as the example file has it', s.code.length === 1 && s.code[0] === O1006, JSON.stringify(s.code[0]?.slice(0, 80)));
     // What the drawings were painted with: the page and its stylesheet, not the script or the wasm.
     const before = [...requested];
+    const en = await words(page);
     check('… painted with the app’s script still held back, before any wasm was asked for', !before.some((p) => p.endsWith('.wasm')) && !before.includes('/worker.js'), before.join(' '));
     const sides = await page.evaluate(() => document.querySelector('.pane > .first svg').outerHTML);
     check('… the side drawing has the passes’ cuts drawn (the cut pen)', sides.includes('stroke="#2563eb"'), sides.slice(0, 120));
@@ -100,6 +125,8 @@ try {
     check('… once the app has drawn, its parts are gone and the canvases show', !after.first && after.parts === 0 && after.drawings.length === 0, JSON.stringify(after));
     const editor = await page.evaluate(() => window.__screwcut.text());
     check('… and the editor holds the same program', editor === O1006, JSON.stringify(editor?.slice(0, 60)));
+    const enApp = await words(page);
+    check('… the page’s own words before the app’s script (texts, titles, placeholders) were the app’s English ones', en.named.length >= 25 && enApp.lang === 'en' && differ(en, enApp).length === 0, differ(en, enApp).join(' | '));
     await page.screenshot({ path: path.join(shots, 'first-live.png') });
 
     // ---- 2. the next visit ----
@@ -153,12 +180,19 @@ try {
       s.first && s.zh && s.drawings.length === 3 && s.drawings.every((d) => d.lang === 'zh') && s.drawings[0].text.includes('大径 Ø48') && s.code.length === 1,
       JSON.stringify(s.drawings.map((d) => [d.lang, d.text.slice(0, 40)])),
     );
+    const zh = await words(page);
     await page.screenshot({ path: path.join(shots, 'first-static-zh.png') });
     release();
     await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
     const after = await shown(page);
     const lang = await page.evaluate(() => document.documentElement.lang);
     check('… which the app, speaking Chinese, replaces', !after.first && !after.zh && after.parts === 0 && lang === 'zh-CN', `${lang} ${JSON.stringify(after)}`);
+    const zhApp = await words(page);
+    check(
+      '… the page’s own words before the app’s script (texts, titles, placeholders, the title, the language) were the app’s Chinese ones',
+      zh.named.length >= 25 && zh.named.some(([, k, text]) => k === 'passes' && text === '走刀') && zh.named.some(([, k, text]) => k === 'new' && text === '新建') && differ(zh, zhApp).length === 0,
+      differ(zh, zhApp).join(' | '),
+    );
     await close();
   }
   check('no page errors', problems.length === 0, problems.join(' | '));

@@ -4,7 +4,10 @@
 //! page itself while the app's script and wasm load behind it. The page
 //! shows them only on a first visit (its inline script: no program kept, no
 //! link), in the visitor's language (each is written in English and in
-//! Chinese), and the app takes them away when its own drawings come.
+//! Chinese), and the app takes them away when its own drawings come. The
+//! page's own words (texts, titles, placeholders) are in the visitor's
+//! language from its first paint too: its script takes them from a table
+//! written in here.
 
 use std::path::Path;
 use std::process::Command;
@@ -31,8 +34,19 @@ const VIEWS: [(&str, &str, f64, f64, &str); 4] = [
 /// The program's placeholder (in the editor's place).
 const CODE: &str = "<!--first:code-->";
 
+/// The placeholder of the page's words in English and Chinese, in its
+/// script that writes them in the visitor's language on a first visit.
+const WORDS: &str = "/*first:words*/null";
+
+/// The attributes by which the page names its words: keys of the app's
+/// page texts (www/src/shared/i18n.js, which its `setLang` fills in), and
+/// of the program library's (www/src/app/programs.js, which sets them).
+const PAGE_WORDS: [&str; 3] = ["data-i18n", "data-i18n-title", "data-i18n-placeholder"];
+const PROGRAM_WORDS: [&str; 2] = ["data-program-word", "data-program-title"];
+
 /// Writes the example's program and drawings into `out/index.html` (the
-/// built site's page), drawn by the command line of this tree.
+/// built site's page), drawn by the command line of this tree, and the
+/// English and Chinese text of the words the page names.
 pub fn write_first_visit(out: &Path) -> Result {
     let examples = root().join("examples");
     let index =
@@ -76,7 +90,54 @@ pub fn write_first_visit(out: &Path) -> Result {
     let lines: Vec<String> = program.split('\n').map(|l| format!("<span>{}</span>", escape(l))).collect();
     let code = format!("<pre class=\"first\" aria-hidden=\"true\">{}</pre>", lines.join("\n"));
     page = replace_once(&page, CODE, &code)?;
+    let mut page_keys = vec!["title".to_string()];
+    page_keys.extend(word_keys(&page, &PAGE_WORDS));
+    let words = page_words(&page_keys, &word_keys(&page, &PROGRAM_WORDS))?;
+    page = replace_once(&page, WORDS, &words)?;
     std::fs::write(&page_path, page).map_err(|e| format!("{}: {e}", page_path.display()))
+}
+
+/// The keys the page names by `attributes` (each once, in order).
+fn word_keys(page: &str, attributes: &[&str]) -> Vec<String> {
+    let mut keys: Vec<String> = Vec::new();
+    for attribute in attributes {
+        let mark = format!(" {attribute}=\"");
+        for (at, _) in page.match_indices(&mark) {
+            let rest = &page[at + mark.len()..];
+            let key = &rest[..rest.find('"').unwrap_or(0)];
+            if !key.is_empty() && !keys.iter().any(|k| k == key) {
+                keys.push(key.to_string());
+            }
+        }
+    }
+    keys
+}
+
+/// The English and Chinese text of each key as the app's own tables have
+/// them (node reads www/src/shared/i18n.js for `page`, and
+/// www/src/app/programs.js, which takes its language from the document's,
+/// for `programs`), as a JavaScript object (`{"en": {"page": {key: text},
+/// "programs": …}, "zh": …}`) safe inside `<script>`.
+fn page_words(page: &[String], programs: &[String]) -> Result<String> {
+    let list = |keys: &[String]| format!("[{}]", keys.iter().map(|k| format!("\"{k}\"")).collect::<Vec<_>>().join(","));
+    let read = "globalThis.document = { documentElement: { lang: 'en' } }; \
+        const { textIn } = await import('./src/shared/i18n.js'); \
+        const { tr } = await import('./src/app/programs.js'); \
+        const [page, programs] = [JSON.parse(process.argv[1]), JSON.parse(process.argv[2])]; \
+        const table = (lang) => { document.documentElement.lang = lang; return { \
+          page: Object.fromEntries(page.map((k) => [k, textIn(lang, k)])), \
+          programs: Object.fromEntries(programs.map((k) => [k, tr(k)])) }; }; \
+        process.stdout.write(JSON.stringify({ en: table('en'), zh: table('zh') }));";
+    let out = Command::new("node")
+        .args(["--input-type=module", "-e", read, &list(page), &list(programs)])
+        .current_dir(root().join("www"))
+        .output()
+        .map_err(|e| format!("cannot run node: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("node could not read the page's words: {}", String::from_utf8_lossy(&out.stderr)));
+    }
+    let json = String::from_utf8(out.stdout).map_err(|e| format!("node wrote no UTF-8: {e}"))?;
+    Ok(json.replace("</", "<\\/"))
 }
 
 /// The command line's SVG: its standard output, or why there is none.
@@ -123,6 +184,15 @@ mod tests {
         assert_eq!(dialect_of(index, "o1006.nc").unwrap(), "gsk980tdc");
         assert_eq!(dialect_of(index, "a.nc").unwrap(), "fanuc0itf");
         assert!(dialect_of(index, "b.nc").is_err());
+    }
+
+    #[test]
+    fn the_page_names_its_words_by_key() {
+        let page = r#"<b data-i18n="passes">Passes</b><button data-i18n="open" data-i18n-title="open_help">Open</button>
+            <input data-i18n-placeholder="find"><i data-i18n="passes">Passes</i><p data-i18n-x="no">"#;
+        assert_eq!(word_keys(page, &PAGE_WORDS), ["passes", "open", "open_help", "find"]);
+        let page = r#"<span data-program-word="programs"></span><button data-program-word="new" data-program-title="new_title">"#;
+        assert_eq!(word_keys(page, &PROGRAM_WORDS), ["programs", "new", "new_title"]);
     }
 
     #[test]
