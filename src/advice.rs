@@ -15,7 +15,7 @@ use crate::diagnostic::Diagnostics;
 use crate::geom::Frame;
 use crate::message::{self as msg, Arg};
 use crate::motion::{Move, MoveKind, Point};
-use crate::num::{EPS, fmt};
+use crate::num::EPS;
 use crate::settings::{P, Settings};
 use crate::span::Span;
 use crate::thread::{Axis, CrestSource, Role, Source, Thread, v_area};
@@ -202,16 +202,15 @@ fn finish_one(
     if t.starts == 1 && long == Axis::Z {
         if let Some(table) = table_4_3(pitch_mm) {
             let infeeds: Vec<f64> = t.passes.iter().map(|p| 2.0 * p.infeed * mm).collect();
-            let list = |v: &[f64]| v.iter().map(|x| fmt(*x)).collect::<Vec<_>>().join(" ");
             let matches = infeeds.len() == table.len() && infeeds.iter().zip(table).all(|(a, b)| (a - b).abs() < 1e-3);
             diags.push_with(&msg::INFEED_GUIDANCE, span, || {
                 let same = if matches { &msg::AS_THE_TABLE } else { &msg::NOTHING };
                 args![
                     pitch = pitch_mm,
                     n = table.len(),
-                    table = list(table),
+                    table = Arg::Nums(table.to_vec()),
                     count = infeeds.len(),
-                    infeeds = list(&infeeds),
+                    infeeds = Arg::Nums(infeeds),
                     same
                 ]
             });

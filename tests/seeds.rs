@@ -92,6 +92,11 @@ fn o1006_textbook_four_block_passes() {
     // The programmed infeeds are table 4-3's for pitch 2.
     let d = one(&plan, Code::InfeedGuidance);
     assert!(d.message.ends_with("(as the table)"), "{}", d.message);
+    // Both lists written as shown, in the message and, as text, in the plan's JSON.
+    let listed = "diameter infeeds 0.9 0.6 0.6 0.4 0.1; programmed: 5 passes, 0.9 0.6 0.6 0.4 0.1 (";
+    assert!(d.message.contains(listed), "{}", d.message);
+    let json = plan.to_json();
+    assert!(json.contains(r#""table":"0.9 0.6 0.6 0.4 0.1","count":5,"infeeds":"0.9 0.6 0.6 0.4 0.1""#), "{json}");
     assert_eq!(plan.with_code(Code::InfeedTooLarge).count(), 0);
     // G50 X0 Z0 sets the position, so the approach N20 G00 X58 Z70 is drawn from X0 Z0.
     let first = plan.moves[0];

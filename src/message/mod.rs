@@ -134,6 +134,9 @@ impl Phrase {
 pub enum Arg {
     /// A number, written with up to four decimals ([`crate::num::fmt`]).
     Num(f64),
+    /// Numbers, each written as [`Arg::Num`], separated by spaces (a list
+    /// of infeeds): written when shown, not when the message is made.
+    Nums(Vec<f64>),
     /// A whole number.
     Int(i64),
     /// Text kept as it is in every language (a word as written, a name, a quoted message).
@@ -208,6 +211,7 @@ impl Arg {
     fn write(&self, out: &mut String, args: &Args, lang: Lang, depth: u8) {
         match self {
             Arg::Num(v) => out.push_str(&crate::num::fmt(*v)),
+            Arg::Nums(vs) => write_nums(out, vs),
             Arg::Int(v) => out.push_str(&v.to_string()),
             Arg::Text(s) => out.push_str(s),
             Arg::Phrase(p) => write_template(out, p.text(lang), args, lang, depth + 1),
@@ -219,6 +223,16 @@ impl Arg {
                 }
             }
         }
+    }
+}
+
+/// `vs` written as [`Arg::Nums`] is.
+fn write_nums(out: &mut String, vs: &[f64]) {
+    for (i, v) in vs.iter().enumerate() {
+        if i > 0 {
+            out.push(' ');
+        }
+        out.push_str(&crate::num::fmt(*v));
     }
 }
 
@@ -238,6 +252,10 @@ pub fn hash_message(template: &'static Template, args: &Args, h: &mut impl std::
         h.write_usize(name.as_ptr() as usize);
         match arg {
             Arg::Num(v) => h.write_u64(v.to_bits()),
+            Arg::Nums(vs) => {
+                h.write_usize(vs.len());
+                vs.iter().for_each(|v| h.write_u64(v.to_bits()));
+            }
             Arg::Int(v) => h.write_u64(*v as u64 ^ 1),
             Arg::Text(t) => h.write(t.as_bytes()),
             Arg::Phrase(p) => h.write_usize(std::ptr::from_ref(*p) as usize),
@@ -276,6 +294,12 @@ impl Serialize for Args {
         for (name, arg) in &self.0 {
             match arg {
                 Arg::Num(v) => m.serialize_entry(name, &crate::num::round_out(*v))?,
+                // As text, as it is shown.
+                Arg::Nums(vs) => {
+                    let mut text = String::new();
+                    write_nums(&mut text, vs);
+                    m.serialize_entry(name, &text)?
+                }
                 // Beyond 2^53 a JavaScript number would not hold it exactly.
                 Arg::Int(v) if v.unsigned_abs() < 1 << 53 => m.serialize_entry(name, v)?,
                 Arg::Int(v) => m.serialize_entry(name, &(*v as f64))?,
