@@ -93,18 +93,20 @@ impl LineIndex {
         LineIndex { starts }
     }
 
-    /// An index from line starts already known (ascending, starting with 0);
-    /// lines after the last one given are found by scanning `text`.
+    /// An index from line starts already known (strictly ascending, as a
+    /// lexer records them, starting with 0 or not); lines after the last one
+    /// given are found by scanning `text`.
     pub fn from_starts(text: &str, mut starts: Vec<u32>) -> LineIndex {
+        debug_assert!(starts.windows(2).all(|w| w[0] < w[1]), "line starts not strictly ascending");
         if starts.first() != Some(&0) {
             starts.insert(0, 0);
         }
         let last = *starts.last().unwrap_or(&0) as usize;
         if last < text.len() {
+            // The tail's starts after its first (`last` itself): all beyond `last`.
             let tail = LineIndex::new(&text[last..]);
             starts.extend(tail.starts.iter().skip(1).map(|s| s + last as u32));
         }
-        starts.dedup();
         LineIndex { starts }
     }
 
