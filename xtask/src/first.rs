@@ -119,6 +119,9 @@ fn word_keys(page: &str, attributes: &[&str]) -> Vec<String> {
 /// for `programs`), as a JavaScript object (`{"en": {"page": {key: text},
 /// "programs": …}, "zh": …}`) safe inside `<script>`.
 fn page_words(page: &[String], programs: &[String]) -> Result<String> {
+    if let Some(k) = page.iter().chain(programs).find(|k| !k.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')) {
+        return Err(format!("www/static/index.html names a word \"{k}\": keys are letters, digits and _"));
+    }
     let list = |keys: &[String]| format!("[{}]", keys.iter().map(|k| format!("\"{k}\"")).collect::<Vec<_>>().join(","));
     let read = "globalThis.document = { documentElement: { lang: 'en' } }; \
         const { textIn } = await import('./src/shared/i18n.js'); \
