@@ -24,14 +24,10 @@
 //!   its table here is unchanged.
 
 mod common;
-use common::{eq, no_alarm, one, plan_with};
+use common::{eq, fanuc, no_alarm, one, plan_with};
 use screwcut::motion::MoveKind;
 use screwcut::plan::Units;
-use screwcut::{Code, Dialect, Plan};
-
-fn fanuc(src: &str) -> Plan {
-    plan_with(src, Dialect::Fanuc0i, &[])
-}
+use screwcut::{Code, Dialect};
 
 /// Every code of the system A list that the lathe reads, on a line of its
 /// own after a thread, and with G20 on the same line: no alarm, and G20 applies.

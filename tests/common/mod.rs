@@ -13,6 +13,11 @@ pub fn plan_with(src: &str, dialect: Dialect, sets: &[&str]) -> Plan {
     screwcut::plan(src, &s)
 }
 
+/// Plans `src` as Fanuc 0i with default settings.
+pub fn fanuc(src: &str) -> Plan {
+    plan_with(src, Dialect::Fanuc0i, &[])
+}
+
 /// Plans `src` as GSK980TDc with default settings.
 pub fn gsk(src: &str) -> Plan {
     plan_with(src, Dialect::Gsk980tdc, &[])
@@ -158,3 +163,25 @@ pub fn english_words(zh: &str) -> Vec<String> {
     }
     out
 }
+
+/// Three passes of G32 written out block by block (the macro tests' programs
+/// of calls and loops cut the same).
+pub const UNROLLED: &str = "\
+O0001
+G97 S300 M03
+G00 X58. Z70.
+X47.1
+G32 Z13. F2.
+G00 X58.
+Z70.
+X46.5
+G32 Z13. F2.
+G00 X58.
+Z70.
+X45.9
+G32 Z13. F2.
+G00 X58.
+Z70.
+G00 X100. Z100.
+M30
+";

@@ -15,12 +15,12 @@ import { showBehind } from './behind.js';
 import { bindDesignation, DESIGNATION, renderCheck } from './check.js';
 import { Compare } from './compare.js';
 import { DiagnosticsList } from './diaglist.js';
-import { fileName, fillPrintSheet, openFile } from './files.js';
-import { download, shareLink, toast } from './pageutil.js';
+import { bindMenus, loadExamples, openExample, renderExamples } from './menus.js';
+import { showBanner, showTip, toast } from './pageutil.js';
 import { Planning } from './planning.js';
-import { inherited, Library } from './programs.js';
+import { Library } from './programs.js';
 import { SettingsPanel } from './settingspanel.js';
-import { DEFAULT_DIALECT, encodeFragment, knownDialect } from './share.js';
+import { DEFAULT_DIALECT, knownDialect } from './share.js';
 import { TextSync } from './textsync.js';
 import { bindViewBar } from './viewbar.js';
 
@@ -275,9 +275,7 @@ function renderLists(r) {
 }
 
 function banner(text) {
-  const b = $('stale');
-  b.hidden = !text;
-  b.textContent = text || '';
+  showBanner($('stale'), text);
 }
 
 function renderThreads(r, stale) {
@@ -363,16 +361,7 @@ function passViaOf(info) {
 
 /** A tooltip for what the pointer is over in a drawing. */
 function tip(info, x, y) {
-  const el = $('tip');
-  if (!info || x === undefined) {
-    el.hidden = true;
-    return;
-  }
-  const text = tipText(info, ui.result, ui.thread, t);
-  el.textContent = text;
-  el.hidden = false;
-  el.style.left = `${Math.min(x + 14, window.innerWidth - el.offsetWidth - 8)}px`;
-  el.style.top = `${y + 16}px`;
+  showTip($('tip'), info && x !== undefined ? tipText(info, ui.result, ui.thread, t) : null, x, y);
 }
 
 function onPick(info) {
@@ -414,34 +403,7 @@ function onSettingInput(e) {
 
 const renderSettingErrors = (list) => settingsPanel.showErrors(list);
 
-// ---- examples, sharing, export ----
-
-async function loadExamples() {
-  try {
-    const res = await fetch('examples/index.json');
-    const list = await res.json();
-    $('examples').dataset.list = JSON.stringify(list);
-    renderExamples();
-    return list;
-  } catch (e) {
-    probe.errors.push(`examples: ${e}`);
-    return [];
-  }
-}
-
-function renderExamples() {
-  const sel = $('examples');
-  const list = JSON.parse(sel.dataset.list || '[]');
-  const zh = getLang() === 'zh';
-  sel.innerHTML = `<option value="">${esc(t('example_pick'))}</option>` + list.map((e, i) => `<option value="${i}">${esc(zh && e.title_zh ? e.title_zh : e.title)}</option>`).join('');
-}
-
-/** Opens an example as a program of its own (the open one stays in the Programs menu). */
-async function openExample(entry) {
-  const res = await fetch(`examples/${encodeURIComponent(entry.file)}`);
-  const text = await res.text();
-  await library.openNew({ dialect: entry.dialect || state.dialect, settings: inherited(state.settings), program: text });
-}
+// ---- the dialect ----
 
 async function setDialect(name, plan = true) {
   state.dialect = dialects.some((d) => d.name === name) ? name : 'gsk980tdc';
@@ -531,11 +493,11 @@ async function main() {
 
   makeEditor(state.program);
 
-  const list = await loadExamples();
+  const list = await loadExamples(probe.errors);
   if (!saved) {
     const o1006 = list.find((e) => e.file === 'o1006.nc') || list[0];
     if (o1006) {
-      await openExample(o1006);
+      await openExample({ state, library }, o1006);
       return finishSetup();
     }
   }
@@ -545,20 +507,8 @@ async function main() {
 
 function finishSetup() {
   $('dialect').addEventListener('change', (e) => setDialect(e.target.value));
-  $('examples').addEventListener('change', async (e) => {
-    const list = JSON.parse(e.target.dataset.list || '[]');
-    const entry = list[Number(e.target.value)];
-    e.target.value = '';
-    if (entry) await openExample(entry);
-  });
+  bindMenus({ state, client, library, dialects, persist, buildSettings, editor: () => editor, result: () => ui.result, thread: () => ui.thread, replan: () => replan() });
   $('settings-form').addEventListener('change', onSettingInput);
-  const tool = (m) => client.request('tool', m);
-  const open = ({ text, dialect }) => library.openNew({ dialect, settings: inherited(state.settings), program: text });
-  // The dialogs are a bundle of their own (`wizard.js` beside `app.js`),
-  // fetched when one first opens, with what the page shows at the click.
-  const dialog = (name, args) => import(new URL('wizard.js', import.meta.url).href).then((w) => w[name](args)).catch((e) => toast(e.message));
-  $('wizard').addEventListener('click', () => dialog('openWizard', { request: tool, t, dialect: state.dialect, onOpen: open }));
-  $('expand').addEventListener('click', () => dialog('openExpand', { request: tool, t, dialects, dialect: state.dialect, alarms: ui.result ? ui.result.alarms : 0, onOpen: open }));
   bindDesignation($('designation'), (v) => {
     state.settings[state.dialect] ||= {};
     const mine = state.settings[state.dialect];
@@ -566,42 +516,6 @@ function finishSetup() {
     else delete mine[DESIGNATION];
     persist();
     replan();
-  });
-  $('settings-form').addEventListener('submit', (e) => e.preventDefault());
-  $('settings-reset').addEventListener('click', async () => {
-    state.settings[state.dialect] = {};
-    await buildSettings();
-    persist();
-    replan();
-  });
-  $('settings-close').addEventListener('click', () => $('settings-toggle').click());
-  $('settings-toggle').addEventListener('click', () => {
-    $('settings').hidden = !$('settings').hidden;
-    $('settings-toggle').setAttribute('aria-pressed', String(!$('settings').hidden));
-  });
-  $('share').addEventListener('click', () => shareLink(encodeFragment(state), t));
-  // The File menu closes once an item is chosen, or on a click elsewhere.
-  $('file-menu').addEventListener('click', (e) => {
-    if (e.target.closest('.items button')) $('file-menu').open = false;
-  });
-  document.addEventListener('click', (e) => {
-    if (!e.target.closest('#file-menu')) $('file-menu').open = false;
-  });
-  $('file-open').addEventListener('click', () => $('file-input').click());
-  $('file-input').addEventListener('change', async (e) => {
-    const file = e.target.files && e.target.files[0];
-    e.target.value = '';
-    await openFile(file, { dialect: state.dialect, t, say: toast, open: ({ dialect, program }) => library.openNew({ dialect, settings: inherited(state.settings), program }) });
-  });
-  $('file-save').addEventListener('click', () => {
-    const text = editor.text();
-    download(fileName(text, state.dialect), new Blob([text], { type: 'text/plain;charset=utf-8' }));
-  });
-  $('print').addEventListener('click', () => window.print());
-  window.addEventListener('beforeprint', () => fillPrintSheet($('print-sheet'), { text: editor.text(), result: ui.result, thread: ui.thread, t }));
-  $('plan-json').addEventListener('click', async () => {
-    const json = await client.request('json');
-    download('screwcut-plan.json', new Blob([json], { type: 'application/json' }));
   });
   $('lang').addEventListener('click', async () => {
     state.lang = getLang() === 'zh' ? 'en' : 'zh';
@@ -621,6 +535,13 @@ function finishSetup() {
     selectThread(ui.thread, ui.start);
     if (ui.result) renderThreads(ui.result, false);
   });
+  bindLists();
+  // A link followed while the app is open: a new program, checked as at start.
+  window.addEventListener('hashchange', () => library.openLink(location.hash));
+}
+
+/** The pass table and the diagnostics list: pointing, clicking, the severities shown. */
+function bindLists() {
   const tbody = $('passes').tBodies[0];
   const rowPass = (e) => {
     const tr = e.target.closest('tr[data-pass]');
@@ -661,8 +582,6 @@ function finishSetup() {
     update({ severities });
     if (ui.result) renderDiagnostics(ui.result.diagnostics);
   });
-  // A link followed while the app is open: a new program, checked as at start.
-  window.addEventListener('hashchange', () => library.openLink(location.hash));
 }
 
 main().catch((e) => {

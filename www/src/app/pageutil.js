@@ -1,5 +1,5 @@
 // Small page helpers: a download of a blob, a passing message in the footer,
-// a link to share.
+// a link to share, a banner and a tooltip.
 
 /** Downloads `blob` as file `name`. */
 export function download(name, blob) {
@@ -32,4 +32,22 @@ export async function shareLink(fragment, t) {
   } catch {
     toast(t('share_failed'));
   }
+}
+
+/** Shows `text` in banner `el`, or hides it (no text). */
+export function showBanner(el, text) {
+  el.hidden = !text;
+  el.textContent = text || '';
+}
+
+/** Shows tooltip `el` with `text` near the pointer at (`x`, `y`), kept inside the window; hides it when `text` is null. */
+export function showTip(el, text, x, y) {
+  if (text === null) {
+    el.hidden = true;
+    return;
+  }
+  el.textContent = text;
+  el.hidden = false;
+  el.style.left = `${Math.min(x + 14, window.innerWidth - el.offsetWidth - 8)}px`;
+  el.style.top = `${y + 16}px`;
 }
