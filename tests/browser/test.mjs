@@ -293,6 +293,10 @@ try {
     await page.waitForTimeout(300);
     const m = await page.evaluate(() => ({ frames: window.__screwcut.frames, updates: window.__screwcut.updates, marks: performance.getEntriesByName('screwcut:frame').length }));
     check(`every keystroke re-planned and drew (${what})`, m.updates.length >= 1 && m.frames.length >= 1 && m.marks >= m.frames.length, `${m.updates.length} updates, ${m.frames.length} frames, ${m.marks} marks`);
+    // The engine stamps a drawing when it was committed, on the clock page and worker share: after its text was sent.
+    const sent = new Map(m.updates.map((u) => [u.seq, u.sent]));
+    const early = m.frames.filter((f) => sent.has(f.seq) && !(f.at >= sent.get(f.seq) && f.frame > 0 && f.frame < 5000));
+    check(`each drawing is marked at the engine's commit, after its text was sent (${what})`, early.length === 0 && m.frames.some((f) => sent.has(f.seq)), JSON.stringify(early.slice(0, 3)));
     const med = (a, k) => fmt(median(a.map((x) => x[k] || 0)));
     console.log(
       `edit-to-frame, ${lines} lines, ${what}, ${keys.length} keystrokes, ${m.frames.length} drawings: median ${med(m.frames, 'frame')} ms keystroke to the drawing on screen ` +

@@ -5,8 +5,9 @@
 // with an alarm keeps the last good drawing and table, greyed.
 
 import { createEditor } from '../editor/editor.js';
-import { afterTask, startEngine } from '../engine/client.js';
+import { startEngine } from '../engine/client.js';
 import { patchList, spliceList } from '../engine/parts.js';
+import { afterTask } from '../engine/task.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
 import { passHead, passLines, passRow, passVia, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
 import { esc } from '../shared/table.js';
@@ -227,12 +228,14 @@ function dropFirstVisit() {
   for (const el of document.querySelectorAll('.first')) el.remove();
 }
 
-/** The drawing that includes an edit is on screen: mark it for whoever measures. */
+/** The drawing that includes an edit is on screen: mark it, at the time it was committed, for whoever measures. */
 function onFrame(m) {
   const input = planning.frameInput(m.seq, m.input);
   if (input === null) return;
-  performance.mark('screwcut:frame', { detail: { input } });
-  probe.frames.push({ seq: m.seq, frame: performance.now() - input });
+  // When the engine committed it (the page's thread may come to this message later).
+  const at = Number.isFinite(m.at) ? Math.min(performance.now(), m.at - performance.timeOrigin) : performance.now();
+  performance.mark('screwcut:frame', { startTime: at, detail: { input } });
+  probe.frames.push({ seq: m.seq, frame: at - input, at });
   if (probe.frames.length > 200) probe.frames.shift();
 }
 

@@ -5,20 +5,11 @@
 // forwarded as operations.
 
 import { bindCanvas } from '../view/input.js';
+import { afterTask } from './task.js';
 
 /** Whether this browser can draw the app in a worker. */
 export function canDrawInWorker() {
   return typeof Worker === 'function' && typeof OffscreenCanvas === 'function' && typeof HTMLCanvasElement !== 'undefined' && 'transferControlToOffscreen' in HTMLCanvasElement.prototype;
-}
-
-/** Runs `f` in a new task: after a frame callback, once the frame is committed. */
-export function afterTask(f) {
-  const ch = new MessageChannel();
-  ch.port1.onmessage = () => {
-    ch.port1.close();
-    f();
-  };
-  ch.port2.postMessage(0);
 }
 
 /** A started engine: `send`, `request` (answered by a reply), `bindView`, `mode`. */

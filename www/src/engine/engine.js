@@ -7,7 +7,7 @@
 // Messages in: view, size, input, plan, select, highlight, lang, export,
 // json, tool, inspect. Messages out: result (after each plan: counts, lists and
 // the chosen thread's passes as columns), frame (once the drawing that
-// includes an edit is on screen), hover, pick, reply, error.
+// includes an edit is on screen, and when), hover, pick, reply, error.
 
 import { SceneView } from '../view/sceneview.js';
 import { HeldParts, spliceList } from './parts.js';
@@ -294,7 +294,8 @@ export class Engine {
     const f = this.pendingFrame;
     if (!f || Object.values(this.views).some((v) => v.queued)) return;
     this.pendingFrame = null;
-    this.afterCommit(() => this.post({ type: 'frame', seq: f.seq, input: f.input }));
+    // `at`: when it was committed, on the clock the page and the worker share (their time origins differ).
+    this.afterCommit(() => this.post({ type: 'frame', seq: f.seq, input: f.input, at: performance.timeOrigin + performance.now() }));
   }
 
   /**

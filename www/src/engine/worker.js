@@ -6,6 +6,7 @@
 
 import init, * as core from '../../pkg/screwcut.js';
 import { Engine, toolsLoader } from './engine.js';
+import { afterTask } from './task.js';
 
 let engine = null;
 const queue = [];
@@ -16,8 +17,9 @@ self.onmessage = async (e) => {
   if (m.type === 'init') {
     try {
       await init({ module_or_path: m.wasm });
-      // In a worker a drawing is on screen once the animation frame that drew it returns.
-      engine = new Engine(core, post, (f) => f(), { immediate: true, loadTools: toolsLoader(m.wasm) });
+      // In a worker a drawing goes on screen when the task that drew it ends:
+      // what follows a drawing (the frame's report and its time) comes in the next task.
+      engine = new Engine(core, post, afterTask, { immediate: true, loadTools: toolsLoader(m.wasm) });
       post({ type: 'ready', dialects: core.dialects() });
       for (const q of queue.splice(0)) engine.handle(q);
     } catch (err) {
