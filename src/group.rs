@@ -105,16 +105,6 @@ impl Cuts {
     fn each_mut(&mut self, mut f: impl FnMut(&mut Chain)) {
         self.chunks.iter_mut().for_each(|c| Rc::make_mut(c).iter_mut().for_each(&mut f));
     }
-
-    /// Every chain, the list emptied.
-    fn take_all(&mut self) -> Vec<Chain> {
-        self.len = 0;
-        let mut out = Vec::new();
-        for c in self.chunks.drain(..) {
-            out.extend(Rc::try_unwrap(c).unwrap_or_else(|shared| (*shared).clone()));
-        }
-        out
-    }
 }
 
 impl PartialEq for Cuts {
@@ -323,11 +313,14 @@ impl Grouper {
 
     /// Closes the thread being grouped, if any, into `out`.
     pub fn close(&mut self, s: &Settings, out: &mut Vec<Thread>, diags: &mut Diagnostics) {
-        let cuts = self.cuts.take_all();
+        // The thread is built from the chains where they are: the snapshots
+        // of a reading share them, and taking them out would copy them all.
+        let taken = std::mem::take(&mut self.cuts);
         self.after = After::Nothing;
-        if cuts.is_empty() {
+        if taken.len == 0 {
             return;
         }
+        let cuts: Vec<&Chain> = taken.iter().collect();
         let limit = s.int(P::LimitStarts).max(1) as usize;
         let thread = build(&cuts);
         if thread.starts as usize > limit {
@@ -339,7 +332,7 @@ impl Grouper {
 
 /// Reports the chain that brought the starts over `limit`.
 #[cold]
-fn too_many_starts(cuts: &[Chain], starts: u32, limit: usize, diags: &mut Diagnostics) {
+fn too_many_starts(cuts: &[&Chain], starts: u32, limit: usize, diags: &mut Diagnostics) {
     let mut seen: Vec<f64> = Vec::new();
     for c in cuts {
         if !seen.iter().any(|a| (a - c.angle).abs() < 1e-6) {
@@ -417,7 +410,7 @@ fn pass_of(c: &Chain, start: u32, index: u32) -> Pass {
 
 /// Builds a thread from its chains: starts from the helices they cut
 /// ([`starts_of`]), passes in order.
-fn build(cuts: &[Chain]) -> Thread {
+fn build(cuts: &[&Chain]) -> Thread {
     let (of, starts) = starts_of(cuts);
     let mut counts = vec![0u32; starts];
     let mut passes = Vec::with_capacity(cuts.len());
@@ -471,12 +464,12 @@ fn build(cuts: &[Chain]) -> Thread {
 /// distinct start angles are the starts (a pass on a stray helix is the
 /// cross-thread check's to report, [`helix::check`]). Starts are numbered
 /// from the first chain's, by angle.
-fn starts_of(cuts: &[Chain]) -> (Vec<usize>, usize) {
+fn starts_of(cuts: &[&Chain]) -> (Vec<usize>, usize) {
     let phase = |c: &Chain| {
         let s = c.segs[0];
         helix::phase(c.angle, s.long_of(s.from), s.long_of(s.to), 0.0, c.lead)
     };
-    let phases: Vec<f64> = cuts.iter().map(phase).collect();
+    let phases: Vec<f64> = cuts.iter().map(|c| phase(c)).collect();
     // (phase from the first chain's, passes, the start angle of its first chain)
     let mut helices: Vec<(f64, usize, f64)> = Vec::new();
     let mut of = Vec::with_capacity(cuts.len());
@@ -533,7 +526,7 @@ const MAX_EVEN_STARTS: usize = 360;
 /// Which way the depth grows along the short axis: from the passes'
 /// progression, else from the approach of the first cut, else from its
 /// run-out (which leaves the work), else outward-in (external thread).
-fn depth_direction(cuts: &[Chain], main: &Seg) -> f64 {
+fn depth_direction(cuts: &[&Chain], main: &Seg) -> f64 {
     let s0 = main.short_of(cuts[0].segs[0].from);
     for c in &cuts[1..] {
         let d = main.short_of(c.segs[0].from) - s0;
