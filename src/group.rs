@@ -67,43 +67,81 @@ type Infeed1 = Option<(u32, Option<usize>)>;
 
 /// The chains of the thread being grouped, in chunks shared between the
 /// reading and its snapshots: a snapshot (every few hundred blocks of an
-/// incremental plan) copies the chunks' pointers, not the chains, and a
-/// push copies at most the last chunk. A thread of 50,000 passes cut block
-/// by block so costs its snapshots little, where copying every chain at
-/// every snapshot grew with the square of the passes.
+/// incremental plan) copies the chunks' pointers, not the chains. A chunk
+/// shared with a snapshot is never copied whole: a push after the snapshot
+/// begins a new chunk, and a change to the last chain copies that chain
+/// alone into a chunk of its own. Each chunk is seen to a length (a
+/// snapshot's chunk may hold chains pushed after it; they are not its).
+/// A thread of 50,000 passes cut block by block so costs its snapshots
+/// little, where copying every chain at every snapshot grew with the square
+/// of the passes, and copying the last chunk after each snapshot doubled the
+/// chains kept.
 #[derive(Clone, Debug, Default)]
 struct Cuts {
-    chunks: Vec<Rc<Vec<Chain>>>,
+    /// The chunks and how many of each chunk's chains are this list's.
+    chunks: Vec<(Rc<Vec<Chain>>, usize)>,
     len: usize,
 }
 
 /// Chains per chunk.
 const CHUNK: usize = 64;
 
+/// Whether `c` is this list's alone (no snapshot holds it).
+fn unshared<T>(c: &Rc<T>) -> bool {
+    Rc::strong_count(c) == 1 && Rc::weak_count(c) == 0
+}
+
 impl Cuts {
     fn push(&mut self, c: Chain) {
         match self.chunks.last_mut() {
-            Some(last) if last.len() < CHUNK => Rc::make_mut(last).push(c),
-            _ => self.chunks.push(Rc::new(vec![c])),
+            // A chunk of this list alone, with room (chains past its view were a dropped snapshot's).
+            Some((last, n)) if *n < CHUNK && unshared(last) => {
+                let v = Rc::get_mut(last).expect("unshared");
+                v.truncate(*n);
+                v.push(c);
+                *n += 1;
+            }
+            _ => self.chunks.push((Rc::new(vec![c]), 1)),
         }
         self.len += 1;
     }
 
     fn last(&self) -> Option<&Chain> {
-        self.chunks.last().and_then(|c| c.last())
+        self.chunks.last().map(|(c, n)| &c[n - 1])
     }
 
     fn last_mut(&mut self) -> Option<&mut Chain> {
-        self.chunks.last_mut().and_then(|c| Rc::make_mut(c).last_mut())
+        let (last, n) = self.chunks.last_mut()?;
+        if !unshared(last) {
+            // Shared with a snapshot: the last chain alone is copied, into a chunk of its own.
+            let c = last[*n - 1].clone();
+            *n -= 1;
+            if *n == 0 {
+                self.chunks.pop();
+            }
+            self.chunks.push((Rc::new(vec![c]), 1));
+        }
+        let (last, n) = self.chunks.last_mut()?;
+        let v = Rc::get_mut(last).expect("unshared");
+        // Chains past the view were a dropped snapshot's: not this list's.
+        v.truncate(*n);
+        v.last_mut()
     }
 
     fn iter(&self) -> impl Iterator<Item = &Chain> {
-        self.chunks.iter().flat_map(|c| c.iter())
+        self.chunks.iter().flat_map(|(c, n)| c[..*n].iter())
     }
 
     /// Changes every chain (a chunk shared with a snapshot is copied first).
     fn each_mut(&mut self, mut f: impl FnMut(&mut Chain)) {
-        self.chunks.iter_mut().for_each(|c| Rc::make_mut(c).iter_mut().for_each(&mut f));
+        for (c, n) in &mut self.chunks {
+            if !unshared(c) {
+                *c = Rc::new(c[..*n].to_vec());
+            }
+            let v = Rc::get_mut(c).expect("unshared");
+            v.truncate(*n);
+            v.iter_mut().for_each(&mut f);
+        }
     }
 }
 
@@ -545,3 +583,6 @@ fn depth_direction(cuts: &[&Chain], main: &Seg) -> f64 {
     }
     -1.0
 }
+
+#[cfg(test)]
+mod tests;
