@@ -43,6 +43,7 @@ fn firsts(c: &Cuts) -> Vec<usize> {
 fn a_snapshot_keeps_its_chains_and_shares_them() {
     let mut live: Cuts = (0..10).map(chain).collect();
     let snapshot = live.clone();
+    assert!(snapshot == live);
     // A push after the snapshot begins a chunk of its own.
     live.push(chain(10));
     assert_eq!(live.chunks.len(), 2);
@@ -56,6 +57,11 @@ fn a_snapshot_keeps_its_chains_and_shares_them() {
     let second = live.clone();
     live.last_mut().expect("a chain").first_move = 200;
     assert_eq!(firsts(&second), [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 100]);
+    // The same chunks but the last: equal as far as the chains are.
+    assert!(second != live);
+    live.last_mut().expect("a chain").first_move = 100;
+    assert!(second == live);
+    live.last_mut().expect("a chain").first_move = 200;
     assert_eq!(firsts(&live), [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 200]);
     assert!(Rc::ptr_eq(&live.chunks[0].0, &snapshot.chunks[0].0));
     assert_eq!(live.chunks.last().map(|(c, n)| (c.len(), *n)), Some((1, 1)));
