@@ -121,7 +121,7 @@ fn main() {
     for (name, mb) in [("mixed", 1usize), ("mixed", 20), ("thread-dense", 1), ("g01", 10)] {
         let text = generate(name, mb);
         let _ = std::fs::write(out_dir.join(format!("{name}-{mb}mb.nc")), &text);
-        let runs = if mb == 1 { 20 } else { 3 };
+        let runs = if mb == 1 { 20 } else { 7 };
         let mut best = f64::INFINITY;
         let mut summary = (0, 0, 0);
         for _ in 0..runs {

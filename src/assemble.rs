@@ -54,13 +54,9 @@ impl Assembler {
         let limit = s.int(P::LimitMoves).max(1) as usize;
         // About one motion per 8 bytes of a typical program; capped by the move limit.
         let cap = (bytes / 8).min(limit).min(1 << 24);
-        Assembler {
-            moves: Vec::with_capacity(cap),
-            threads: Vec::new(),
-            group: Grouper::default(),
-            limit,
-            stopped: false,
-        }
+        let moves = Vec::with_capacity(cap);
+        crate::huge::advise(&moves);
+        Assembler { moves, threads: Vec::new(), group: Grouper::default(), limit, stopped: false }
     }
 
     /// Whether the move limit stopped the plan.

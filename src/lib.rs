@@ -43,6 +43,7 @@ pub mod group;
 pub mod hash;
 pub mod helix;
 pub mod hint;
+mod huge;
 pub mod insert;
 pub mod interp;
 pub mod lexer;
