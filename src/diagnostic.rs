@@ -122,6 +122,12 @@ pub struct Diagnostic {
     /// led here, innermost first (the call chain).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub via: Vec<u32>,
+    /// How many times the program raised it: a loop or a subprogram run
+    /// again says the same at the same place after the same calls, and the
+    /// list keeps one of them (1 for a diagnostic raised once; serialised
+    /// only when more).
+    #[serde(skip_serializing_if = "is_once")]
+    pub repeats: u32,
     /// The key of the message, worked out once when the diagnostic is made
     /// (see [`Diagnostic::message_key`]).
     #[serde(skip)]
@@ -373,11 +379,55 @@ fn finish_items<'a>(
             end_column: end.column,
             span,
             via: via.map_or_else(Vec::new, |v| v.to_vec()),
+            repeats: 1,
             key,
         });
     }
+    collapse(&mut out);
     crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
     out
+}
+
+/// Whether a diagnostic was raised once (its `repeats` is not serialised).
+fn is_once(n: &u32) -> bool {
+    *n == 1
+}
+
+/// Keeps the first of each diagnostic said again (the same message at the
+/// same place after the same calls), counting them all in its `repeats`: a
+/// loop that runs a bad block fifty times lists it once, not fifty times.
+fn collapse(out: &mut Vec<Diagnostic>) {
+    out.iter_mut().for_each(|d| d.repeats = 1);
+    if out.len() < 2 {
+        return;
+    }
+    use std::hash::Hasher;
+    let mut first: std::collections::HashMap<(u64, u32, u32, u64), usize, crate::hash::BuildKeyHasher> =
+        std::collections::HashMap::default();
+    let mut again = vec![false; out.len()];
+    for i in 0..out.len() {
+        let d = &out[i];
+        let mut via = crate::hash::KeyHasher::default();
+        d.via.iter().for_each(|&l| via.write_u32(l));
+        match first.entry((d.key, d.span.start, d.span.end, via.finish())) {
+            std::collections::hash_map::Entry::Vacant(e) => {
+                e.insert(i);
+            }
+            std::collections::hash_map::Entry::Occupied(e) => {
+                let j = *e.get();
+                let (a, b) = (&out[j], d);
+                if a.code == b.code && a.via == b.via && a.message == b.message {
+                    out[j].repeats = out[j].repeats.saturating_add(1);
+                    again[i] = true;
+                }
+            }
+        }
+    }
+    let mut i = 0;
+    out.retain(|_| {
+        i += 1;
+        !again[i - 1]
+    });
 }
 
 /// The English texts of earlier diagnostics, found by their message

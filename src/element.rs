@@ -306,13 +306,14 @@ fn diagnostics_list(diags: &[Diagnostic], lang: Lang) -> String {
     for d in diags.iter().take(LISTED) {
         let _ = write!(
             html,
-            "<li class=\"{2}\" data-line=\"{0}\"><b>{0}:{1} {3}</b> <code>[{4}]</code> {5}</li>",
+            "<li class=\"{2}\" data-line=\"{0}\"><b>{0}:{1} {3}</b> <code>[{4}]</code> {5}{6}</li>",
             d.line,
             d.column,
             d.severity.name(),
             d.severity.word().text(lang),
             escape(&d.code.to_string()),
-            escape(&d.render(lang))
+            escape(&d.render(lang)),
+            repeats(d, lang)
         );
     }
     if diags.len() > LISTED {
@@ -320,6 +321,15 @@ fn diagnostics_list(diags: &[Diagnostic], lang: Lang) -> String {
         let _ = write!(html, "<li>{}</li>", escape(&more));
     }
     html + "</ul>"
+}
+
+/// How many times a diagnostic raised more than once was raised, as the
+/// element's list says it (` <i>raised 50 times</i>`); empty for one.
+fn repeats(d: &Diagnostic, lang: Lang) -> String {
+    if d.repeats < 2 {
+        return String::new();
+    }
+    format!(" <i>{}</i>", escape(&w::RAISED_TIMES.render(&crate::args![n = d.repeats], lang)))
 }
 
 /// The element's opening tag with the options as attributes.

@@ -36,39 +36,3 @@ pub(crate) fn advise<T>(v: &Vec<T>) {
     #[cfg(not(target_os = "linux"))]
     let _ = v;
 }
-
-#[cfg(all(test, target_os = "linux"))]
-mod tests {
-    /// The `VmFlags` of the mapping holding `addr` (from `/proc/self/smaps`).
-    fn flags_at(addr: usize) -> Option<String> {
-        let smaps = std::fs::read_to_string("/proc/self/smaps").ok()?;
-        let mut inside = false;
-        for line in smaps.lines() {
-            let head = line.split_whitespace().next().unwrap_or("");
-            if let Some((a, b)) = head.split_once('-')
-                && let (Ok(a), Ok(b)) = (usize::from_str_radix(a, 16), usize::from_str_radix(b, 16))
-            {
-                inside = (a..b).contains(&addr);
-            } else if inside && let Some(f) = line.strip_prefix("VmFlags:") {
-                return Some(f.to_string());
-            }
-        }
-        None
-    }
-
-    /// A large program's motion buffer is advised for huge pages (`hg` in
-    /// the kernel's flags of its mapping, proc(5)); a small one's is not.
-    #[test]
-    fn a_large_plans_motions_ask_for_huge_pages() {
-        if !std::path::Path::new("/sys/kernel/mm/transparent_hugepage/enabled").exists() {
-            return; // a kernel without transparent huge pages: nothing to ask
-        }
-        let s = crate::Settings::new(crate::Dialect::Gsk980tdc);
-        let large = crate::assemble::Assembler::new(&s, 10 << 20);
-        let flags = flags_at(large.moves.as_ptr() as usize + (1 << 20)).expect("the buffer's mapping");
-        assert!(flags.split_whitespace().any(|f| f == "hg"), "{flags}");
-        let small = crate::assemble::Assembler::new(&s, 1 << 10);
-        let flags = flags_at(small.moves.as_ptr() as usize).expect("the buffer's mapping");
-        assert!(!flags.split_whitespace().any(|f| f == "hg"), "{flags}");
-    }
-}

@@ -164,3 +164,15 @@ fn a_long_table_is_cut_and_says_how_much_more() {
     assert!(r.html.contains("<td>200</td><td>1</td><td>47.104</td>"), "the 200th pass at X47.9 − 199 × 0.004");
     assert!(r.html.contains(">… 50 more passes: point at the diagram to list them all</td></tr></tbody>"));
 }
+
+#[test]
+fn an_alarm_raised_again_in_a_loop_is_listed_once_with_the_count() {
+    // A Fanuc WHILE loop runs a G01 with a Q word three times: one row, as
+    // the element's script writes it (`_renderDiagnostics`).
+    let o = Options { dialect: Dialect::Fanuc0i, ..Options::default() };
+    let program = "G00 X40. Z5.\n#1=0\nWHILE[#1LT3]DO1\nG01 X40. Q3 F0.2\n#1=#1+1\nEND1\n";
+    let r = render(program, &o, 748.0);
+    let rows = r.html.matches("[unexpected-word]").count();
+    assert_eq!(rows, 1, "{}", r.html);
+    assert!(r.html.contains("G01 does not take Q3 <i>raised 3 times</i></li>"), "{}", r.html);
+}

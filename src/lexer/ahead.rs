@@ -219,14 +219,26 @@ mod tests {
         let p = both(&fanuc, &s);
         let passes: usize = p.threads.iter().map(|t| t.passes.len()).sum();
         assert_eq!(passes, 6);
-        // Seven in the main program's lines, one in the subprogram's (said at each call).
-        assert_eq!(count(&p, "unexpected-character"), 2 * (7 + 3));
+        // Seven in the main program's lines, one in the subprogram's (said at
+        // each call): eight rows, the main program's raised twice and the
+        // subprogram's six times (after the same call).
+        assert_eq!(count(&p, "unexpected-character"), 7 + 1);
+        let raised: u32 = p.with_code(crate::Code::UnexpectedCharacter).map(|d| d.repeats).sum();
+        assert_eq!(raised, 2 * (7 + 3));
         s.set(P::LimitDiagnostics, 5.0);
         let p = both(&fanuc, &s);
-        assert_eq!((p.diagnostics.len(), count(&p, "more-diagnostics")), (6, 1));
+        // The first five raised: the subprogram's three times at its first
+        // call, then two of line 7's; the rest counted in a last note.
+        let rows: Vec<_> = p.diagnostics.iter().map(|d| (d.line, d.code.as_str(), d.repeats)).collect();
+        let want = [(7, "full-width", 1), (7, "more-diagnostics", 1), (7, "unexpected-character", 1)];
+        assert_eq!(rows[..3], want, "{rows:?}");
+        assert_eq!(rows[3], (632, "unexpected-character", 3), "{rows:?}");
         let gsk = fanuc.replace("WHILE[#1LT2]DO1\n", "").replace("#1=#1+1\nEND1\nGOTO 50\n", "");
         let p = both(&gsk, &Settings::new(Dialect::Gsk980tdc));
-        assert_eq!(count(&p, "unexpected-character"), 7 + 3);
+        // Once through: the subprogram's alarm raised at its three calls, one row.
+        assert_eq!(count(&p, "unexpected-character"), 7 + 1);
+        let raised: u32 = p.with_code(crate::Code::UnexpectedCharacter).map(|d| d.repeats).sum();
+        assert_eq!(raised, 7 + 3);
         let mut lcnc = String::from(
             "o<pass> sub\nG0 X50\nX47.1 Z5\nG33 Z-20 K2\nG0 X55\nZ5\no<pass> endsub\nS500 M3\n#1=0\no1 while [#1 LT 2]\n",
         );

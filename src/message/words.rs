@@ -80,4 +80,5 @@ phrases! {
     DIAGNOSTICS_HEADING: "diagnostics:", "诊断：";
     CALLED_FROM: "called from line", "调用自第";
     CALLED_FROM_AFTER: "", "行";
+    RAISED_TIMES: "raised {n} times", "出现 {n} 次";
 }

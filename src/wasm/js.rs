@@ -71,6 +71,9 @@ pub struct EditorDiagnostic<'a> {
     /// Inside a subprogram or macro: the lines of the calls that led here, innermost first.
     #[serde(skip_serializing_if = "<[u32]>::is_empty")]
     via: &'a [u32],
+    /// How many times the program raised it, when more than once.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    repeats: Option<u32>,
     /// A `dialect-hint`: the dialect the program reads better as (for a switch).
     #[serde(skip_serializing_if = "Option::is_none")]
     switch_to: Option<&'static str>,
@@ -110,6 +113,7 @@ pub fn editor_diagnostics_of<'a>(
             from: u[0],
             to: u[1],
             via: &d.via,
+            repeats: (d.repeats > 1).then_some(d.repeats),
             switch_to: hinted(d).map(crate::Dialect::name),
             switch_title: hinted(d).map(crate::Dialect::title),
         })

@@ -26,6 +26,7 @@ pub fn entry_keys(plan: &Plan) -> Vec<u64> {
             }
             d.via.iter().for_each(|&l| h.write_u32(l));
             h.write_usize(d.via.len());
+            h.write_u32(d.repeats);
             h.finish()
         })
         .collect()

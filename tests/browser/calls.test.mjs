@@ -8,7 +8,9 @@
 // - hovering a pass row marks the subprogram's lines in the editor and the
 //   calling line in the call colour;
 // - the diagnostic inside the second subprogram names its line there and
-//   the call chain ("called from line 5"), in English and in Chinese.
+//   the call chain ("called from line 5"), in English and in Chinese;
+// - a macro loop that runs a bad block fifty times lists its alarm once,
+//   "raised 50 times" (出现 50 次 in Chinese).
 // Screenshots go to tests/browser/screenshots/calls-*.png.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
@@ -86,6 +88,21 @@ try {
   const zh = (await page.locator('#diagnostics li .via').first().textContent().catch(() => '')) || '';
   check('in Chinese: 调用自第 5 行', zh === '调用自第 5 行', zh);
   await page.locator('#diagnostics li', { hasText: 'no-decimal-point' }).first().screenshot({ path: path.join(shots, 'calls-diagnostics-zh.png') });
+  await page.click('#lang');
+
+  // A WHILE loop runs a G01 with a Q word fifty times: one row with the count.
+  const loop = ['O0002', 'G99 S500 M03', 'G00 X40. Z5.', '#1=0', 'WHILE[#1LT50]DO1', 'G01 W-1. F0.2', 'G01 X40. Q3', '#1=#1+1', 'END1', 'M30', ''].join('\n');
+  await page.goto(url + fragment({ dialect: 'fanuc0i', program: loop }));
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30_000 });
+  const alarm = page.locator('#diagnostics li', { hasText: 'unexpected-word' });
+  await alarm.first().waitFor({ timeout: 10_000 }).catch(() => {});
+  const alarms = await alarm.allTextContents();
+  check('the loop\'s alarm is one row at 7:10, raised 50 times', alarms.length === 1 && alarms[0].startsWith('7:10') && alarms[0].includes('raised 50 times'), JSON.stringify(alarms));
+  await alarm.first().screenshot({ path: path.join(shots, 'calls-repeats-en.png') });
+  await page.click('#lang');
+  await page.waitForFunction(() => (document.querySelector('#diagnostics li .repeats')?.textContent || '') === '出现 50 次', null, { timeout: 10_000 }).catch(() => {});
+  const times = (await page.locator('#diagnostics li .repeats').first().textContent().catch(() => '')) || '';
+  check('in Chinese: 出现 50 次', times === '出现 50 次', times);
   await page.click('#lang');
   check('no console or page errors', problems.length === 0, JSON.stringify(problems));
 } catch (e) {

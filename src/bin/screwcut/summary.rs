@@ -61,6 +61,9 @@ pub fn summary(plan: &Plan, file: &str, lang: Lang) -> String {
                 let (from, after) = (w::CALLED_FROM.text(lang), w::CALLED_FROM_AFTER.text(lang));
                 let _ = write!(out, " ({from} {}{after})", lines.join(" ← "));
             }
+            if d.repeats > 1 {
+                let _ = write!(out, " ({})", say(&w::RAISED_TIMES, args![n = d.repeats]));
+            }
             out.push('\n');
         }
     }

@@ -504,7 +504,7 @@ export class ScrewcutPreview extends HTMLElement {
     this._diagList = list || [];
     const problems = this.problems.map((p) => `<li class="warning problem" data-attribute="${esc(p.attribute)}"><b>${esc(p.attribute)}</b> ${esc(p.message)}</li>`);
     const shown = this._diagList.filter((d) => d.severity !== 'info');
-    const items = shown.slice(0, MAX_LISTED).map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}</li>`);
+    const items = shown.slice(0, MAX_LISTED).map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}${d.repeats > 1 ? ` <i>${esc(this._t('raised_times', { n: d.repeats }))}</i>` : ''}</li>`);
     if (shown.length > MAX_LISTED) items.push(`<li>${esc(this._t('more', { n: shown.length - MAX_LISTED }))}</li>`);
     const html = problems.concat(items).join('');
     // Until the live plan, the alarms and warnings listed inside the element (`screwcut embed`'s).

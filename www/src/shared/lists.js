@@ -124,7 +124,7 @@ export function passLines(c, i) {
 
 /** One diagnostic as a list item (`i` its index in the full list). */
 export function diagnosticRow(d, i, t, hot) {
-  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}${d.via ? `<span class="via">${esc(t('called_from', { lines: d.via.join(' ← ') }))}</span>` : ''}${d.switch_to ? ` <button type="button" class="switch" data-dialect="${esc(d.switch_to)}" data-title="${esc(d.switch_title)}">${esc(t('switch_to', { title: d.switch_title }))}</button>` : ''}</span></li>`;
+  return `<li data-i="${i}" class="${d.severity}${hot ? ' hot' : ''}" tabindex="-1"><span class="pos">${d.line}:${d.column}</span><span class="sev">${esc(t(d.severity))}</span><span><span class="code">[${esc(d.code)}]</span> ${esc(d.message)}${d.via ? `<span class="via">${esc(t('called_from', { lines: d.via.join(' ← ') }))}</span>` : ''}${d.repeats > 1 ? `<span class="repeats">${esc(t('raised_times', { n: d.repeats }))}</span>` : ''}${d.switch_to ? ` <button type="button" class="switch" data-dialect="${esc(d.switch_to)}" data-title="${esc(d.switch_title)}">${esc(t('switch_to', { title: d.switch_title }))}</button>` : ''}</span></li>`;
 }
 
 /** The diagnostics' rows last written, by what they show (`diagnosticRows`). */
@@ -139,7 +139,7 @@ export function diagnosticRows(shown, t, lang) {
   const before = rowsByContent;
   rowsByContent = new Map();
   return shown.map(([d, i]) => {
-    const key = `${i}|${lang}|${d.severity}|${d.line}:${d.column}|${d.code}|${d.message}|${d.via || ''}|${d.switch_to || ''}|${d.switch_title || ''}`;
+    const key = `${i}|${lang}|${d.severity}|${d.line}:${d.column}|${d.code}|${d.message}|${d.via || ''}|${d.repeats || 1}|${d.switch_to || ''}|${d.switch_title || ''}`;
     const html = before.get(key) ?? diagnosticRow(d, i, t, false);
     rowsByContent.set(key, html);
     return html;
