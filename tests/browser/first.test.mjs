@@ -108,6 +108,9 @@ try {
     check('… the side drawing has the passes’ cuts drawn (the cut pen)', sides.includes('stroke="#2563eb"'), sides.slice(0, 120));
     const ids = await page.evaluate(() => [...document.querySelectorAll('.first [id]')].map((e) => e.id));
     check('… the drawings’ ids are unique in the page', ids.length >= 4 && new Set(ids).size === ids.length, ids.join(' '));
+    // Nothing is counted before a plan: the diagnostics' counts are empty, not 0 (the example has two notes).
+    const counts = await page.evaluate(() => [...document.querySelectorAll('#sev-filter .n')].map((n) => n.textContent));
+    check('… the diagnostics’ counts say nothing before the plan (not “0”)', counts.length === 3 && counts.every((c) => c === ''), JSON.stringify(counts));
     await page.screenshot({ path: path.join(shots, 'first-static.png') });
     // On a phone the side section is the one laid out for its canvas, not the wide one shrunk.
     await page.setViewportSize({ width: 390, height: 844 });
@@ -123,6 +126,8 @@ try {
     await page.waitForTimeout(300);
     const after = await shown(page);
     check('… once the app has drawn, its parts are gone and the canvases show', !after.first && after.parts === 0 && after.drawings.length === 0, JSON.stringify(after));
+    const live = await page.evaluate(() => [...document.querySelectorAll('#sev-filter .n')].map((n) => n.textContent));
+    check('… and the app counts the plan’s diagnostics: 0 alarms, 0 warnings, 2 notes', JSON.stringify(live) === '["0","0","2"]', JSON.stringify(live));
     const editor = await page.evaluate(() => window.__screwcut.text());
     check('… and the editor holds the same program', editor === O1006, JSON.stringify(editor?.slice(0, 60)));
     const enApp = await words(page);
