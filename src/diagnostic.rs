@@ -8,6 +8,9 @@ use serde::Serialize;
 use crate::message::{Args, Lang, Message, Template};
 use crate::span::{LineIndex, Span};
 
+mod seen;
+use seen::Seen;
+
 pub use crate::code::{Code, Severity};
 
 impl Severity {
@@ -57,6 +60,8 @@ pub struct Found<'a> {
     room: usize,
     dropped: usize,
     first_dropped: Option<Span>,
+    /// The distinct items, once past the room (as [`Diagnostics`] keeps them).
+    seen: Option<Seen>,
 }
 
 impl<'a> Found<'a> {
@@ -65,9 +70,13 @@ impl<'a> Found<'a> {
         Found { room, ..Found::default() }
     }
 
-    /// Keeps `item` while there is room, else counts it dropped.
+    /// Keeps `item` while there is room, else counts it dropped; the room
+    /// is for distinct diagnostics, as a collector's ([`Diagnostics`]).
     pub fn push(&mut self, item: Cow<'a, Item>) {
         if self.items.len() < self.room {
+            self.items.push(item);
+            self.seen = None;
+        } else if seen::keeps(&mut self.seen, &self.items, self.room, &item) {
             self.items.push(item);
         } else {
             self.dropped += 1;
@@ -158,12 +167,15 @@ pub struct Diagnostics {
     dropped: usize,
     first_dropped: Option<Span>,
     via: Via,
+    /// The distinct items among `items`, once past the limit (built when
+    /// first needed; forgotten when the items change but by a push).
+    seen: Option<Seen>,
 }
 
 impl Diagnostics {
     /// A collector that keeps at most `limit` diagnostics (the rest are counted).
     pub fn with_limit(limit: usize) -> Diagnostics {
-        Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None, via: None }
+        Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None, via: None, seen: None }
     }
 
     /// Sets the call chain the next diagnostics are found in.
@@ -187,14 +199,31 @@ impl Diagnostics {
     }
 
     /// Keeps the item `make` gives (from the current call chain) while
-    /// there is room; else counts one dropped at `span`, making nothing.
+    /// there is room; else counts one dropped at `span`. The limit counts
+    /// distinct diagnostics: past it, one said again (the same message at
+    /// the same place after the same calls: a loop run again) is still
+    /// kept, up to [`seen::REPEATS`] times the limit in all, so a loop's
+    /// repeats neither crowd out what comes after it nor count as dropped.
     fn keep(&mut self, span: Span, make: impl FnOnce(&Via) -> Item) {
         if self.items.len() < self.limit {
-            let item = make(&self.via);
-            self.items.push(item);
-        } else {
-            self.drop_one(span);
+            self.items.push(make(&self.via));
+            self.seen = None;
+            return;
         }
+        if self.items.len() < self.limit.saturating_mul(seen::REPEATS) {
+            let item = make(&self.via);
+            if seen::keeps(&mut self.seen, &self.items, self.limit, &item) {
+                self.items.push(item);
+                return;
+            }
+        }
+        self.drop_one(span);
+    }
+
+    /// How many more distinct diagnostics there is room for.
+    pub fn room(&mut self) -> usize {
+        let seen = self.seen.get_or_insert_with(|| Seen::of(&self.items));
+        self.limit.saturating_sub(seen.distinct())
     }
 
     fn drop_one(&mut self, span: Span) {
@@ -230,6 +259,7 @@ impl Diagnostics {
     /// Cuts the list back to `len` kept and `dropped` dropped diagnostics.
     pub fn truncate(&mut self, len: usize, dropped: usize, first_dropped: Option<Span>) {
         self.items.truncate(len);
+        self.seen = None;
         self.dropped = dropped;
         self.first_dropped = first_dropped;
     }
@@ -242,10 +272,12 @@ impl Diagnostics {
     /// Moves every diagnostic kept so far to the end of `out` (this collector keeps its room).
     pub fn move_into(&mut self, out: &mut Vec<Item>) {
         out.append(&mut self.items);
+        self.seen = None;
     }
 
     /// Takes the diagnostics from the `len`-th on out of the collector (none were dropped).
     pub fn split_off(&mut self, len: usize) -> Vec<Item> {
+        self.seen = None;
         self.items.split_off(len.min(self.items.len()))
     }
 
@@ -260,6 +292,7 @@ impl Diagnostics {
     /// Moves the kept diagnostics' spans as an edit moved the text (the
     /// first dropped one's place is a snapshot's, moved with the snapshot).
     pub fn shift_spans(&mut self, s: crate::span::Shift) {
+        self.seen = None;
         for item in &mut self.items {
             item.1 = s.span(item.1);
         }
@@ -383,7 +416,7 @@ fn finish_items<'a>(
             key,
         });
     }
-    collapse(&mut out);
+    seen::collapse(&mut out);
     crate::order::sort_by_key(&mut out, |d| (d.span.start, std::cmp::Reverse(d.severity)));
     out
 }
@@ -391,43 +424,6 @@ fn finish_items<'a>(
 /// Whether a diagnostic was raised once (its `repeats` is not serialised).
 fn is_once(n: &u32) -> bool {
     *n == 1
-}
-
-/// Keeps the first of each diagnostic said again (the same message at the
-/// same place after the same calls), counting them all in its `repeats`: a
-/// loop that runs a bad block fifty times lists it once, not fifty times.
-fn collapse(out: &mut Vec<Diagnostic>) {
-    out.iter_mut().for_each(|d| d.repeats = 1);
-    if out.len() < 2 {
-        return;
-    }
-    use std::hash::Hasher;
-    let mut first: std::collections::HashMap<(u64, u32, u32, u64), usize, crate::hash::BuildKeyHasher> =
-        std::collections::HashMap::default();
-    let mut again = vec![false; out.len()];
-    for i in 0..out.len() {
-        let d = &out[i];
-        let mut via = crate::hash::KeyHasher::default();
-        d.via.iter().for_each(|&l| via.write_u32(l));
-        match first.entry((d.key, d.span.start, d.span.end, via.finish())) {
-            std::collections::hash_map::Entry::Vacant(e) => {
-                e.insert(i);
-            }
-            std::collections::hash_map::Entry::Occupied(e) => {
-                let j = *e.get();
-                let (a, b) = (&out[j], d);
-                if a.code == b.code && a.via == b.via && a.message == b.message {
-                    out[j].repeats = out[j].repeats.saturating_add(1);
-                    again[i] = true;
-                }
-            }
-        }
-    }
-    let mut i = 0;
-    out.retain(|_| {
-        i += 1;
-        !again[i - 1]
-    });
 }
 
 /// The English texts of earlier diagnostics, found by their message

@@ -568,18 +568,18 @@ pub(crate) fn finish_with<'a>(
     before: (Vec<Diagnostic>, Option<crate::diagnostic::TextEdit>),
     advice: impl FnOnce(&mut [Thread], &[Move], &dyn Fn(u32) -> Span, usize) -> Found<'a>,
 ) -> (Plan, Diagnostics) {
-    let Outputs { diags, moves, mut threads, inch } = out;
+    let Outputs { mut diags, moves, mut threads, inch } = out;
     let index = LineIndex::from_starts(text, starts);
     let spans = |line: u32| {
         let start = index.line_start(line);
         let end = text[start..].find(['\n', '\r']).map_or(text.len(), |e| start + e);
         Span::new(start, end)
     };
-    // The advice keeps only what the reading's collector has room for (the rest is counted).
-    let found = advice(&mut threads, &moves, &spans, diags.limit().saturating_sub(diags.len()));
-    // Across threads: a pass on another helix (recomputed every time, it is cheap),
-    // found after the reading: in no call.
-    let mut across = Diagnostics::with_limit(diags.limit().saturating_sub(diags.len() + found.len()));
+    // The advice keeps what the collector has room for (distinct ones: repeats take none).
+    let room = diags.room();
+    let found = advice(&mut threads, &moves, &spans, room);
+    // Across threads: a pass on another helix (recomputed, it is cheap), found after the reading.
+    let mut across = Diagnostics::with_limit(room.saturating_sub(found.len()));
     crate::helix::check(&threads, &moves, settings.get(P::GroupMaxInfeed), &spans, &mut across);
     let diagnostics = diags.finish_parts(found, across, text, &index, before);
     let time_s = crate::shop::total_time(&threads);

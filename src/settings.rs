@@ -319,8 +319,8 @@ params! {
         "Largest program accepted.",
         "程序最大字节数。");
     LimitDiagnostics: d("limits.diagnostics", ALL, Kind::Int, 1000.0, (1.0, 1.0e6), "diagnostics",
-        "Most diagnostics reported; the rest are counted.",
-        "最多报告的诊断数。");
+        "Most distinct diagnostics reported (one said again is counted up to 16 times this); the rest are counted.",
+        "最多报告的不同诊断数（同一诊断的重复最多计到此数的 16 倍）；其余的只计数。");
 }
 
 /// Definition of a text setting (a value that is not a number).

@@ -75,3 +75,32 @@ fn the_command_line_says_how_many_times() {
     let zh = run("zh");
     assert!(zh.contains("(出现 50 次)\n"), "{zh}");
 }
+
+/// A loop of `n` runs of a bad block, then one more alarm after it (a G01
+/// with a P word) on line 11.
+fn loop_then_alarm(n: u32) -> String {
+    loop_of(n).replace("END1\nM30\n", "END1\nG00 X50.\nG01 X40. P2\nM30\n")
+}
+
+#[test]
+fn a_loops_repeats_take_no_room_from_what_follows() {
+    // 2,000 runs of the alarm against the limit of 1,000 diagnostics: all
+    // counted in one row, and the alarm after the loop still listed.
+    let p = fanuc(&loop_then_alarm(2000));
+    let rows: Vec<_> = p.with_code(Code::UnexpectedWord).map(|d| (d.line, d.message.as_str(), d.repeats)).collect();
+    assert_eq!(rows, vec![(7, "G01 does not take Q3", 2000), (11, "G01 does not take P2", 1)]);
+    assert!(p.with_code(Code::MoreDiagnostics).next().is_none(), "{:#?}", p.diagnostics);
+    assert_eq!(p.moves.len(), 2000 + 1);
+}
+
+#[test]
+fn repeats_are_kept_to_sixteen_times_the_limit() {
+    // With room for 10 diagnostics, 160 runs of the alarm are kept (and
+    // counted); the other 340 are dropped and said to be (a last note),
+    // and so is the alarm after the loop.
+    let p = plan_with(&loop_then_alarm(500), screwcut::Dialect::Fanuc0i, &["limits.diagnostics=10"]);
+    let rows: Vec<_> = p.with_code(Code::UnexpectedWord).map(|d| (d.line, d.repeats)).collect();
+    assert_eq!(rows, vec![(7, 160)]);
+    let more = one(&p, Code::MoreDiagnostics);
+    assert!(more.message.contains("341"), "{}", more.message);
+}

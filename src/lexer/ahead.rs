@@ -227,12 +227,20 @@ mod tests {
         assert_eq!(raised, 2 * (7 + 3));
         s.set(P::LimitDiagnostics, 5.0);
         let p = both(&fanuc, &s);
-        // The first five raised: the subprogram's three times at its first
-        // call, then two of line 7's; the rest counted in a last note.
+        // Room for five distinct ones: the subprogram's (raised three times at
+        // its first call), then line 7's two, line 8's and line 106's first;
+        // the loop's second run raises each again (kept, counted), and the
+        // rest are dropped and said to be, from line 106 on.
         let rows: Vec<_> = p.diagnostics.iter().map(|d| (d.line, d.code.as_str(), d.repeats)).collect();
-        let want = [(7, "full-width", 1), (7, "more-diagnostics", 1), (7, "unexpected-character", 1)];
-        assert_eq!(rows[..3], want, "{rows:?}");
-        assert_eq!(rows[3], (632, "unexpected-character", 3), "{rows:?}");
+        let want = [
+            (7, "full-width", 2),
+            (7, "unexpected-character", 2),
+            (8, "missing-value", 2),
+            (106, "more-diagnostics", 1),
+            (106, "unexpected-character", 2),
+            (632, "unexpected-character", 6),
+        ];
+        assert_eq!(rows, want);
         let gsk = fanuc.replace("WHILE[#1LT2]DO1\n", "").replace("#1=#1+1\nEND1\nGOTO 50\n", "");
         let p = both(&gsk, &Settings::new(Dialect::Gsk980tdc));
         // Once through: the subprogram's alarm raised at its three calls, one row.
