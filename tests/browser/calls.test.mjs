@@ -10,7 +10,8 @@
 // - the diagnostic inside the second subprogram names its line there and
 //   the call chain ("called from line 5"), in English and in Chinese;
 // - a macro loop that runs a bad block fifty times lists its alarm once,
-//   "raised 50 times" (出现 50 次 in Chinese).
+//   "raised 50 times" (出现 50 次 in Chinese), and the editor's marker
+//   says it once, ×50.
 // Screenshots go to tests/browser/screenshots/calls-*.png.
 
 import { siteUrl, checker, guard, launch, finish, shots } from './harness.mjs';
@@ -99,6 +100,9 @@ try {
   const alarms = await alarm.allTextContents();
   check('the loop\'s alarm is one row at 7:10, raised 50 times', alarms.length === 1 && alarms[0].startsWith('7:10') && alarms[0].includes('raised 50 times'), JSON.stringify(alarms));
   await alarm.first().screenshot({ path: path.join(shots, 'calls-repeats-en.png') });
+  await page.waitForFunction(() => (document.querySelector('.cm-diag-marker-error')?.title || '').includes('×'), null, { timeout: 10_000 }).catch(() => {});
+  const marker = await page.evaluate(() => document.querySelector('.cm-diag-marker-error')?.title || '');
+  check('… and the editor\'s gutter marker says it once, ×50', marker === 'G01 does not take Q3 ×50 (unexpected-word)', marker);
   await page.click('#lang');
   await page.waitForFunction(() => (document.querySelector('#diagnostics li .repeats')?.textContent || '') === '出现 50 次', null, { timeout: 10_000 }).catch(() => {});
   const times = (await page.locator('#diagnostics li .repeats').first().textContent().catch(() => '')) || '';

@@ -54,8 +54,8 @@ class LineMarker extends GutterMarker {
   }
 }
 
-/** One line of a message as shown: the text and its code. */
-const said = (d) => (d.code ? `${d.message} (${d.code})` : d.message);
+/** One line of a message as shown: the text, how many times it was raised (×50, when more than once) and its code. */
+const said = (d) => `${d.message}${d.repeats > 1 ? ` ×${d.repeats}` : ''}${d.code ? ` (${d.code})` : ''}`;
 
 /** The worst severity of `list`. */
 const worst = (list) => SEVERITY[Math.max(...list.map((d) => RANK[d.severity] ?? 0))];
