@@ -173,7 +173,8 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
-    /// A collector that keeps at most `limit` diagnostics (the rest are counted).
+    /// A collector that keeps at most `limit` distinct diagnostics (the
+    /// rest are counted; one said again past the limit is kept and counted).
     pub fn with_limit(limit: usize) -> Diagnostics {
         Diagnostics { items: Vec::new(), limit, dropped: 0, first_dropped: None, via: None, seen: None }
     }

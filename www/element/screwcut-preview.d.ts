@@ -50,6 +50,8 @@ export interface ScrewcutDiagnostic {
   to: number;
   /** Inside a subprogram or macro: the lines of the calls that led here, innermost first. */
   via?: number[];
+  /** How many times the program raised it here after these calls (a loop run again), when more than once. */
+  repeats?: number;
 }
 
 /** One pass of the chosen thread (X as a diameter). */
