@@ -8,25 +8,20 @@
 //     ...
 //   </screwcut-preview>
 //
-// Attributes: `dialect` (gsk980tdc, fanuc0i, renhe), `view` (any of side,
-// tooth, starts, table), `height` (px per drawing), `thread` (1-based),
-// `settings` ("NAME=VALUE; ..."), `src` (load the program from a URL instead
-// of the text content), `editable` (a plain editor that re-plans as you
-// type; without it the program is listed read-only, unless `hide-code`), `app` (the full app the "Open in editor" link goes to; default: a
-// <meta name="screwcut-app" content="..."> of the page, else the app next to
-// this script; only http(s) and relative URLs), `lang` (en, zh). `src` is
-// fetched without credentials, at most 1 MiB, within 15 s. Whatever the
-// element cannot use (an unknown dialect, a settings entry the planner
-// refuses, an app URL that is not http(s)) is listed under the drawing and
-// in `problems`. Every element on a page shares one wasm
-// instance, loaded when the first element comes into view, and plans in a
-// session of its own; each element plans and draws when it is scrolled near.
-// An element whose static drawings (`<svg>` inside, as mdbook-screwcut
-// writes them) show each of its views waits for the reader instead: it
-// loads the planner when pointed at, touched or focused (`live` makes it
-// start when scrolled near all the same). Properties: `program` (get/set),
-// `result` (the planner's last answer), `start()`. Event `screwcut-plan`
-// after every plan, with counts in `detail`.
+// Attributes: `dialect` (gsk980tdc, fanuc0i, renhe), `view` (any of side, tooth, starts, table),
+// `height` (px per drawing), `thread` (1-based), `settings` ("NAME=VALUE; ..."), `src` (load the
+// program from a URL instead of the text content), `editable` (a plain editor that re-plans as you
+// type; without it the program is listed read-only, unless `hide-code`), `app` (the full app the "Open
+// in editor" link goes to; default: a <meta name="screwcut-app" content="..."> of the page, else the
+// app next to this script; only http(s) and relative URLs), `lang` (en, zh). `src` is fetched without
+// credentials, at most 1 MiB, within 15 s. Whatever the element cannot use (an unknown dialect, a
+// settings entry the planner refuses, an app URL that is not http(s)) is listed under the drawing and
+// in `problems`. Every element on a page shares one wasm instance, loaded when the first element comes
+// into view, and plans in a session of its own; each element plans and draws when it is scrolled near.
+// An element whose static drawings (`<svg>` inside, as mdbook-screwcut writes them) show each of its
+// views waits for the reader instead: it loads the planner when pointed at, touched or focused (`live`
+// makes it start when scrolled near all the same). Properties: `program` (get/set), `result` (the
+// planner's last answer), `start()`. Event `screwcut-plan` after every plan, with counts in `detail`.
 
 import { HeldParts } from '../engine/parts.js';
 import { DEFAULT_DIALECT, jsonFragment, knownDialect } from '../shared/fragment.js';
@@ -504,7 +499,9 @@ export class ScrewcutPreview extends HTMLElement {
     this._diagList = list || [];
     const problems = this.problems.map((p) => `<li class="warning problem" data-attribute="${esc(p.attribute)}"><b>${esc(p.attribute)}</b> ${esc(p.message)}</li>`);
     const shown = this._diagList.filter((d) => d.severity !== 'info');
-    const items = shown.slice(0, MAX_LISTED).map((d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}${d.repeats > 1 ? ` <i>${esc(this._t('raised_times', { n: d.repeats }))}</i>` : ''}</li>`);
+    const times = (d) => (d.repeats > 1 ? ` <i>${esc(this._t('raised_times', { n: d.repeats }))}</i>` : '');
+    const row = (d) => `<li class="${d.severity}" data-line="${d.line}"><b>${d.line}:${d.column} ${esc(this._t(d.severity))}</b> <code>[${esc(d.code)}]</code> ${esc(d.message)}${times(d)}</li>`;
+    const items = shown.slice(0, MAX_LISTED).map(row);
     if (shown.length > MAX_LISTED) items.push(`<li>${esc(this._t('more', { n: shown.length - MAX_LISTED }))}</li>`);
     const html = problems.concat(items).join('');
     // Until the live plan, the alarms and warnings listed inside the element (`screwcut embed`'s).
