@@ -211,14 +211,12 @@ impl Diagnostics {
             self.seen = None;
             return;
         }
-        if self.items.len() < self.limit.saturating_mul(seen::REPEATS) {
-            let item = make(&self.via);
-            if seen::keeps(&mut self.seen, &self.items, self.limit, &item) {
-                self.items.push(item);
-                return;
-            }
+        let item = make(&self.via);
+        if seen::keeps(&mut self.seen, &self.items, self.limit, &item) {
+            self.items.push(item);
+        } else {
+            self.drop_one(span);
         }
-        self.drop_one(span);
     }
 
     /// How many more distinct diagnostics there is room for.

@@ -38,28 +38,10 @@ G00 X58.
 Z70.
 M99
 ";
-    let unrolled = "\
-O0003
-G97 S300 M03
-G00 X58. Z70.
-X47.1
-G32 Z13. F2.
-G00 X58.
-Z70.
-X46.5
-G32 Z13. F2.
-G00 X58.
-Z70.
-X45.9
-G32 Z13. F2.
-G00 X58.
-Z70.
-X60.
-G00 X100. Z100.
-M30
-";
+    // The three passes written out, then the move after G67.
+    let unrolled = UNROLLED.replace("G00 X100. Z100.", "X60.\nG00 X100. Z100.");
     let plan = fanuc(modal);
-    same_cut(&plan, &fanuc(unrolled));
+    same_cut(&plan, &fanuc(&unrolled));
     assert_eq!(plan.threads[0].passes.len(), 3);
     // Each pass was cut by the macro, called after the move on line 5, 6 and 7.
     let via: Vec<&[u32]> = plan.threads[0].passes.iter().map(|p| &p.via[..]).collect();
