@@ -5,7 +5,7 @@
 // forwarded as operations.
 
 import { bindCanvas } from '../view/input.js';
-import { afterTask } from './task.js';
+import { afterFrame } from './task.js';
 
 /** Whether this browser can draw the app in a worker. */
 export function canDrawInWorker() {
@@ -90,7 +90,7 @@ export async function startEngine({ wasmUrl, workerUrl, mode, onMessage }) {
   const engine = new Engine(
     glue,
     (m) => client.receive(m),
-    (f) => requestAnimationFrame(() => afterTask(f)),
+    afterFrame,
     { loadTools: toolsLoader(wasmUrl) },
   );
   client = new Client('page', (m) => queueMicrotask(() => engine.handle(m)), onMessage);

@@ -22,8 +22,8 @@ export class Engine {
    * @param afterCommit runs a function once the current frame is on screen
    * @param opts `{immediate, loadTools}`: `immediate` draws a plan's views
    *   at once rather than at the next animation frame (in a worker, whose
-   *   canvases show what was drawn when its task ends; pan and zoom still
-   *   draw at animation frames); `loadTools` resolves to the initialised
+   *   canvases then go on screen at that frame, before the page's lists;
+   *   pan and zoom still draw at animation frames); `loadTools` resolves to the initialised
    *   tools module (`toolsLoader`), called the first time a tool is used
    */
   constructor(core, post, afterCommit, opts = {}) {

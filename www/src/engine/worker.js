@@ -6,7 +6,7 @@
 
 import init, * as core from '../../pkg/screwcut.js';
 import { Engine, toolsLoader } from './engine.js';
-import { afterTask } from './task.js';
+import { afterFrame } from './task.js';
 
 let engine = null;
 const queue = [];
@@ -17,9 +17,9 @@ self.onmessage = async (e) => {
   if (m.type === 'init') {
     try {
       await init({ module_or_path: m.wasm });
-      // In a worker a drawing goes on screen when the task that drew it ends:
-      // what follows a drawing (the frame's report and its time) comes in the next task.
-      engine = new Engine(core, post, afterTask, { immediate: true, loadTools: toolsLoader(m.wasm) });
+      // A drawing goes on screen at the worker's next animation frame (task.js):
+      // what follows it (the frame's report and its time) comes after that frame.
+      engine = new Engine(core, post, afterFrame, { immediate: true, loadTools: toolsLoader(m.wasm) });
       post({ type: 'ready', dialects: core.dialects() });
       for (const q of queue.splice(0)) engine.handle(q);
     } catch (err) {
