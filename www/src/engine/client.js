@@ -87,12 +87,7 @@ export async function startEngine({ wasmUrl, workerUrl, mode, onMessage }) {
   const { glue, Engine, toolsLoader } = await import(new URL('page-engine.js', import.meta.url).href);
   await glue.default({ module_or_path: wasmUrl });
   let client = null;
-  const engine = new Engine(
-    glue,
-    (m) => client.receive(m),
-    afterFrame,
-    { loadTools: toolsLoader(wasmUrl) },
-  );
+  const engine = new Engine(glue, (m) => client.receive(m), afterFrame, { loadTools: toolsLoader(wasmUrl) });
   client = new Client('page', (m) => queueMicrotask(() => engine.handle(m)), onMessage);
   return { client, dialects: glue.dialects() };
 }
