@@ -139,7 +139,10 @@ function observe() {
   }).observe({ type: 'event', durationThreshold: 16, buffered: true });
   new PerformanceObserver((l) => self.__long.push(...l.getEntries().map((e) => ({ start: e.startTime, d: e.duration })))).observe({ type: 'longtask', buffered: true });
   // Next paint as a page sees it: a frame callback, then a task after that frame.
-  const afterPaint = (f) => requestAnimationFrame(() => {
+  // `k.frame`: the frame's time (the frame callback's argument); `k.callback`: when that callback ran.
+  const afterPaint = (f, k) => requestAnimationFrame((frame) => {
+    k.frame = frame;
+    k.callback = performance.now();
     const c = new MessageChannel();
     c.port1.onmessage = () => f(performance.now());
     c.port2.postMessage(0);
@@ -150,7 +153,7 @@ function observe() {
   addEventListener('keydown', (e) => {
     const k = { t: e.timeStamp, paint: NaN };
     self.__keys.push(k);
-    afterPaint((t) => (k.paint = t));
+    afterPaint((t) => (k.paint = t), k);
   }, true);
   // The app marks a drawing once its frame is committed (the worker's canvases are on screen when its task ends).
   const mark = performance.mark.bind(performance);
@@ -213,8 +216,9 @@ async function typeDigits(page, keys) {
  * paint and the first committed drawing that includes it (the app's mark). Prints
  * p50/p95 of both and their ratio; long tasks in the app while typing; of
  * the app's, its own next paint and its drawing apart (which one the figure
- * waited for); and the page alone: the app with its edits not planned
- * (`hold`), to its next paint, against the same floor.
+ * waited for); where the next paint goes in both (the frame's time, its
+ * callbacks, the task after it); and the page alone: the app with its edits
+ * not planned (`hold`), to its next paint, against the same floor.
  */
 async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const app = await openPlanned(text, dialect);
@@ -234,6 +238,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const held = [];
   const split = []; // the app's keystrokes: its own next paint and its drawing
   const long = [];
+  const phases = { bare: [], app: [] }; // each keystroke's frame, its callback and the task after it, from the key
   for (let r = 0; r < rounds; r++) {
     for (const [page, into] of [[bare, floor], [app, screen], [app, held]]) {
       await page.bringToFront();
@@ -244,6 +249,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
       if (into === held) await app.evaluate(() => (window.__screwcut.hold = false));
       const m = await page.evaluate((t0) => ({ keys: self.__keys.filter((k) => k.t > t0), drawn: self.__drawn, long: self.__long.filter((e) => e.start > t0) }), t0);
       for (const k of m.keys) {
+        if (into !== held) phases[page === bare ? 'bare' : 'app'].push({ frame: k.frame - k.t, callback: k.callback - k.t, paint: k.paint - k.t });
         if (page === bare || into === held) into.push(k.paint - k.t);
         else {
           const shown = Math.min(...m.drawn.filter((d) => d.input >= k.t).map((d) => d.shown));
@@ -272,6 +278,16 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const paint = q(split.map((x) => x.paint), 0.5);
   const drawn = q(split.map((x) => x.drawn), 0.5);
   console.log(`    … of which the app's own next paint p50 ${paint.toFixed(1)} ms, its drawing committed p50 ${drawn.toFixed(1)} ms; the drawing after the paint in ${later} of ${split.length}`);
+  // Where the page's paint goes: its frame's time after the key (when the frame began: the display's
+  // cadence), when the frame callbacks ran (later when the page's thread was busy), and the task after the frame.
+  const phase = (who, part) => q(phases[who].map((x) => x[part]), 0.5);
+  const show = (part) => `${phase('bare', part).toFixed(1)} / ${phase('app', part).toFixed(1)}`;
+  console.log(
+    `    … where the next paint goes, p50 from the key, bare editor / app: the frame begins ${show('frame')} ms, ` +
+      `its frame callbacks run ${show('callback')} ms, the task after the frame ${show('paint')} ms`,
+  );
+  fig(`${tag}_callback_gap_p50`, phase('app', 'callback') - phase('bare', 'callback'));
+  fig(`${tag}_after_callback_gap_p50`, phase('app', 'paint') - phase('app', 'callback') - (phase('bare', 'paint') - phase('bare', 'callback')));
   fig(`${tag}_apppaint_p50`, paint);
   fig(`${tag}_drawn_p50`, drawn);
   fig(`${tag}_drawn_later`, later / Math.max(1, split.length));
@@ -485,8 +501,8 @@ const steps = {
     await steps.v50();
   },
   // The two halves of `versus`, each alone (BENCH_ONLY=v5 or v50; not run when all steps run).
-  v5: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 8, keys: 10, text: program(5000), tag: 'v5', what: '5000 lines, in the first pass' }),
-  v50: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 6, keys: 10, text: program(50000), tag: 'v50', what: '50000 lines, in the first pass' }),
+  v5: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 12, keys: 10, text: program(5000), tag: 'v5', what: '5000 lines, in the first pass' }),
+  v50: () => versus({ dialect: 'gsk980tdc', line: 8, rounds: 8, keys: 10, text: program(50000), tag: 'v50', what: '50000 lines, in the first pass' }),
   l99,
   pasted,
   wasmRate,
