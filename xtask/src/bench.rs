@@ -153,6 +153,20 @@ const FIGURES: &[Figure] = &[
         unit: "of all",
     },
     Figure {
+        key: "v5_callback_gap_p50",
+        what: "… the app's frame callbacks run later than the bare editor's (its page thread busy when the frame begins), p50",
+        before: "—",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
+        key: "v5_after_callback_gap_p50",
+        what: "… and from them to the task after the frame, longer than the bare editor's (its frame and the tasks before), p50",
+        before: "—",
+        target: "—",
+        unit: "ms",
+    },
+    Figure {
         key: "k50_replan_p50",
         what: "50,000 lines: the worker's re-plan after a keystroke, p50",
         before: "10.6–16.7 (2026-11-26)",
