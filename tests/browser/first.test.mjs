@@ -111,8 +111,9 @@ try {
     // Nothing is counted before a plan: the diagnostics' counts are empty, not 0 (the example has two notes).
     const counts = await page.evaluate(() => [...document.querySelectorAll('#sev-filter .n')].map((n) => n.textContent));
     check('… the diagnostics’ counts say nothing before the plan (not “0”)', counts.length === 3 && counts.every((c) => c === ''), JSON.stringify(counts));
-    // Where the drawings and the lists are laid out: the app's own must not move them (the footer's summary, filled in by the app, included).
-    const places = () => page.evaluate(() => [...document.querySelectorAll('#views .view, #views .panel, #views aside, #code')].map((e) => [e.id || e.className, ...Object.values(e.getBoundingClientRect().toJSON()).slice(0, 4).map(Math.round)]));
+    // Where the header's controls, the drawings and the lists are laid out: the app's own must not move them
+    // (its lists in the header and the footer's summary, filled in by the app, included).
+    const places = () => page.evaluate(() => [...document.querySelectorAll('header select, header button, header summary, #views .view, #views .panel, #views aside, #code')].map((e) => [e.id || e.className, ...Object.values(e.getBoundingClientRect().toJSON()).slice(0, 4).map(Math.round)]));
     const placed = await places();
     await page.screenshot({ path: path.join(shots, 'first-static.png') });
     // On a phone the side section is the one laid out for its canvas, not the wide one shrunk.
@@ -130,7 +131,7 @@ try {
     const after = await shown(page);
     check('… once the app has drawn, its parts are gone and the canvases show', !after.first && after.parts === 0 && after.drawings.length === 0, JSON.stringify(after));
     const placedLive = await places();
-    check('… the views, the lists and the editor stay where the first visit laid them out', placed.length >= 6 && JSON.stringify(placed) === JSON.stringify(placedLive), `${JSON.stringify(placed)} → ${JSON.stringify(placedLive)}`);
+    check('… the header’s controls, the views, the lists and the editor stay where the first visit laid them out', placed.length >= 16 && JSON.stringify(placed) === JSON.stringify(placedLive), `${JSON.stringify(placed)} → ${JSON.stringify(placedLive)}`);
     const live = await page.evaluate(() => [...document.querySelectorAll('#sev-filter .n')].map((n) => n.textContent));
     check('… and the app counts the plan’s diagnostics: 0 alarms, 0 warnings, 2 notes', JSON.stringify(live) === '["0","0","2"]', JSON.stringify(live));
     const editor = await page.evaluate(() => window.__screwcut.text());
