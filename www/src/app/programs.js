@@ -112,6 +112,8 @@ export function stamp(ms) {
   return `${d.getFullYear()}-${pad(d.getMonth() + 1)}-${pad(d.getDate())} ${pad(d.getHours())}:${pad(d.getMinutes())}`;
 }
 
+/** A message's words: given, or from a function giving them in the page's language. */
+const wordsOf = (w) => (typeof w === 'function' ? w() : w);
 const sizeText = (chars) => (chars >= 1048576 ? `${(chars / 1048576).toFixed(1)} M` : `${Math.ceil(chars / 1024)} K`) + (lang() === 'zh' ? '字符' : ' characters');
 
 /** The name shown for entry `e`. */
@@ -124,12 +126,13 @@ export class Library {
     this.show = show;
     this.dialects = dialects;
     this.limits = limits;
+    this.noticeWords = new WeakMap(); // a message shown → {words, label}: what it says, as given to notify()
     this.current = null; // {id, name, created, kept: bool, why}
     this.unkept = new Map(); // id → entry the full list could not take: kept for this tab, saved once there is room
     this.timer = 0;
     this.$ = (id) => document.getElementById(id);
     this.bind();
-    if (!programs.persistent) this.notify(tr('storage_off'), { kind: 'warning', sticky: true });
+    if (!programs.persistent) this.notify(() => tr('storage_off'), { kind: 'warning', sticky: true });
   }
 
   // ---- opening ----
@@ -143,7 +146,7 @@ export class Library {
     const link = readFragment(hash, LINK_MAX_BYTES);
     if (link) history.replaceState(null, '', location.pathname + location.search);
     if (link && link.state) return this.fromLink(link.state);
-    if (link) this.notify(tr('link_refused', { why: link.error }), { kind: 'error' });
+    if (link) this.notify(() => tr('link_refused', { why: link.error }), { kind: 'error' });
     const ids = [this.programs.currentId(), ...this.programs.list().map((i) => i.id)];
     for (const id of ids) {
       const e = id && this.programs.get(id);
@@ -158,7 +161,7 @@ export class Library {
     if (!link) return;
     history.replaceState(null, '', location.pathname + location.search);
     if (!link.state) {
-      this.notify(tr('link_refused', { why: link.error }), { kind: 'error' });
+      this.notify(() => tr('link_refused', { why: link.error }), { kind: 'error' });
       return;
     }
     this.saveNow();
@@ -178,19 +181,19 @@ export class Library {
       // Without the table no limit can be checked: links keep the defaults.
       for (const d of Object.keys(state.settings)) for (const k of Object.keys(state.settings[d])) if (k.trim().toLowerCase().startsWith('limits.')) delete state.settings[d][k];
     }
-    if (notes.length) this.notify(tr('link_changed', { what: notes.join('; ') }), { kind: 'warning' });
+    if (notes.length) this.notify(() => tr('link_changed', { what: notes.join('; ') }), { kind: 'warning' });
     if (clamped.length) {
       const list = clamped.map((c) => `${c.name} ${c.asked} → ${c.value}`).join(', ');
-      this.notify(tr('clamped', { list }), { kind: 'warning' });
+      this.notify(() => tr('clamped', { list }), { kind: 'warning' });
     }
     const had = this.programs.list().length > 0;
     const same = this.programs.findSame(state);
     if (same) {
-      this.notify(tr('link_same', { name: shownName(same) }), { kind: 'info' });
+      this.notify(() => tr('link_same', { name: shownName(same) }), { kind: 'info' });
       return this.enter(same);
     }
     const s = this.create(state);
-    if (had && this.current.kept) this.notify(tr('link_new', { name: shownName(this.current) }), { kind: 'info' });
+    if (had && this.current.kept) this.notify(() => tr('link_new', { name: shownName(this.current) }), { kind: 'info' });
     return s;
   }
 
@@ -218,7 +221,7 @@ export class Library {
     this.render();
     let dialect = knownDialect(e.dialect, this.dialects);
     if (!dialect) {
-      this.notify(tr('stored_dialect', { name: shownName(e), dialect: String(e.dialect).slice(0, 40), title: titleOf(DEFAULT_DIALECT, this.dialects) }), { kind: 'warning' });
+      this.notify(() => tr('stored_dialect', { name: shownName(e), dialect: String(e.dialect).slice(0, 40), title: titleOf(DEFAULT_DIALECT, this.dialects) }), { kind: 'warning' });
       dialect = DEFAULT_DIALECT;
     }
     return { dialect, settings: cleanSettings(e.settings, this.dialects).settings, program: e.program };
@@ -237,7 +240,7 @@ export class Library {
     this.saveNow();
     await this.show(this.create({ dialect: s.dialect, settings: inherited(s.settings), program: '' }));
     // Say which controller it is for, and put the choice in reach.
-    this.notify(tr('new_for', { title: titleOf(s.dialect, this.dialects) }), { kind: 'info' });
+    this.notify(() => tr('new_for', { title: titleOf(s.dialect, this.dialects) }), { kind: 'info' });
     document.getElementById('dialect')?.focus();
   }
 
@@ -254,10 +257,10 @@ export class Library {
     const s = this.getState();
     await this.show(next ? this.enter(this.programs.get(next.id)) : this.create({ dialect: s.dialect, settings: inherited(s.settings), program: '' }));
     if (!gone) return;
-    const note = this.notify(tr('deleted', { name: shownName(gone) }), {
+    const note = this.notify(() => tr('deleted', { name: shownName(gone) }), {
       kind: 'info',
       action: {
-        label: tr('undo'),
+        label: () => tr('undo'),
         run: async () => {
           this.saveNow();
           this.current = { id: gone.id, name: gone.name, created: gone.created, kept: false };
@@ -299,7 +302,7 @@ export class Library {
       if (this.current && e.id === this.current.id) continue;
       if (this.programs.put(e).ok) {
         this.unkept.delete(e.id);
-        this.notify(tr('kept_again', { name: shownName(e) }), { kind: 'info' });
+        this.notify(() => tr('kept_again', { name: shownName(e) }), { kind: 'info' });
       }
     }
   }
@@ -317,11 +320,11 @@ export class Library {
       if (!r.ok && (was || !c.why || c.why !== r.reason)) {
         const vars = { name: shownName(c), count: r.count, max: MAX_PROGRAMS, size: sizeText(r.chars + r.size), maxSize: sizeText(MAX_STORED_CHARS) };
         this.dismiss(this.fullNote);
-        this.fullNote = this.notify(tr(r.reason === 'full' ? 'full' : 'quota', vars), { kind: 'warning', sticky: true });
+        this.fullNote = this.notify(() => tr(r.reason === 'full' ? 'full' : 'quota', vars), { kind: 'warning', sticky: true });
       }
       if (r.ok && c.why) {
         this.dismiss(this.fullNote);
-        this.notify(tr('kept_again', { name: shownName(c) }), { kind: 'info' });
+        this.notify(() => tr('kept_again', { name: shownName(c) }), { kind: 'info' });
       }
       c.why = r.ok ? null : r.reason;
     }
@@ -352,7 +355,10 @@ export class Library {
     document.addEventListener('visibilitychange', () => {
       if (document.visibilityState === 'hidden') this.saveNow();
     });
-    new MutationObserver(() => this.render()).observe(document.documentElement, { attributes: true, attributeFilter: ['lang'] });
+    new MutationObserver(() => {
+      this.render();
+      this.relabelNotices();
+    }).observe(document.documentElement, { attributes: true, attributeFilter: ['lang'] });
   }
 
   /** Lists the entries in the menu, the open one chosen; says when it is not kept. */
@@ -401,11 +407,14 @@ export class Library {
    * Shows a message above the page (never blocking): `kind` info, warning
    * or error; an optional action button. Info goes by itself after
    * `timeout` ms (12 s), a warning after 30 s; errors and `sticky` ones
-   * stay until closed. The same text twice is shown once.
+   * stay until closed. The same text twice is shown once. `text` (and the
+   * action's `label`) may be a function giving it in the page's language:
+   * a message shown then follows a change of language.
    */
-  notify(text, { kind = 'info', action = null, sticky = false, timeout = kind === 'warning' ? 30_000 : 12_000 } = {}) {
+  notify(words, { kind = 'info', action = null, sticky = false, timeout = kind === 'warning' ? 30_000 : 12_000 } = {}) {
     const box = this.$('notices');
     if (!box) return null;
+    const text = wordsOf(words);
     for (const old of box.querySelectorAll('.notice')) if (old.querySelector('.text').textContent === text) old.remove();
     const colours = { info: '#eff6ff;#93c5fd', warning: '#fffbeb;#f59e0b', error: '#fef2f2;#f87171' }[kind].split(';');
     const el = document.createElement('div');
@@ -418,10 +427,11 @@ export class Library {
     span.style.flex = '1';
     span.textContent = text;
     el.append(span);
+    this.noticeWords.set(el, { words, label: action && action.label });
     if (action) {
       const b = document.createElement('button');
       b.className = 'action';
-      b.textContent = action.label;
+      b.textContent = wordsOf(action.label);
       b.addEventListener('click', async () => {
         this.dismiss(el);
         await action.run();
@@ -442,5 +452,19 @@ export class Library {
 
   dismiss(el) {
     if (el && el.parentNode) el.remove();
+  }
+
+  /** The messages shown, their texts, actions and close buttons in the page's language now. */
+  relabelNotices() {
+    const box = this.$('notices');
+    if (!box) return;
+    for (const el of box.querySelectorAll('.notice')) {
+      const w = this.noticeWords.get(el);
+      if (!w) continue;
+      el.querySelector('.text').textContent = wordsOf(w.words);
+      const b = el.querySelector('.action');
+      if (b && w.label) b.textContent = wordsOf(w.label);
+      el.querySelector('.close')?.setAttribute('aria-label', tr('close'));
+    }
   }
 }
