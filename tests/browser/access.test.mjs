@@ -89,8 +89,8 @@ try {
     await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 5, null, { timeout: 10_000 }).catch(() => {});
     await page.click('#lang');
     await page.waitForTimeout(600);
-    const zh = await page.evaluate(() => ({ head: document.querySelector('#passes thead').textContent, label: document.getElementById('side').getAttribute('aria-label'), summary: document.getElementById('summary').textContent }));
-    check('in Chinese the table, the drawing’s label and the summary are Chinese', zh.head.includes('切深') && zh.label.includes('条螺纹') && zh.summary.includes('条螺纹'), JSON.stringify(zh));
+    const zh = await page.evaluate(() => ({ head: document.querySelector('#passes thead').textContent, label: document.getElementById('side').getAttribute('aria-label'), summary: document.getElementById('summary').textContent, timing: document.getElementById('timing').textContent }));
+    check('in Chinese the table, the drawing’s label, the summary and its timing are Chinese', zh.head.includes('切深') && zh.label.includes('条螺纹') && zh.summary.includes('条螺纹') && zh.timing.startsWith('计算 '), JSON.stringify(zh));
     // A message shown before the switch (the new program's, in English) follows it: its text and its close button's name.
     const notice = await page.evaluate(() => [...document.querySelectorAll('#notices .notice')].map((n) => [n.querySelector('.text').textContent, n.querySelector('.close').getAttribute('aria-label')]));
     check('… and so does the message shown in English before the switch', notice.length === 1 && notice[0][0].startsWith('已为 GSK980TDc 新建程序') && /[\u4e00-\u9fff]/.test(notice[0][1]), JSON.stringify(notice));

@@ -64,9 +64,9 @@ let editor;
  * What the page shows and points at, as one value changed only by `update`
  * (a new value each time): the lists of the last answer (threads, passes as
  * columns, diagnostics), the chosen thread and start, what is hovered, the
- * severities the diagnostics list shows and the rows it shows.
+ * severities the diagnostics list shows and the rows it shows; the last plan's timing.
  */
-let ui = Object.freeze({ result: null, thread: 0, start: 1, hover: null, severities: new Set(['error', 'warning', 'info']), diagnosticsShown: [] });
+let ui = Object.freeze({ result: null, thread: 0, start: 1, hover: null, severities: new Set(['error', 'warning', 'info']), diagnosticsShown: [], timing: null });
 /** The next `ui`: the last one with the fields of `patch`. */
 function update(patch) {
   ui = Object.freeze({ ...ui, ...patch });
@@ -205,7 +205,8 @@ function onResult(m) {
       const total = a.t0 === null ? null : performance.now() - a.t0;
       probe.updates.push({ seq: m.seq, ...m.timing, lists: performance.now() - t1, total, lines, resumedAt: r.resumedAt, sent: a.t0 ?? undefined, received: t0 });
       if (probe.updates.length > 200) probe.updates.shift();
-      setText($('timing'), t('timing', { plan: m.timing.plan.toFixed(1), draw: m.timing.views.toFixed(1) }));
+      update({ timing: m.timing });
+      showTiming();
     }
   };
   // Once the page is up, the lists follow the drawing by a frame: rendering
@@ -240,6 +241,9 @@ function onFrame(m) {
 }
 
 // ---- lists ----
+
+/** The footer's timing of the last plan (`ui.timing`: planning, drawing), in the page's language. */
+const showTiming = (m = ui.timing) => m && setText($('timing'), t('timing', { plan: m.plan.toFixed(1), draw: m.views.toFixed(1) }));
 
 /** The latest lists to render after the next paint (null: none waiting). */
 let listsWaiting = null;
@@ -531,6 +535,7 @@ function finishSetup() {
     await buildSettings();
     persist();
     if (ui.result) renderLists(ui.result);
+    showTiming();
   });
   $('thread').addEventListener('change', (e) => selectThread(Number(e.target.value), 1));
   $('start').addEventListener('change', (e) => {
