@@ -155,7 +155,7 @@ function observe() {
     self.__keys.push(k);
     afterPaint((t) => (k.paint = t), k);
   }, true);
-  // The app marks a drawing once its frame is committed (the worker's canvases are on screen when its task ends).
+  // The app marks a drawing once its frame is committed (after the worker's next animation frame, which pushes its canvases).
   const mark = performance.mark.bind(performance);
   performance.mark = (name, options) => {
     const entry = mark(name, options);

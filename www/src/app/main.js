@@ -7,7 +7,7 @@
 import { createEditor } from '../editor/editor.js';
 import { startEngine } from '../engine/client.js';
 import { patchList, spliceList } from '../engine/parts.js';
-import { afterTask } from '../engine/task.js';
+import { afterFrame } from '../engine/task.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
 import { passHead, passLines, passRow, passVia, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
 import { esc } from '../shared/table.js';
@@ -258,7 +258,7 @@ function listsAfterPaint(f) {
     listsWaiting = null;
     g?.();
   };
-  requestAnimationFrame(() => afterTask(run));
+  afterFrame(run);
   setTimeout(run, 100);
 }
 

@@ -23,8 +23,9 @@ export class Engine {
    * @param opts `{immediate, loadTools}`: `immediate` draws a plan's views
    *   at once rather than at the next animation frame (in a worker, whose
    *   canvases then go on screen at that frame, before the page's lists;
-   *   pan and zoom still draw at animation frames); `loadTools` resolves to the initialised
-   *   tools module (`toolsLoader`), called the first time a tool is used
+   *   pan and zoom still draw at animation frames); `loadTools` resolves
+   *   to the initialised tools module (`toolsLoader`), called the first
+   *   time a tool is used
    */
   constructor(core, post, afterCommit, opts = {}) {
     this.immediate = !!opts.immediate;
