@@ -74,7 +74,8 @@ try {
     await page.locator('.cm-line', { hasText: 'N200 G32' }).click();
     await page.keyboard.press('End');
     await page.keyboard.type('\nN201 G00 X58.0;\nN202 Z70.0;\nN203 X45.3;\nN204 G32 Z13.0 F2.0;', { delay: 5 });
-    await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 6, null, { timeout: 10_000 }).catch(() => {});
+    // Not the first 6 rows seen: "… G32 Z13.0 F" (no value) is an alarm, and the table is back to 5 until "F2".
+    await page.waitForFunction(() => window.__screwcut.settled() && window.__screwcut.text().includes('F2.0;\nN210'), null, { timeout: 10_000 }).catch(() => {});
     await page.locator('#passes tbody tr[data-pass]').last().hover();
     await page.waitForTimeout(300);
   }

@@ -123,7 +123,9 @@ try {
   await page.locator('.cm-line', { hasText: 'N200 G32' }).click();
   await page.keyboard.press('End');
   await page.keyboard.type('\nN201 G00 X58.0;\nN202 Z70.0;\nN203 X45.3;\nN204 G32 Z13.0 F2.0;', { delay: 5 });
-  await page.waitForFunction(() => document.querySelectorAll('#passes tbody tr[data-pass]').length === 6, null, { timeout: 10_000 }).catch(() => {});
+  // The table passes through other states while the keys arrive: "N204 G32 Z13.0 F" has an F without a
+  // value, an alarm, so the table is back to 5 rows until "F2" follows. Read it once the text typed is planned.
+  await page.waitForFunction(() => window.__screwcut.settled() && window.__screwcut.text().includes('F2.0;\nN210'), null, { timeout: 10_000 }).catch(() => {});
   check('typing a sixth pass grows the table to 6 rows', (await rows()) === 6, `${await rows()} rows`);
   const lastX = await page.locator('#passes tbody tr[data-pass]').last().locator('td:nth-child(3)').textContent();
   check('sixth pass at X45.3', lastX === '45.3', lastX);
@@ -154,6 +156,7 @@ try {
   await page.keyboard.press('End');
   await page.keyboard.press('ArrowLeft'); // before the ';' that ends the block
   await page.keyboard.type(' X1.2.3');
+  await page.waitForFunction(() => window.__screwcut.settled() && window.__screwcut.text().includes('X45.3 X1.2.3;'), null, { timeout: 10_000 }).catch(() => {});
   await page.waitForSelector('#diagnostics li.error', { timeout: 10_000 }).catch(() => {});
   const errors = await page.locator('#diagnostics li.error').allTextContents();
   check('a malformed number is an alarm in the list', errors.length > 0, JSON.stringify(errors));

@@ -437,9 +437,9 @@ async function main() {
   dialects = started.dialects;
   probe.mode = client.mode;
   probe.inspect = (what, name, format) => client.request('inspect', { what, name, format });
-  probe.text = () => (editor ? editor.text() : null);
-  probe.editor = () => editor;
-  probe.dialect = () => state.dialect;
+  Object.assign(probe, { text: () => (editor ? editor.text() : null), editor: () => editor, dialect: () => state.dialect });
+  // The lists show the plan of the editor's text: no plan in flight or to follow, none waiting for the paint.
+  probe.settled = () => planning.idle() && listsWaiting === null;
   // A link opens as a new program (its fragment is then taken off the
   // address, so a reload shows later edits); else the program this tab had open.
   let limitRows = null;

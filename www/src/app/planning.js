@@ -140,6 +140,11 @@ export class Planning {
     return { shown: stale ? good : r, stale };
   }
 
+  /** Whether no plan is in flight and none is to follow (the last answer is of the text last sent). */
+  idle() {
+    return this.s.inFlight === null && !this.s.wanted;
+  }
+
   /** The engine failed: nothing is in flight any more. */
   failed() {
     this.s.inFlight = null;
