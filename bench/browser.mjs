@@ -197,12 +197,24 @@ async function openPlanned(text, dialect) {
   return page;
 }
 
-/** Types and deletes a digit at the cursor `keys` times, 150 ms apart, then waits 1.5 s; returns when it began (page time). */
+/**
+ * How long a key is held down. A person's key comes up tens of milliseconds
+ * after it went down; Playwright's `press` lets it up at once. Chromium
+ * defers a page's ordinary tasks after a discrete input event until the next
+ * frame (`DeferRendererTasksAfterInput`, enabled by default): a keyup that
+ * lands while the keystroke's frame is being made holds the task this bench
+ * reads the paint by (and the page's own tasks) until the frame after, a
+ * whole frame late although the keystroke was already on screen. A trace
+ * showed it on both pages, more often on the app, whose frame begins sooner.
+ */
+const HOLD_MS = 60;
+
+/** Types and deletes a digit at the cursor `keys` times, 150 ms apart (each held HOLD_MS), then waits 1.5 s; returns when it began (page time). */
 async function typeDigits(page, keys) {
   const t0 = await page.evaluate(() => performance.now());
   for (let i = 0; i < keys; i++) {
-    await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)));
-    await page.waitForTimeout(150);
+    await page.keyboard.press(i % 2 ? 'Backspace' : String(1 + ((i / 2) % 9)), { delay: HOLD_MS });
+    await page.waitForTimeout(150 - HOLD_MS);
   }
   await page.waitForTimeout(1500);
   return t0;
@@ -239,6 +251,7 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
   const split = []; // the app's keystrokes: its own next paint and its drawing
   const long = [];
   const phases = { bare: [], app: [] }; // each keystroke's frame, its callback and the task after it, from the key
+  const work = { bare: [], app: [] }; // from the frame's beginning to the figure (the paint, or the app's diagram on screen)
   for (let r = 0; r < rounds; r++) {
     for (const [page, into] of [[bare, floor], [app, screen], [app, held]]) {
       await page.bringToFront();
@@ -250,10 +263,12 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
       const m = await page.evaluate((t0) => ({ keys: self.__keys.filter((k) => k.t > t0), drawn: self.__drawn, long: self.__long.filter((e) => e.start > t0) }), t0);
       for (const k of m.keys) {
         if (into !== held) phases[page === bare ? 'bare' : 'app'].push({ frame: k.frame - k.t, callback: k.callback - k.t, paint: k.paint - k.t });
+        if (page === bare) work.bare.push(k.paint - k.frame);
         if (page === bare || into === held) into.push(k.paint - k.t);
         else {
           const shown = Math.min(...m.drawn.filter((d) => d.input >= k.t).map((d) => d.shown));
           into.push(Math.max(k.paint, shown) - k.t);
+          work.app.push(Math.max(k.paint, shown) - k.frame);
           split.push({ paint: k.paint - k.t, drawn: shown - k.t });
         }
       }
@@ -286,6 +301,12 @@ async function versus({ text, dialect, line, rounds, keys, tag, what }) {
     `    … where the next paint goes, p50 from the key, bare editor / app: the frame begins ${show('frame')} ms, ` +
       `its frame callbacks run ${show('callback')} ms, the task after the frame ${show('paint')} ms`,
   );
+  // From the frame's beginning: the figure without the wait for the display's cadence, which is
+  // the same for both pages on average but, at a random phase, the largest part of each one's spread.
+  const w = (who, p) => q(work[who], p).toFixed(1);
+  console.log(`    … from the frame's beginning to the figure, bare editor / app: p50 ${w('bare', 0.5)} / ${w('app', 0.5)} ms, p95 ${w('bare', 0.95)} / ${w('app', 0.95)} ms`);
+  fig(`${tag}_bare_work_p50`, q(work.bare, 0.5));
+  fig(`${tag}_app_work_p50`, q(work.app, 0.5));
   fig(`${tag}_callback_gap_p50`, phase('app', 'callback') - phase('bare', 'callback'));
   fig(`${tag}_after_callback_gap_p50`, phase('app', 'paint') - phase('app', 'callback') - (phase('bare', 'paint') - phase('bare', 'callback')));
   fig(`${tag}_apppaint_p50`, paint);
