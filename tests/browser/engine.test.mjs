@@ -122,6 +122,8 @@ try {
     await p.waitForFunction(() => document.querySelectorAll('#thread option').length === 80, null, { timeout: 30_000 }).catch(() => {});
     const menu = () => p.locator('#thread option').allTextContents();
     const before = await menu();
+    // Each option element marked (a property, not in the page's HTML): the ones not written again keep it.
+    await p.evaluate(() => document.querySelectorAll('#thread option').forEach((o, i) => (o.__mark = i)));
     await p.locator('.cm-line').nth(14).click(); // line 15: the third thread's G32
     await p.keyboard.press('End');
     await p.keyboard.press('Backspace');
@@ -130,6 +132,8 @@ try {
     const after = await menu();
     const others = after.every((o, i) => i === 2 || o === before[i]);
     check(`${mode || 'worker'}: editing thread 3 of 80 to F3 changes its menu entry to Ph 3, and no other`, after.length === 80 && /Ph 3\b/.test(after[2]) && /Ph 2\b/.test(before[2]) && others, JSON.stringify([before[2], after[2], after.length]));
+    const kept = await p.evaluate(() => Array.from(document.querySelectorAll('#thread option'), (o, i) => o.__mark === i));
+    check(`${mode || 'worker'}: … only that option is written again, the other 79 are the same elements`, kept.length === 80 && !kept[2] && kept.filter(Boolean).length === 79, JSON.stringify(kept.map(Number).join('')));
     await p.close();
   }
 

@@ -9,7 +9,7 @@ import { startEngine } from '../engine/client.js';
 import { patchList, spliceList } from '../engine/parts.js';
 import { afterFrame } from '../engine/task.js';
 import { EDITOR_PHRASES_ZH, getLang, setLang, t } from '../shared/i18n.js';
-import { passHead, passLines, passRow, passVia, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
+import { passHead, passLines, passRow, passVia, setOptions, threadOptions, tipText, VirtualRows } from '../shared/lists.js';
 import { esc } from '../shared/table.js';
 import { bindListKeys, labelViews } from './a11y.js';
 import { showBehind } from './behind.js';
@@ -287,11 +287,7 @@ function banner(text) {
 
 function renderThreads(r, stale) {
   const sel = $('thread');
-  const options = threadOptions(r.threads, t, getLang());
-  if (sel.dataset.html !== options) {
-    sel.innerHTML = options;
-    sel.dataset.html = options;
-  }
+  setOptions(sel, threadOptions(r.threads, t, getLang()));
   sel.value = r.thread ?? '';
   // Greyed, the lists show the kept plan: another thread is chosen once the alarm is gone.
   sel.disabled = !!stale;

@@ -150,21 +150,37 @@ export function diagnosticRows(shown, t, lang) {
 const optionOf = new WeakMap();
 
 /**
- * The thread list's options in language `t` (`lang`): a summary the engine
- * did not send again keeps its identity, and so its option.
+ * The thread list's options in language `t` (`lang`), one HTML string each:
+ * a summary the engine did not send again keeps its identity, and so its option.
  */
 export function threadOptions(threads, t, lang) {
-  return threads
-    .map((th, i) => {
-      const kept = optionOf.get(th);
-      if (kept && kept.i === i && kept.lang === lang) return kept.html;
-      const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
-      const text = `${i + 1}: ${threadName(th, t)} · ${t('lead_of', { v: num(th.lead) })} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
-      const html = `<option value="${i}">${esc(text)}</option>`;
-      optionOf.set(th, { i, lang, html });
-      return html;
-    })
-    .join('');
+  return threads.map((th, i) => {
+    const kept = optionOf.get(th);
+    if (kept && kept.i === i && kept.lang === lang) return kept.html;
+    const time = th.shop && th.shop.time_s != null ? ` · ${th.shop.time_s.toFixed(1)} s` : '';
+    const text = `${i + 1}: ${threadName(th, t)} · ${t('lead_of', { v: num(th.lead) })} · L${th.line}–${th.end_line} · ${th.passes}×${time}`;
+    const html = `<option value="${i}">${esc(text)}</option>`;
+    optionOf.set(th, { i, lang, html });
+    return html;
+  });
+}
+
+/** The options' HTML each list was last given (`setOptions`). */
+const optionsShown = new WeakMap();
+
+/**
+ * Gives `select` the options `htmls` (one HTML string each). With as many
+ * as it holds, only the options whose HTML changed are written again: an
+ * edit of one thread of 2,000 re-parses one option, not the list.
+ */
+export function setOptions(select, htmls) {
+  const before = optionsShown.get(select);
+  optionsShown.set(select, htmls);
+  if (before && before.length === htmls.length && select.options.length === htmls.length) {
+    for (let i = 0; i < htmls.length; i++) if (htmls[i] !== before[i]) select.options[i].outerHTML = htmls[i];
+    return;
+  }
+  select.innerHTML = htmls.join('');
 }
 
 /** Pass columns as one object per pass (`{start, index, from, to, depth, infeed, area, evenArea, time, role, lines, shift, angle}`). */
