@@ -296,11 +296,10 @@ function renderThreads(r, stale) {
   pick.hidden = !th || th.starts <= 1;
   if (th && th.starts > 1) {
     const s = $('start');
-    const opts = Array.from({ length: Math.min(th.starts, 360) }, (_, i) => `<option value="${i + 1}">${i + 1}</option>`).join('');
-    if (s.dataset.html !== opts) {
-      s.innerHTML = opts;
-      s.dataset.html = opts;
-    }
+    setOptions(
+      s,
+      Array.from({ length: Math.min(th.starts, 360) }, (_, i) => `<option value="${i + 1}">${i + 1}</option>`),
+    );
     s.value = String(Math.min(ui.start, th.starts));
   }
   $('no-threads').hidden = r.threads.length > 0;

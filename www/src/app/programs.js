@@ -22,6 +22,7 @@
 // kept. A full list refuses to grow and says so; nothing is evicted.
 // The storage itself is store.js.
 
+import { setOptions } from '../shared/lists.js';
 import { cleanSettings, DEFAULT_DIALECT, knownDialect, LINK_MAX_BYTES, readFragment, sanitizeLinked, titleOf } from './share.js';
 import { INDEX, MAX_PROGRAMS, MAX_STORED_CHARS, newIdFor, Programs, programName } from './store.js';
 
@@ -380,11 +381,7 @@ export class Library {
       listed.add(e.id);
     }
     if (c && !listed.has(c.id)) options.unshift(`<option value="${esc(c.id)}">${esc(`${shownName(c)} (${tr('not_kept')})`)}</option>`);
-    const html = options.join('');
-    if (sel.dataset.html !== html) {
-      sel.innerHTML = html;
-      sel.dataset.html = html;
-    }
+    setOptions(sel, options);
     if (c) sel.value = c.id;
     sel.title = tr('programs_title');
     this.$('programs-label').textContent = tr('programs');
