@@ -23,6 +23,7 @@
 // The storage itself is store.js.
 
 import { setOptions } from '../shared/lists.js';
+import { esc } from '../shared/table.js';
 import { cleanSettings, DEFAULT_DIALECT, knownDialect, LINK_MAX_BYTES, readFragment, sanitizeLinked, titleOf } from './share.js';
 import { INDEX, MAX_PROGRAMS, MAX_STORED_CHARS, newIdFor, Programs, programName } from './store.js';
 
@@ -366,7 +367,6 @@ export class Library {
   render() {
     const sel = this.$('programs');
     if (!sel) return;
-    const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
     const list = this.programs.list();
     const c = this.current;
     const options = list.map((i) => {
